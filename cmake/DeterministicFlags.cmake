@@ -1,0 +1,19 @@
+# Compiler settings every revsph target gets through the `revsph_flags` interface target.
+#
+# Bitwise reproducibility (design note exact-reversibility.md §6): no FMA contraction, no
+# fast-math reassociation, round-to-nearest IEEE arithmetic. tests/fma_contraction_test.cpp checks
+# that the flags reach the physics code.
+add_library(revsph_flags INTERFACE)
+target_compile_options(revsph_flags INTERFACE
+  -ffp-contract=off
+  -fno-fast-math
+  -fno-associative-math
+  -fno-reciprocal-math
+  -Wall -Wextra -Wpedantic -Wshadow)
+target_include_directories(revsph_flags INTERFACE ${PROJECT_SOURCE_DIR})
+
+option(REVSPH_SANITIZE "Build with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)
+if(REVSPH_SANITIZE)
+  target_compile_options(revsph_flags INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer)
+  target_link_options(revsph_flags INTERFACE -fsanitize=address,undefined)
+endif()

@@ -1,0 +1,301 @@
+#include "core/case_file.hpp"
+
+#include <toml++/toml.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace revsph {
+
+namespace {
+
+std::string describe_type(const toml::node& node) {
+  switch (node.type()) {
+  case toml::node_type::string:
+    return "a string";
+  case toml::node_type::integer:
+    return "an integer";
+  case toml::node_type::floating_point:
+    return "a number";
+  case toml::node_type::boolean:
+    return "a boolean";
+  case toml::node_type::table:
+    return "a table";
+  case toml::node_type::array:
+    return "an array";
+  default:
+    return "a date or time";
+  }
+}
+
+std::string format_number(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+struct UnreadKey {
+  std::string key;
+  toml::source_position position;
+};
+
+// Collects every leaf (value or array of values) and every empty table that was not read.
+void collect_unread(const toml::node& node, const std::string& path,
+                    const std::set<std::string, std::less<>>& read, std::vector<UnreadKey>& out) {
+  if (const auto* table = node.as_table()) {
+    if (table->empty() && !path.empty() && !read.contains(path)) {
+      out.push_back({path, node.source().begin});
+    }
+    for (const auto& [key, child] : *table) {
+      const std::string child_path =
+          path.empty() ? std::string(key.str()) : path + "." + std::string(key.str());
+      collect_unread(child, child_path, read, out);
+    }
+    return;
+  }
+  if (const auto* array = node.as_array(); array && array->is_array_of_tables()) {
+    for (std::size_t i = 0; i < array->size(); ++i) {
+      collect_unread(*array->get(i), path + "[" + std::to_string(i) + "]", read, out);
+    }
+    return;
+  }
+  if (!read.contains(path)) {
+    out.push_back({path, node.source().begin});
+  }
+}
+
+} // namespace
+
+CaseError::CaseError(std::string file, std::string key, std::string reason)
+    : std::runtime_error(file + ": " + (key.empty() ? std::string() : key + ": ") + reason),
+      file_(std::move(file)), key_(std::move(key)), reason_(std::move(reason)) {}
+
+CaseFile::CaseFile(std::string text, std::string source_name)
+    : source_name_(std::move(source_name)), text_(std::move(text)),
+      root_(std::make_unique<toml::table>()) {
+  try {
+    *root_ = toml::parse(text_, source_name_);
+  } catch (const toml::parse_error& error) {
+    const auto& where = error.source().begin;
+    std::ostringstream reason;
+    reason << "syntax error at line " << where.line << ", column " << where.column << ": "
+           << error.description();
+    throw CaseError(source_name_, "", reason.str());
+  }
+}
+
+CaseFile::CaseFile(CaseFile&&) noexcept = default;
+CaseFile& CaseFile::operator=(CaseFile&&) noexcept = default;
+CaseFile::~CaseFile() = default;
+
+CaseFile CaseFile::load(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw CaseError(path.string(), "", "cannot open the case file");
+  }
+  std::ostringstream content;
+  content << in.rdbuf();
+  return CaseFile(content.str(), path.string());
+}
+
+CaseFile CaseFile::parse(std::string text, std::string source_name) {
+  return CaseFile(std::move(text), std::move(source_name));
+}
+
+std::string CaseFile::text() const {
+  std::string result = text_;
+  if (!overrides_.empty()) {
+    result += "\n# command-line overrides:\n";
+    for (const std::string& o : overrides_) {
+      result += "# --set " + o + "\n";
+    }
+  }
+  return result;
+}
+
+void CaseFile::fail(std::string_view key, const std::string& reason) const {
+  throw CaseError(source_name_, std::string(key), reason);
+}
+
+const toml::node* CaseFile::find(std::string_view key) const {
+  read_keys_.emplace(key);
+  return root_->at_path(key).node();
+}
+
+const toml::node& CaseFile::require(std::string_view key) const {
+  const toml::node* node = find(key);
+  if (node == nullptr) {
+    fail(key, "missing required key");
+  }
+  return *node;
+}
+
+bool CaseFile::has(std::string_view key) const { return root_->at_path(key).node() != nullptr; }
+
+double CaseFile::number(std::string_view key) const {
+  const toml::node& node = require(key);
+  if (!node.is_number()) {
+    fail(key, "expected a number, got " + describe_type(node));
+  }
+  const double value = *node.value<double>();
+  if (!std::isfinite(value)) {
+    fail(key, "expected a finite number, got " + format_number(value));
+  }
+  return value;
+}
+
+double CaseFile::number_or(std::string_view key, double fallback) const {
+  return has(key) ? number(key) : fallback;
+}
+
+double CaseFile::positive_number(std::string_view key) const {
+  const double value = number(key);
+  if (!(value > 0.0)) {
+    fail(key, "must be > 0 (got " + format_number(value) + ")");
+  }
+  return value;
+}
+
+std::int64_t CaseFile::integer(std::string_view key) const {
+  const toml::node& node = require(key);
+  if (!node.is_integer()) {
+    fail(key, "expected an integer, got " + describe_type(node));
+  }
+  return *node.value<std::int64_t>();
+}
+
+std::int64_t CaseFile::integer_or(std::string_view key, std::int64_t fallback) const {
+  return has(key) ? integer(key) : fallback;
+}
+
+std::string CaseFile::string(std::string_view key) const {
+  const toml::node& node = require(key);
+  if (!node.is_string()) {
+    fail(key, "expected a string, got " + describe_type(node));
+  }
+  return *node.value<std::string>();
+}
+
+std::string CaseFile::string_or(std::string_view key, std::string fallback) const {
+  return has(key) ? string(key) : fallback;
+}
+
+bool CaseFile::boolean_or(std::string_view key, bool fallback) const {
+  if (!has(key)) {
+    return fallback;
+  }
+  const toml::node& node = require(key);
+  if (!node.is_boolean()) {
+    fail(key, "expected true or false, got " + describe_type(node));
+  }
+  return *node.value<bool>();
+}
+
+std::vector<double> CaseFile::numbers(std::string_view key, std::size_t size) const {
+  const toml::node& node = require(key);
+  const toml::array* array = node.as_array();
+  if (array == nullptr) {
+    fail(key, "expected an array of " + std::to_string(size) + " numbers, got " +
+                  describe_type(node));
+  }
+  if (array->size() != size) {
+    fail(key, "expected " + std::to_string(size) + " numbers, got " +
+                  std::to_string(array->size()));
+  }
+  std::vector<double> values;
+  for (const toml::node& element : *array) {
+    if (!element.is_number()) {
+      fail(key, "expected an array of numbers, found " + describe_type(element) + " in it");
+    }
+    const double value = *element.value<double>();
+    if (!std::isfinite(value)) {
+      fail(key, "expected finite numbers, got " + format_number(value));
+    }
+    values.push_back(value);
+  }
+  return values;
+}
+
+std::size_t CaseFile::table_count(std::string_view key) const {
+  const toml::node* node = find(key);
+  if (node == nullptr) {
+    return 0;
+  }
+  const toml::array* array = node->as_array();
+  if (array == nullptr || !array->is_array_of_tables()) {
+    fail(key, "expected an array of tables ([[" + std::string(key) + "]] blocks), got " +
+                  describe_type(*node));
+  }
+  return array->size();
+}
+
+void CaseFile::accept_table(std::string_view key) const { read_keys_.emplace(key); }
+
+void CaseFile::set(std::string_view key, std::string_view value) {
+  overrides_.push_back(std::string(key) + "=" + std::string(value));
+  toml::table parsed;
+  try {
+    parsed = toml::parse("value = " + std::string(value));
+  } catch (const toml::parse_error&) {
+    parsed.insert_or_assign("value", std::string(value)); // a bare word: take it as a string
+  }
+  // Walk (and create) the tables of the dotted path; array elements must exist already.
+  toml::node* current = root_.get();
+  std::string_view rest = key;
+  std::string walked;
+  while (true) {
+    const std::size_t dot = rest.find('.');
+    std::string_view part = rest.substr(0, dot);
+    std::size_t index = std::numeric_limits<std::size_t>::max();
+    if (const std::size_t bracket = part.find('['); bracket != std::string_view::npos) {
+      index = static_cast<std::size_t>(std::stoul(std::string(part.substr(bracket + 1))));
+      part = part.substr(0, bracket);
+    }
+    walked += (walked.empty() ? "" : ".") + std::string(part);
+    toml::table* table = current->as_table();
+    if (table == nullptr) {
+      fail(key, "cannot set: '" + walked + "' is not a table");
+    }
+    const bool last = dot == std::string_view::npos;
+    if (index != std::numeric_limits<std::size_t>::max()) {
+      toml::array* array = table->get_as<toml::array>(part);
+      if (array == nullptr || index >= array->size()) {
+        fail(key, "cannot set: no element " + std::to_string(index) + " in '" + walked + "'");
+      }
+      current = array->get(index);
+      if (last) {
+        fail(key, "cannot replace a whole array element");
+      }
+    } else if (last) {
+      table->insert_or_assign(part, *parsed.get("value"));
+      return;
+    } else {
+      if (!table->contains(part)) {
+        table->insert(part, toml::table{});
+      }
+      current = table->get(part);
+    }
+    rest = rest.substr(dot + 1);
+  }
+}
+
+void CaseFile::require_no_unknown_keys() const {
+  std::vector<UnreadKey> unread;
+  collect_unread(*root_, "", read_keys_, unread);
+  if (unread.empty()) {
+    return;
+  }
+  const UnreadKey* first = &unread.front();
+  for (const UnreadKey& u : unread) {
+    if (u.position.line < first->position.line ||
+        (u.position.line == first->position.line && u.position.column < first->position.column)) {
+      first = &u;
+    }
+  }
+  fail(first->key, "unknown key (line " + std::to_string(first->position.line) +
+                       "); see the case-file reference in README.md");
+}
+
+} // namespace revsph

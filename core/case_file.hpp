@@ -1,0 +1,92 @@
+#pragma once
+// A case file (TOML) with typed, validated access that remembers which keys were read.
+//
+// Every problem is reported as one CaseError naming the file, the key and the reason. After a
+// model has read its parameters, require_no_unknown_keys() rejects anything nobody read, so a
+// misspelt key is an error instead of a silently ignored setting.
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace toml {
+inline namespace v3 {
+class table;
+class node;
+} // namespace v3
+} // namespace toml
+
+namespace revsph {
+
+class CaseError : public std::runtime_error {
+public:
+  CaseError(std::string file, std::string key, std::string reason);
+  const std::string& file() const { return file_; }
+  const std::string& key() const { return key_; }
+  const std::string& reason() const { return reason_; }
+
+private:
+  std::string file_;
+  std::string key_;
+  std::string reason_;
+};
+
+class CaseFile {
+public:
+  // Throws CaseError (key "" and the line and column in the reason) on a syntax error.
+  static CaseFile load(const std::filesystem::path& path);
+  static CaseFile parse(std::string text, std::string source_name);
+
+  CaseFile(CaseFile&&) noexcept;
+  CaseFile& operator=(CaseFile&&) noexcept;
+  ~CaseFile();
+
+  const std::string& source_name() const { return source_name_; }
+  // The file as written, followed by the command-line overrides as comments.
+  std::string text() const;
+  const std::vector<std::string>& overrides() const { return overrides_; }
+
+  // Keys are dotted paths with array indices: "discretisation.dr", "particles[1].min".
+  bool has(std::string_view key) const;
+  double number(std::string_view key) const;
+  double number_or(std::string_view key, double fallback) const;
+  double positive_number(std::string_view key) const;
+  std::int64_t integer(std::string_view key) const;
+  std::int64_t integer_or(std::string_view key, std::int64_t fallback) const;
+  std::string string(std::string_view key) const;
+  std::string string_or(std::string_view key, std::string fallback) const;
+  bool boolean_or(std::string_view key, bool fallback) const;
+  // An array of exactly `size` numbers.
+  std::vector<double> numbers(std::string_view key, std::size_t size) const;
+  // Number of tables in an array of tables ([[particles]]); 0 if the key is absent.
+  std::size_t table_count(std::string_view key) const;
+  // Marks a table as known even if none of its keys were read (an empty [output], say).
+  void accept_table(std::string_view key) const;
+
+  // Replaces or adds a value, given as TOML ("0.01", "[1.0, 2.0]", "\"square\"") or as a bare
+  // word taken as a string. For command-line overrides (--set key=value).
+  void set(std::string_view key, std::string_view value);
+
+  // Throws CaseError for the first key (in file order) that was never read.
+  void require_no_unknown_keys() const;
+
+  [[noreturn]] void fail(std::string_view key, const std::string& reason) const;
+
+private:
+  CaseFile(std::string text, std::string source_name);
+  const toml::node* find(std::string_view key) const;
+  const toml::node& require(std::string_view key) const;
+
+  std::string source_name_;
+  std::string text_;
+  std::vector<std::string> overrides_;
+  std::unique_ptr<toml::table> root_;
+  mutable std::set<std::string, std::less<>> read_keys_;
+};
+
+} // namespace revsph

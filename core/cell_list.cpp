@@ -1,0 +1,73 @@
+#include "core/cell_list.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace revsph {
+
+template <int D>
+CellList<D>::CellList(const Box<D>& domain, double cell_size, std::size_t max_cells)
+    : domain_(domain), cell_size_(cell_size) {
+  if (!(cell_size > 0.0) || !std::isfinite(cell_size)) {
+    throw std::invalid_argument("cell list: the cell size must be positive and finite");
+  }
+  for (;;) {
+    double cells = 1.0;
+    for (int k = 0; k < D; ++k) {
+      const double extent = domain.max[k] - domain.min[k];
+      cells_per_axis_[k] = std::max(1, static_cast<int>(std::ceil(extent / cell_size_)));
+      cells *= cells_per_axis_[k];
+    }
+    if (cells <= static_cast<double>(std::max<std::size_t>(max_cells, 1))) {
+      break;
+    }
+    // Enlarging cells only adds candidates that the distance filter rejects.
+    cell_size_ *= 1.25;
+  }
+  inverse_cell_size_ = 1.0 / cell_size_;
+  std::size_t total = 1;
+  for (int k = 0; k < D; ++k) {
+    total *= static_cast<std::size_t>(cells_per_axis_[k]);
+  }
+  cell_start_.assign(total + 1, 0);
+}
+
+template <int D>
+void CellList<D>::build(const CoordinateView<D>& points) {
+  const std::size_t n = points[0].size();
+  if (n > std::numeric_limits<std::uint32_t>::max()) {
+    throw std::length_error("cell list: more than 2^32 - 1 points");
+  }
+  cell_of_point_.resize(n);
+  std::fill(cell_start_.begin(), cell_start_.end(), 0u);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::size_t cell = 0;
+    for (int k = D - 1; k >= 0; --k) {
+      const double x = points[k][i];
+      if (!(x >= domain_.min[k] && x <= domain_.max[k])) {
+        std::ostringstream where;
+        where << "point " << i << " is outside the domain on axis " << k << " (coordinate " << x
+              << ", domain [" << domain_.min[k] << ", " << domain_.max[k] << "])";
+        throw PointOutsideDomain(i, where.str());
+      }
+      cell = cell * static_cast<std::size_t>(cells_per_axis_[k]) +
+             static_cast<std::size_t>(cell_coordinate(x, k));
+    }
+    cell_of_point_[i] = static_cast<std::uint32_t>(cell);
+    ++cell_start_[cell + 1];
+  }
+  for (std::size_t c = 1; c < cell_start_.size(); ++c) {
+    cell_start_[c] += cell_start_[c - 1];
+  }
+  sorted_points_.resize(n);
+  std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) {
+    sorted_points_[fill[cell_of_point_[i]]++] = static_cast<std::uint32_t>(i);
+  }
+}
+
+template class CellList<2>;
+template class CellList<3>;
+
+} // namespace revsph

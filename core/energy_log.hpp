@@ -1,0 +1,35 @@
+#pragma once
+// energy.csv: one row per output step with every energy term, the total and the relative error
+// |E(t) - E(0)| / |E(0)| against the first row.
+
+#include "core/energy.hpp"
+
+#include <cstdint>
+#include <fstream>
+#include <optional>
+#include <string>
+
+namespace revsph {
+
+class EnergyLog {
+public:
+  // Writes to `csv_path` if given; always keeps the error statistics.
+  explicit EnergyLog(std::optional<std::string> csv_path);
+
+  void record(std::int64_t step, double time, const EnergyBudget& budget);
+
+  bool empty() const { return !initial_total_.has_value(); }
+  double initial_total() const { return initial_total_.value_or(0.0); }
+  double last_relative_error() const { return last_relative_error_; }
+  double max_relative_error() const { return max_relative_error_; }
+  const EnergyBudget& last() const { return last_; }
+
+private:
+  std::optional<std::ofstream> csv_;
+  std::optional<double> initial_total_;
+  double last_relative_error_ = 0.0;
+  double max_relative_error_ = 0.0;
+  EnergyBudget last_;
+};
+
+} // namespace revsph

@@ -1,0 +1,52 @@
+#pragma once
+// Faults found while stepping (fixed-point overflow, NaN, a particle leaving the domain).
+//
+// Parallel loops cannot throw; they record into a FaultRecorder, which keeps the fault of the
+// lowest particle index so that the report is the same for any thread count. The caller then
+// throws a SimulationFault naming the particle, the variable and the step.
+
+#include <cstddef>
+#include <cstdint>
+#include <mutex>
+#include <atomic>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace revsph {
+
+struct FaultDescription {
+  std::string particle_set;
+  std::size_t particle = 0;
+  std::string variable;
+  std::string reason;
+};
+
+class SimulationFault : public std::runtime_error {
+public:
+  SimulationFault(FaultDescription fault, std::int64_t step);
+  const FaultDescription& fault() const { return fault_; }
+  // The step during which the fault happened (steps completed before it + 1), -1 if unknown.
+  std::int64_t step() const { return step_; }
+
+private:
+  FaultDescription fault_;
+  std::int64_t step_;
+};
+
+class FaultRecorder {
+public:
+  // Thread-safe. Keeps the fault with the lowest particle index.
+  void record(std::size_t particle, const char* particle_set, const char* variable,
+              const char* reason);
+  bool any() const { return any_.load(std::memory_order_relaxed); }
+  // Throws SimulationFault (step unknown) if a fault was recorded, and clears the recorder.
+  void throw_if_any();
+
+private:
+  std::atomic<bool> any_{false};
+  std::mutex mutex_;
+  std::optional<FaultDescription> first_;
+};
+
+} // namespace revsph

@@ -1,0 +1,56 @@
+#pragma once
+// Plain geometric types shared by 2D and 3D code: the dimension D is a template parameter
+// everywhere, so one code path serves both.
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace revsph {
+
+template <int D>
+using Vec = std::array<double, D>;
+
+// Per-particle coordinates as structure of arrays: coordinate[k][i] is axis k of particle i.
+template <int D>
+using CoordinateArrays = std::array<std::vector<double>, D>;
+
+template <int D>
+using CoordinateView = std::array<std::span<const double>, D>;
+
+template <int D>
+CoordinateView<D> view_of(const CoordinateArrays<D>& arrays) {
+  CoordinateView<D> view;
+  for (int k = 0; k < D; ++k) {
+    view[k] = arrays[k];
+  }
+  return view;
+}
+
+template <int D>
+struct Box {
+  Vec<D> min{};
+  Vec<D> max{};
+
+  bool contains(const Vec<D>& point) const {
+    for (int k = 0; k < D; ++k) {
+      // Written so that NaN is outside.
+      if (!(point[k] >= min[k] && point[k] <= max[k])) {
+        return false;
+      }
+    }
+    return true;
+  }
+  // Largest |coordinate| of any point in the box: what a position scale must cover.
+  double max_abs_coordinate() const {
+    double largest = 0.0;
+    for (int k = 0; k < D; ++k) {
+      largest = std::max({largest, min[k] < 0 ? -min[k] : min[k], max[k] < 0 ? -max[k] : max[k]});
+    }
+    return largest;
+  }
+};
+
+} // namespace revsph

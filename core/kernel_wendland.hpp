@@ -1,0 +1,56 @@
+#pragma once
+// The Wendland quintic (C2) kernel, written with its support radius h (w = 0 for r >= h):
+//   w(r) = alpha_D (1 - q)^4 (1 + 4 q),   q = r / h,
+//   alpha_2 = 7 / (pi h^2),   alpha_3 = 21 / (2 pi h^3),
+// so that its integral over the support is 1. Paper 1 uses it with h = 3 dr (Table 1).
+
+#include <numbers>
+
+namespace revsph {
+
+template <int D>
+class WendlandQuintic {
+  static_assert(D == 2 || D == 3, "the Wendland quintic is defined here for 2D and 3D");
+
+public:
+  explicit WendlandQuintic(double support_radius)
+      : support_(support_radius), inverse_support_(1.0 / support_radius),
+        normalisation_(D == 2 ? 7.0 / (std::numbers::pi * support_radius * support_radius)
+                              : 21.0 / (2.0 * std::numbers::pi * support_radius *
+                                        support_radius * support_radius)) {}
+
+  double support_radius() const { return support_; }
+
+  // w(r)
+  double value(double r) const {
+    const double q = r * inverse_support_;
+    if (q >= 1.0) {
+      return 0.0;
+    }
+    const double one_minus_q = 1.0 - q;
+    const double squared = one_minus_q * one_minus_q;
+    return normalisation_ * squared * squared * (1.0 + 4.0 * q);
+  }
+
+  // dw/dr = -20 alpha q (1 - q)^3 / h
+  double derivative(double r) const { return derivative_over_r(r) * r; }
+
+  // (dw/dr) / r = -20 alpha (1 - q)^3 / h^2: finite at r = 0, so a pair force
+  // (dw/dr / r) * (x_a - x_b) needs no division by the distance.
+  double derivative_over_r(double r) const {
+    const double q = r * inverse_support_;
+    if (q >= 1.0) {
+      return 0.0;
+    }
+    const double one_minus_q = 1.0 - q;
+    return -20.0 * normalisation_ * one_minus_q * one_minus_q * one_minus_q * inverse_support_ *
+           inverse_support_;
+  }
+
+private:
+  double support_;
+  double inverse_support_;
+  double normalisation_;
+};
+
+} // namespace revsph

@@ -1,0 +1,54 @@
+#include "core/model_registry.hpp"
+
+#include <filesystem>
+
+namespace revsph {
+
+const ModelEntry* ModelRegistry::find(std::string_view name) const {
+  for (const ModelEntry& entry : entries_) {
+    if (entry.name == name) {
+      return &entry;
+    }
+  }
+  return nullptr;
+}
+
+const BuiltinCase* find_builtin_case(std::string_view name) {
+  for (const BuiltinCase& c : builtin_cases()) {
+    if (c.name == name) {
+      return &c;
+    }
+  }
+  return nullptr;
+}
+
+CaseFile load_case(const std::string& path_or_name) {
+  if (!std::filesystem::exists(path_or_name)) {
+    if (const BuiltinCase* builtin = find_builtin_case(path_or_name)) {
+      return CaseFile::parse(std::string(builtin->text), std::string(builtin->name) + ".toml");
+    }
+    std::string known;
+    for (const BuiltinCase& c : builtin_cases()) {
+      known += (known.empty() ? "" : ", ") + std::string(c.name);
+    }
+    throw CaseError(path_or_name, "",
+                    "no such file, and no built-in case of that name (built-in: " + known + ")");
+  }
+  return CaseFile::load(path_or_name);
+}
+
+std::unique_ptr<Simulation> create_simulation(const CaseFile& case_file,
+                                              const SimulationOptions& options) {
+  const std::string model = case_file.string("model");
+  const ModelEntry* entry = model_registry().find(model);
+  if (entry == nullptr) {
+    std::string known;
+    for (const ModelEntry& e : model_registry().entries()) {
+      known += (known.empty() ? "" : ", ") + e.name;
+    }
+    case_file.fail("model", "unknown model \"" + model + "\" (available: " + known + ")");
+  }
+  return entry->create(case_file, options);
+}
+
+} // namespace revsph

@@ -1,0 +1,60 @@
+#pragma once
+// The list of models and built-in cases. Both are filled by code that models/CMakeLists.txt
+// generates from the folders under models/: adding a model never edits core/.
+
+#include "core/arithmetic.hpp"
+#include "core/case_file.hpp"
+#include "core/simulation.hpp"
+
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace revsph {
+
+struct SimulationOptions {
+  Arithmetic arithmetic = Arithmetic::fixed;
+};
+
+using ModelFactory =
+    std::function<std::unique_ptr<Simulation>(const CaseFile&, const SimulationOptions&)>;
+
+struct ModelEntry {
+  std::string name;
+  std::string description;
+  ModelFactory create;
+};
+
+class ModelRegistry {
+public:
+  void add(ModelEntry entry) { entries_.push_back(std::move(entry)); }
+  const ModelEntry* find(std::string_view name) const;
+  const std::vector<ModelEntry>& entries() const { return entries_; }
+
+private:
+  std::vector<ModelEntry> entries_;
+};
+
+struct BuiltinCase {
+  std::string_view name;  // file name without .toml, e.g. "dambreak-small"
+  std::string_view model; // the folder under models/
+  std::string_view text;
+};
+
+// Defined in the generated models registration file.
+const ModelRegistry& model_registry();
+std::span<const BuiltinCase> builtin_cases();
+const BuiltinCase* find_builtin_case(std::string_view name);
+
+// A case file from a path, or, if no such file exists, the built-in case of that name.
+CaseFile load_case(const std::string& path_or_name);
+
+// Reads `model` and creates the simulation. The caller reads its own sections ([run], [output])
+// and then calls case_file.require_no_unknown_keys().
+std::unique_ptr<Simulation> create_simulation(const CaseFile& case_file,
+                                              const SimulationOptions& options);
+
+} // namespace revsph

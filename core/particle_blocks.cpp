@@ -1,0 +1,224 @@
+#include "core/particle_blocks.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace revsph {
+
+namespace {
+
+constexpr double relative_tolerance = 1e-9;
+
+// Lattice period along each axis (distance between rows/layers).
+template <int D>
+Vec<D> lattice_periods(Lattice lattice, double spacing) {
+  Vec<D> period{};
+  period.fill(spacing);
+  if (lattice == Lattice::hexagonal) {
+    period[1] = spacing * std::sqrt(3.0) / 2.0;
+    if constexpr (D == 3) {
+      period[2] = spacing * std::sqrt(2.0 / 3.0);
+    }
+  }
+  return period;
+}
+
+template <int D>
+Vec<D> to_vec(const std::vector<double>& values) {
+  Vec<D> v{};
+  for (int k = 0; k < D; ++k) {
+    v[k] = values[k];
+  }
+  return v;
+}
+
+template <int D>
+std::string format_point(const Vec<D>& p) {
+  std::ostringstream out;
+  out << "(";
+  for (int k = 0; k < D; ++k) {
+    out << (k ? ", " : "") << p[k];
+  }
+  out << ")";
+  return out.str();
+}
+
+} // namespace
+
+template <int D>
+double lattice_cell_volume(Lattice lattice, double spacing) {
+  const Vec<D> period = lattice_periods<D>(lattice, spacing);
+  double volume = 1.0;
+  for (int k = 0; k < D; ++k) {
+    volume *= period[k];
+  }
+  return volume;
+}
+
+template <int D>
+std::vector<Vec<D>> lattice_points(Lattice lattice, const Box<D>& region, double spacing) {
+  const Vec<D> period = lattice_periods<D>(lattice, spacing);
+  std::array<long, D> counts{};
+  for (int k = 0; k < D; ++k) {
+    counts[k] = static_cast<long>(std::floor((region.max[k] - region.min[k]) / period[k])) + 2;
+  }
+  // Keep points at least half a period inside the region (with a tolerance for round-off).
+  Vec<D> lo{};
+  Vec<D> hi{};
+  for (int k = 0; k < D; ++k) {
+    lo[k] = region.min[k] + 0.5 * period[k] - relative_tolerance * spacing;
+    hi[k] = region.max[k] - 0.5 * period[k] + relative_tolerance * spacing;
+  }
+  std::vector<Vec<D>> points;
+  const long layers = D == 3 ? counts[D - 1] : 1;
+  for (long layer = 0; layer < layers; ++layer) {
+    for (long row = 0; row < counts[1]; ++row) {
+      for (long column = 0; column < counts[0]; ++column) {
+        Vec<D> p{};
+        p[0] = region.min[0] + (0.5 + static_cast<double>(column)) * period[0];
+        p[1] = region.min[1] + (0.5 + static_cast<double>(row)) * period[1];
+        if constexpr (D == 3) {
+          p[2] = region.min[2] + (0.5 + static_cast<double>(layer)) * period[2];
+        }
+        if (lattice == Lattice::hexagonal) {
+          // Odd rows shift by half a spacing; in 3D odd layers (B of ABAB stacking) shift by
+          // (spacing / 2, row period / 3).
+          p[0] += (row % 2 == 1 ? 0.5 * spacing : 0.0);
+          if (D == 3 && layer % 2 == 1) {
+            p[0] += 0.5 * spacing;
+            p[1] += period[1] / 3.0;
+          }
+        }
+        bool inside = true;
+        for (int k = 0; k < D; ++k) {
+          inside = inside && p[k] >= lo[k] && p[k] <= hi[k];
+        }
+        if (inside) {
+          points.push_back(p);
+        }
+      }
+    }
+  }
+  return points;
+}
+
+template <int D>
+Box<D> read_domain(const CaseFile& case_file) {
+  Box<D> domain{to_vec<D>(case_file.numbers("domain.min", D)),
+                to_vec<D>(case_file.numbers("domain.max", D))};
+  for (int k = 0; k < D; ++k) {
+    if (!(domain.min[k] < domain.max[k])) {
+      case_file.fail("domain.max", "must be greater than domain.min on every axis");
+    }
+  }
+  return domain;
+}
+
+template <int D>
+std::vector<ParticleBlock<D>> read_particle_blocks(const CaseFile& case_file,
+                                                   double default_spacing, const Box<D>& domain,
+                                                   std::span<const std::string_view> kinds) {
+  std::vector<ParticleBlock<D>> blocks;
+  const std::size_t count = case_file.table_count("particles");
+  if (count == 0) {
+    case_file.fail("particles", "no [[particles]] blocks: the case has no particles");
+  }
+  for (std::size_t b = 0; b < count; ++b) {
+    const std::string key = "particles[" + std::to_string(b) + "]";
+    auto field = [&](const char* name) { return key + "." + name; };
+    ParticleBlock<D> block;
+    block.key = key;
+    block.kind = case_file.string(field("kind"));
+    bool known_kind = false;
+    std::string allowed;
+    for (std::string_view k : kinds) {
+      known_kind = known_kind || k == block.kind;
+      allowed += (allowed.empty() ? "\"" : ", \"") + std::string(k) + "\"";
+    }
+    if (!known_kind) {
+      case_file.fail(field("kind"), "unknown particle kind \"" + block.kind + "\" (this model has " +
+                                        allowed + ")");
+    }
+    const std::string lattice_name = case_file.string_or(field("lattice"), "square");
+    Lattice lattice = Lattice::square;
+    if (lattice_name == "hexagonal") {
+      lattice = Lattice::hexagonal;
+    } else if (lattice_name != "square") {
+      case_file.fail(field("lattice"), "expected \"square\" or \"hexagonal\", got \"" +
+                                           lattice_name + "\"");
+    }
+    block.spacing = default_spacing;
+    if (case_file.has(field("spacing"))) {
+      block.spacing = case_file.positive_number(field("spacing"));
+    }
+    block.volume_per_particle = lattice_cell_volume<D>(lattice, block.spacing);
+
+    const Box<D> region{to_vec<D>(case_file.numbers(field("min"), D)),
+                        to_vec<D>(case_file.numbers(field("max"), D))};
+    for (int k = 0; k < D; ++k) {
+      if (!(region.min[k] < region.max[k])) {
+        case_file.fail(field("max"), "must be greater than min on every axis");
+      }
+    }
+    const std::string shape = case_file.string_or(field("shape"), "box");
+    if (shape == "box") {
+      block.positions = lattice_points<D>(lattice, region, block.spacing);
+    } else if (shape == "container") {
+      const std::int64_t layers = case_file.integer_or(field("layers"), 1);
+      if (layers < 1 || layers > 1000) {
+        case_file.fail(field("layers"), "must be between 1 and 1000 (got " +
+                                            std::to_string(layers) + ")");
+      }
+      const bool open_top = case_file.boolean_or(field("open_top"), false);
+      const Vec<D> period = lattice_periods<D>(lattice, block.spacing);
+      Box<D> outer = region;
+      for (int k = 0; k < D; ++k) {
+        outer.min[k] -= static_cast<double>(layers) * period[k];
+        if (!(open_top && k == D - 1)) {
+          outer.max[k] += static_cast<double>(layers) * period[k];
+        }
+      }
+      for (const Vec<D>& p : lattice_points<D>(lattice, outer, block.spacing)) {
+        bool inside_inner = true;
+        for (int k = 0; k < D; ++k) {
+          inside_inner = inside_inner && p[k] > region.min[k] && p[k] < region.max[k];
+        }
+        if (!inside_inner) {
+          block.positions.push_back(p);
+        }
+      }
+    } else {
+      case_file.fail(field("shape"), "expected \"box\" or \"container\", got \"" + shape + "\"");
+    }
+    if (shape == "box" && (case_file.has(field("layers")) || case_file.has(field("open_top")))) {
+      case_file.fail(case_file.has(field("layers")) ? field("layers") : field("open_top"),
+                     "only a \"container\" block has layers and open_top");
+    }
+    if (block.positions.empty()) {
+      case_file.fail(key, "the block holds no particles (is it thinner than the spacing?)");
+    }
+    for (const Vec<D>& p : block.positions) {
+      if (!domain.contains(p)) {
+        case_file.fail(key, "the block reaches outside the domain: a particle at " +
+                                format_point<D>(p) + " is not inside [domain]");
+      }
+    }
+    blocks.push_back(std::move(block));
+  }
+  return blocks;
+}
+
+template std::vector<Vec<2>> lattice_points<2>(Lattice, const Box<2>&, double);
+template std::vector<Vec<3>> lattice_points<3>(Lattice, const Box<3>&, double);
+template double lattice_cell_volume<2>(Lattice, double);
+template double lattice_cell_volume<3>(Lattice, double);
+template Box<2> read_domain<2>(const CaseFile&);
+template Box<3> read_domain<3>(const CaseFile&);
+template std::vector<ParticleBlock<2>> read_particle_blocks<2>(const CaseFile&, double,
+                                                               const Box<2>&,
+                                                               std::span<const std::string_view>);
+template std::vector<ParticleBlock<3>> read_particle_blocks<3>(const CaseFile&, double,
+                                                               const Box<3>&,
+                                                               std::span<const std::string_view>);
+
+} // namespace revsph

@@ -1,0 +1,55 @@
+#pragma once
+// Particle blocks of a case file ([[particles]]): regions filled with particles on a square or
+// hexagonal lattice.
+//
+//   kind    = "fluid"            which particle set (the model says which kinds exist)
+//   shape   = "box"              "box": the region [min, max] filled;
+//                                "container": `layers` lattice layers around the box [min, max]
+//                                (its walls), with `open_top = true` leaving the top open
+//   lattice = "square"           "square" or "hexagonal" (2D: triangular; 3D: hexagonal close packed)
+//   min, max                     corners of the region (m)
+//   spacing                      lattice spacing (m), default the case's dr
+//
+// Particles sit at lattice points at least half a lattice period inside the region, so that
+// blocks placed side by side, and a container around a block, continue one lattice.
+
+#include "core/case_file.hpp"
+#include "core/geometry.hpp"
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace revsph {
+
+enum class Lattice { square, hexagonal };
+
+template <int D>
+struct ParticleBlock {
+  std::string key;  // "particles[2]", for messages
+  std::string kind; // "fluid", "wall", …
+  std::vector<Vec<D>> positions;
+  double volume_per_particle = 0.0; // lattice cell volume (area in 2D)
+  double spacing = 0.0;
+};
+
+// Lattice points inside `region` (see above). Deterministic order: the last axis slowest.
+template <int D>
+std::vector<Vec<D>> lattice_points(Lattice lattice, const Box<D>& region, double spacing);
+
+// Volume (2D: area) of one lattice cell, the volume each particle represents.
+template <int D>
+double lattice_cell_volume(Lattice lattice, double spacing);
+
+// Reads every [[particles]] block. Each generated particle must lie inside `domain`.
+template <int D>
+std::vector<ParticleBlock<D>> read_particle_blocks(const CaseFile& case_file, double default_spacing,
+                                                   const Box<D>& domain,
+                                                   std::span<const std::string_view> kinds);
+
+// Reads [domain] min/max and checks min < max on every axis.
+template <int D>
+Box<D> read_domain(const CaseFile& case_file);
+
+} // namespace revsph

@@ -1,0 +1,80 @@
+#include "core/progress.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unistd.h>
+
+namespace revsph {
+
+std::string format_duration(double seconds) {
+  if (!std::isfinite(seconds) || seconds < 0) {
+    return "--:--";
+  }
+  const long total = static_cast<long>(std::lround(seconds));
+  char buffer[32];
+  if (total >= 3600) {
+    std::snprintf(buffer, sizeof buffer, "%ld:%02ld:%02ld", total / 3600, (total / 60) % 60,
+                  total % 60);
+  } else {
+    std::snprintf(buffer, sizeof buffer, "%ld:%02ld", total / 60, total % 60);
+  }
+  return buffer;
+}
+
+ProgressReporter::ProgressReporter(std::FILE* stream, std::string label, std::int64_t total_steps,
+                                   double dt, double plain_interval_seconds)
+    : stream_(stream), label_(std::move(label)), total_steps_(total_steps), dt_(dt),
+      interval_seconds_(plain_interval_seconds), live_(isatty(fileno(stream)) != 0),
+      start_(std::chrono::steady_clock::now()), last_print_(start_) {}
+
+void ProgressReporter::update(std::int64_t steps_done, const std::string& note) {
+  if (first_step_ < 0) {
+    first_step_ = steps_done;
+    start_ = std::chrono::steady_clock::now();
+    last_print_ = start_;
+    return;
+  }
+  const auto now = std::chrono::steady_clock::now();
+  const double since = std::chrono::duration<double>(now - last_print_).count();
+  if (since >= (live_ ? 0.2 : interval_seconds_)) {
+    last_print_ = now;
+    print(steps_done, note, false);
+  }
+}
+
+void ProgressReporter::finish(std::int64_t steps_done, const std::string& note) {
+  if (first_step_ < 0) {
+    first_step_ = steps_done;
+  }
+  print(steps_done, note, true);
+}
+
+void ProgressReporter::print(std::int64_t steps_done, const std::string& note, bool final) {
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double done = static_cast<double>(steps_done - first_step_);
+  const double rate = elapsed > 0 ? done / elapsed : 0.0;
+  const double remaining = static_cast<double>(total_steps_ - steps_done);
+  const double fraction =
+      total_steps_ > 0 ? static_cast<double>(steps_done) / static_cast<double>(total_steps_) : 1.0;
+  char line[512];
+  std::snprintf(line, sizeof line, "%s %lld/%lld steps (%5.1f%%)  %.3g steps/s  t = %.5g s  %s %s%s%s",
+                label_.c_str(), static_cast<long long>(steps_done),
+                static_cast<long long>(total_steps_), 100.0 * fraction, rate,
+                static_cast<double>(steps_done) * dt_, final ? "elapsed" : "ETA",
+                final ? format_duration(elapsed).c_str()
+                      : format_duration(rate > 0 ? remaining / rate : NAN).c_str(),
+                note.empty() ? "" : "  ", note.c_str());
+  if (live_) {
+    const int width = 24;
+    const int filled = static_cast<int>(std::lround(fraction * width));
+    std::string bar(static_cast<std::size_t>(std::clamp(filled, 0, width)), '#');
+    bar.resize(width, '.');
+    std::fprintf(stream_, "\r\033[K[%s] %s%s", bar.c_str(), line, final ? "\n" : "");
+  } else {
+    std::fprintf(stream_, "%s\n", line);
+  }
+  std::fflush(stream_);
+}
+
+} // namespace revsph

@@ -1,0 +1,39 @@
+#pragma once
+// Progress of a long run: on a terminal a live line (bar, steps/s, simulated time, ETA, a
+// caller-supplied note such as the energy error); otherwise a plain line every few seconds.
+
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+
+namespace revsph {
+
+class ProgressReporter {
+public:
+  ProgressReporter(std::FILE* stream, std::string label, std::int64_t total_steps, double dt,
+                   double plain_interval_seconds);
+  // Cheap enough to call every step: it only prints when a refresh is due.
+  void update(std::int64_t steps_done, const std::string& note = {});
+  // Prints the final state and ends the live line.
+  void finish(std::int64_t steps_done, const std::string& note = {});
+
+  bool live() const { return live_; }
+
+private:
+  void print(std::int64_t steps_done, const std::string& note, bool final);
+
+  std::FILE* stream_;
+  std::string label_;
+  std::int64_t total_steps_;
+  double dt_;
+  double interval_seconds_;
+  bool live_;
+  std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point last_print_;
+  std::int64_t first_step_ = -1;
+};
+
+std::string format_duration(double seconds);
+
+} // namespace revsph

@@ -1,0 +1,47 @@
+#include "core/run_loop.hpp"
+
+#include <cstdio>
+
+namespace revsph {
+
+namespace {
+std::string energy_note(const EnergyLog* log) {
+  if (log == nullptr || log->empty()) {
+    return {};
+  }
+  char note[64];
+  std::snprintf(note, sizeof note, "dE/E = %.2e", log->last_relative_error());
+  return note;
+}
+} // namespace
+
+void run_steps(Simulation& simulation, std::int64_t steps, const RunHooks& hooks) {
+  auto record_energy = [&] {
+    if (hooks.energy_log != nullptr) {
+      hooks.energy_log->record(simulation.steps_taken(), simulation.time(), simulation.energy());
+    }
+  };
+  if (hooks.energy_log != nullptr && hooks.energy_log->empty()) {
+    record_energy();
+  }
+  if (hooks.progress != nullptr) {
+    hooks.progress->update(simulation.steps_taken());
+  }
+  for (std::int64_t s = 1; s <= steps; ++s) {
+    simulation.advance(1);
+    if (hooks.after_step) {
+      hooks.after_step(simulation, s);
+    }
+    if (simulation.steps_taken() % hooks.energy_every == 0 || s == steps) {
+      record_energy();
+    }
+    if (hooks.progress != nullptr) {
+      hooks.progress->update(simulation.steps_taken(), energy_note(hooks.energy_log));
+    }
+  }
+  if (hooks.progress != nullptr) {
+    hooks.progress->finish(simulation.steps_taken(), energy_note(hooks.energy_log));
+  }
+}
+
+} // namespace revsph

@@ -1,0 +1,51 @@
+#include "core/run_settings.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+namespace revsph {
+
+std::int64_t RunLength::steps_for(double dt) const {
+  if (steps) {
+    return *steps;
+  }
+  if (t_end) {
+    return static_cast<std::int64_t>(std::llround(*t_end / dt));
+  }
+  return 0;
+}
+
+std::string case_name(const CaseFile& case_file) {
+  return case_file.string_or("name",
+                             std::filesystem::path(case_file.source_name()).stem().string());
+}
+
+RunSettings read_run_settings(const CaseFile& case_file) {
+  RunSettings settings;
+  settings.name = case_name(case_file);
+  if (case_file.has("run.steps") && case_file.has("run.t_end")) {
+    case_file.fail("run.t_end", "give either run.steps or run.t_end, not both");
+  }
+  if (case_file.has("run.steps")) {
+    const std::int64_t steps = case_file.integer("run.steps");
+    if (steps < 0) {
+      case_file.fail("run.steps", "must be >= 0 (got " + std::to_string(steps) + ")");
+    }
+    settings.length.steps = steps;
+  }
+  if (case_file.has("run.t_end")) {
+    settings.length.t_end = case_file.positive_number("run.t_end");
+  }
+  settings.energy_every = case_file.integer_or("output.energy_every", 100);
+  if (settings.energy_every < 1) {
+    case_file.fail("output.energy_every", "must be >= 1");
+  }
+  if (case_file.has("output.progress_interval")) {
+    settings.progress_interval = case_file.positive_number("output.progress_interval");
+  }
+  case_file.accept_table("run");
+  case_file.accept_table("output");
+  return settings;
+}
+
+} // namespace revsph

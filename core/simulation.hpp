@@ -1,0 +1,132 @@
+#pragma once
+// The model-independent face of a running simulation, used by the CLI, the verifier and the
+// tests. A model is any type satisfying the `Model` concept; ModelSimulation adapts it, so a new
+// model never implements this interface by hand.
+
+#include "core/arithmetic.hpp"
+#include "core/energy.hpp"
+#include "core/fault.hpp"
+#include "core/state_snapshot.hpp"
+#include "core/step_composition.hpp"
+
+#include <concepts>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace revsph {
+
+struct ParticleCount {
+  std::string particle_set;
+  std::size_t count = 0;
+  bool moving = true;
+};
+
+struct SimulationInfo {
+  std::string case_name;
+  std::string model;
+  int dimension = 2;
+  Arithmetic arithmetic = Arithmetic::fixed;
+  double dt = 0.0;
+  std::vector<ParticleCount> particles;
+
+  std::size_t moving_particle_count() const {
+    std::size_t n = 0;
+    for (const ParticleCount& p : particles) {
+      n += p.moving ? p.count : 0;
+    }
+    return n;
+  }
+};
+
+// What a model provides (see README "Adding a model").
+template <class M>
+concept Model = requires(M& model, const M& const_model) {
+  // The palindromic sequence of sub-steps of one time step.
+  { M::palindrome() } -> std::convertible_to<std::span<const Substep<M>>>;
+  // The declared state (core/state_field.hpp), visited by for_each_field.
+  { model.state() } -> DeclaredState;
+  // Energy terms at the current (synchronised) state.
+  { model.energy() } -> std::same_as<EnergyBudget>;
+  // Forget cached quantities derived from the state (after the state was replaced).
+  model.invalidate_derived();
+  { const_model.info() } -> std::convertible_to<const SimulationInfo&>;
+  // The time reversal: negate odd variables (normally apply_time_reversal of the state).
+  model.reverse_time();
+};
+
+class Simulation {
+public:
+  virtual ~Simulation() = default;
+
+  virtual const SimulationInfo& info() const = 0;
+  // Advances by `steps` full time steps. Throws SimulationFault naming the particle, variable
+  // and step if a value overflows, turns non-finite or leaves the domain.
+  virtual void advance(std::int64_t steps) = 0;
+  virtual void reverse_time() = 0;
+  virtual StateSnapshot capture_state() = 0;
+  virtual void restore_state(const StateSnapshot& snapshot) = 0;
+  virtual EnergyBudget energy() = 0;
+
+  // Single sub-steps, to check each one's reversibility on its own.
+  virtual std::vector<std::string> substep_names() const = 0;
+  virtual void apply_substep(std::size_t index, double dt) = 0;
+
+  std::int64_t steps_taken() const { return steps_taken_; }
+  double time() const { return static_cast<double>(steps_taken_) * info().dt; }
+  void set_steps_taken(std::int64_t steps) { steps_taken_ = steps; }
+
+protected:
+  std::int64_t steps_taken_ = 0;
+};
+
+template <Model M>
+class ModelSimulation final : public Simulation {
+public:
+  explicit ModelSimulation(M model) : model_(std::move(model)) {
+    require_palindrome<M>(M::palindrome());
+  }
+
+  const SimulationInfo& info() const override { return model_.info(); }
+
+  void advance(std::int64_t steps) override {
+    const double dt = model_.info().dt;
+    for (std::int64_t s = 0; s < steps; ++s) {
+      try {
+        apply_step<M>(model_, M::palindrome(), dt);
+      } catch (const SimulationFault& fault) {
+        throw SimulationFault(fault.fault(), steps_taken_ + 1);
+      }
+      ++steps_taken_;
+    }
+  }
+
+  void reverse_time() override { model_.reverse_time(); }
+  StateSnapshot capture_state() override { return revsph::capture_state(model_.state()); }
+  void restore_state(const StateSnapshot& snapshot) override {
+    revsph::restore_state(model_.state(), snapshot);
+    model_.invalidate_derived();
+  }
+  EnergyBudget energy() override { return model_.energy(); }
+
+  std::vector<std::string> substep_names() const override {
+    std::vector<std::string> names;
+    for (const Substep<M>& s : M::palindrome()) {
+      names.emplace_back(s.name);
+    }
+    return names;
+  }
+  void apply_substep(std::size_t index, double dt) override {
+    M::palindrome()[index].apply(model_, dt);
+  }
+
+  M& model() { return model_; }
+
+private:
+  M model_;
+};
+
+} // namespace revsph

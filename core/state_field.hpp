@@ -1,0 +1,74 @@
+#pragma once
+// The one declaration of a state variable (name, unit, parity, scale) and its storage.
+//
+// A model's state is a struct of StateField members plus a for_each_field() that visits them in a
+// fixed order. That single declaration drives the time reversal (odd fields are negated), the
+// state hash, the bitwise comparison of the verifier and the snapshots: no code is written per
+// model for those.
+
+#include "fixedpoint/scale.hpp"
+
+#include <cassert>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace revsph {
+
+// Behaviour under time reversal R: odd variables (velocities, fluxes) change sign.
+enum class Parity { even, odd };
+
+struct VariableInfo {
+  std::string particle_set; // "fluid", "wall", … (a model may have several species)
+  std::string name;         // "velocity"
+  std::string unit;         // "m/s"
+  Parity parity = Parity::even;
+  int components = 1; // 1 scalar, D vector, D*D matrix
+  fixedpoint::Scale scale;
+  bool evolved = true; // false: fixed at setup (masses, wall positions, integration constants)
+};
+
+// Values of one variable for all particles of its set, component-major: component c of particle i
+// is values[c * count + i]. Raw is std::int64_t (fixed point) or double (the FloPA variant).
+template <class Raw>
+class StateField {
+public:
+  using value_type = Raw;
+
+  explicit StateField(VariableInfo info) : info_(std::move(info)) {}
+
+  const VariableInfo& info() const { return info_; }
+  VariableInfo& info() { return info_; }
+  std::size_t count() const { return count_; }
+  int components() const { return info_.components; }
+
+  void resize(std::size_t count) {
+    count_ = count;
+    values_.assign(count * static_cast<std::size_t>(info_.components), Raw{});
+  }
+
+  std::span<Raw> component(int c) {
+    assert(c >= 0 && c < info_.components);
+    return {values_.data() + static_cast<std::size_t>(c) * count_, count_};
+  }
+  std::span<const Raw> component(int c) const {
+    assert(c >= 0 && c < info_.components);
+    return {values_.data() + static_cast<std::size_t>(c) * count_, count_};
+  }
+  Raw& at(int c, std::size_t i) { return values_[static_cast<std::size_t>(c) * count_ + i]; }
+  const Raw& at(int c, std::size_t i) const {
+    return values_[static_cast<std::size_t>(c) * count_ + i];
+  }
+  std::span<Raw> all() { return values_; }
+  std::span<const Raw> all() const { return values_; }
+
+private:
+  VariableInfo info_;
+  std::size_t count_ = 0;
+  std::vector<Raw> values_;
+};
+
+} // namespace revsph

@@ -1,0 +1,115 @@
+#pragma once
+// A model-independent copy of a state: every declared field with its raw bits.
+//
+// Fixed-point fields are stored as their int64 values; double fields (FloPA) as their IEEE bit
+// patterns. Capture, restore and the time reversal are generic over any state struct that
+// declares its fields through for_each_field().
+
+#include "core/state_field.hpp"
+
+#include <bit>
+#include <concepts>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace revsph {
+
+enum class RawKind { fixed_point, ieee_double };
+
+struct FieldSnapshot {
+  VariableInfo info;
+  RawKind kind = RawKind::fixed_point;
+  std::size_t count = 0;
+  std::vector<std::int64_t> bits; // component-major, like StateField
+
+  std::int64_t at(int component, std::size_t particle) const {
+    return bits[static_cast<std::size_t>(component) * count + particle];
+  }
+  // The physical value of one entry.
+  double real(int component, std::size_t particle) const;
+};
+
+struct StateSnapshot {
+  std::vector<FieldSnapshot> fields;
+
+  const FieldSnapshot* find(const std::string& particle_set, const std::string& name) const;
+  FieldSnapshot* find(const std::string& particle_set, const std::string& name);
+};
+
+// A state struct: visits its StateField members, always in the same order.
+template <class State>
+concept DeclaredState = requires(State& state) {
+  state.for_each_field([](auto& /*field*/) {});
+};
+
+template <class Raw>
+constexpr RawKind raw_kind_of() {
+  if constexpr (std::same_as<Raw, double>) {
+    return RawKind::ieee_double;
+  } else {
+    static_assert(std::same_as<Raw, std::int64_t>, "state fields hold int64 or double");
+    return RawKind::fixed_point;
+  }
+}
+
+template <class Raw>
+FieldSnapshot snapshot_of(const StateField<Raw>& field) {
+  FieldSnapshot snapshot{field.info(), raw_kind_of<Raw>(), field.count(), {}};
+  snapshot.bits.reserve(field.all().size());
+  for (const Raw value : field.all()) {
+    snapshot.bits.push_back(std::bit_cast<std::int64_t>(value));
+  }
+  return snapshot;
+}
+
+template <DeclaredState State>
+StateSnapshot capture_state(State& state) {
+  StateSnapshot snapshot;
+  state.for_each_field([&](auto& field) { snapshot.fields.push_back(snapshot_of(field)); });
+  return snapshot;
+}
+
+// Throws std::invalid_argument if the snapshot does not have the same declared fields
+// (set, name, components, scale, raw kind) in the same order.
+void require_same_layout(const FieldSnapshot& expected, const FieldSnapshot& found);
+
+template <DeclaredState State>
+void restore_state(State& state, const StateSnapshot& snapshot) {
+  std::size_t index = 0;
+  state.for_each_field([&](auto& field) {
+    using Raw = typename std::remove_cvref_t<decltype(field)>::value_type;
+    if (index >= snapshot.fields.size()) {
+      throw std::invalid_argument("snapshot has fewer fields than the model declares");
+    }
+    const FieldSnapshot& source = snapshot.fields[index++];
+    require_same_layout(snapshot_of(field), source);
+    auto values = field.all();
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      values[i] = std::bit_cast<Raw>(source.bits[i]);
+    }
+  });
+  if (index != snapshot.fields.size()) {
+    throw std::invalid_argument("snapshot has more fields than the model declares");
+  }
+}
+
+// The time reversal R: negate every odd variable (design note §2). Throws on the one raw value
+// whose negation overflows.
+template <class Arith, DeclaredState State>
+void apply_time_reversal(State& state) {
+  state.for_each_field([](auto& field) {
+    if (field.info().parity != Parity::odd) {
+      return;
+    }
+    for (auto& value : field.all()) {
+      if (!Arith::try_negate(value)) {
+        throw std::overflow_error("time reversal: " + field.info().name +
+                                  " holds INT64_MIN, whose negation does not fit");
+      }
+    }
+  });
+}
+
+} // namespace revsph

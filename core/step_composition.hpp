@@ -1,0 +1,63 @@
+#pragma once
+// A time step as a palindrome of exactly invertible sub-steps (design note §2).
+//
+// Each sub-step updates one group of variables by an increment computed from the others,
+// G += Delta_G(others), with Delta_G(R y) = -R_G Delta_G(y); such a sub-step S satisfies
+// R S R S = id in integers. A palindromic composition (kick(h/2) drift(h) kick(h/2)) then gives a
+// step Phi with R Phi R Phi = id: bitwise time reversibility. The verifier can check each
+// sub-step on its own (verify/reversibility.hpp).
+
+#include <cstddef>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace revsph {
+
+template <class Model>
+struct Substep {
+  std::string_view name;
+  double dt_fraction; // this sub-step advances its group by dt_fraction * dt
+  void (*apply)(Model& model, double dt);
+};
+
+// Throws std::logic_error unless the sequence reads the same both ways (names, fractions and
+// functions) and each named sub-step's fractions add up to one full step.
+template <class Model>
+void require_palindrome(std::span<const Substep<Model>> sequence) {
+  const std::size_t n = sequence.size();
+  if (n == 0) {
+    throw std::logic_error("a time step needs at least one sub-step");
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const Substep<Model>& a = sequence[i];
+    const Substep<Model>& b = sequence[n - 1 - i];
+    if (a.name != b.name || a.dt_fraction != b.dt_fraction || a.apply != b.apply) {
+      throw std::logic_error("the sub-steps of a time step are not a palindrome: '" +
+                             std::string(a.name) + "' faces '" + std::string(b.name) + "'");
+    }
+  }
+  for (const Substep<Model>& s : sequence) {
+    double total = 0.0;
+    for (const Substep<Model>& t : sequence) {
+      if (t.name == s.name) {
+        total += t.dt_fraction;
+      }
+    }
+    if (total != 1.0) {
+      throw std::logic_error("sub-step '" + std::string(s.name) +
+                             "' does not add up to one full time step");
+    }
+  }
+}
+
+// One full step: the sub-steps in sequence.
+template <class Model>
+void apply_step(Model& model, std::span<const Substep<Model>> sequence, double dt) {
+  for (const Substep<Model>& s : sequence) {
+    s.apply(model, s.dt_fraction * dt);
+  }
+}
+
+} // namespace revsph

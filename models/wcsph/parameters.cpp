@@ -1,0 +1,82 @@
+#include "models/wcsph/parameters.hpp"
+
+#include "core/particle_blocks.hpp"
+
+#include <cmath>
+
+namespace revsph::wcsph {
+
+namespace {
+
+fixedpoint::Scale scale_or(const CaseFile& case_file, const char* key, double magnitude,
+                           int fraction_bits) {
+  if (case_file.has(key)) {
+    const std::int64_t exponent = case_file.integer(key);
+    if (exponent < -1000 || exponent > 1000) {
+      case_file.fail(key, "a power-of-two exponent between -1000 and 1000");
+    }
+    return fixedpoint::Scale(static_cast<int>(exponent));
+  }
+  return fixedpoint::Scale::covering(magnitude, fraction_bits);
+}
+
+} // namespace
+
+template <int D>
+Parameters<D> read_parameters(const CaseFile& case_file) {
+  Parameters<D> p;
+  p.rest_density = case_file.positive_number("physics.rest_density");
+  p.sound_speed = case_file.positive_number("physics.sound_speed");
+  p.gravity = case_file.number_or("physics.gravity", 0.0);
+  p.gravity_reference_height = case_file.number_or("physics.gravity_reference_height", 0.0);
+
+  p.dr = case_file.positive_number("discretisation.dr");
+  p.support_radius = p.dr * case_file.positive_number("discretisation.support_radius_over_dr");
+  const bool has_courant = case_file.has("discretisation.courant_number");
+  const bool has_dt = case_file.has("discretisation.dt");
+  if (has_courant == has_dt) {
+    case_file.fail("discretisation.dt",
+                   has_dt ? "give either dt or courant_number, not both"
+                          : "missing required key (or give discretisation.courant_number, "
+                            "dt = courant_number * h / c)");
+  }
+  p.dt = has_dt ? case_file.positive_number("discretisation.dt")
+                : case_file.positive_number("discretisation.courant_number") * p.support_radius /
+                      p.sound_speed;
+  p.cell_size_factor = case_file.number_or("discretisation.cell_size_factor", 1.0);
+  if (!(p.cell_size_factor >= 1.0 && p.cell_size_factor <= 100.0)) {
+    case_file.fail("discretisation.cell_size_factor", "must be between 1 and 100");
+  }
+
+  p.wall_radius = p.dr * case_file.number_or("wall.radius_over_dr", 0.95);
+  p.wall_energy_per_mass = case_file.number_or("wall.energy_per_mass", 0.0);
+  p.wall_epsilon = case_file.number_or("wall.epsilon", 1e-6);
+  if (!(p.wall_radius > 0.0)) {
+    case_file.fail("wall.radius_over_dr", "must be > 0");
+  }
+  if (p.wall_energy_per_mass < 0.0) {
+    case_file.fail("wall.energy_per_mass", "must be >= 0");
+  }
+  if (p.wall_epsilon < 0.0) {
+    case_file.fail("wall.epsilon", "must be >= 0");
+  }
+
+  p.domain = read_domain<D>(case_file);
+
+  // Default scales: positions keep 52 fraction bits below the domain size, so the double view of
+  // a position is exact; velocities resolve c * 2^-50 and reach 2^13 c; density sums resolve
+  // rho0 * 2^-48; acceleration sums resolve (c^2 / h) * 2^-48.
+  p.position_scale =
+      scale_or(case_file, "fixed_point.position_exponent", p.domain.max_abs_coordinate(), 52);
+  p.velocity_scale = scale_or(case_file, "fixed_point.velocity_exponent", p.sound_speed, 50);
+  p.density_scale = scale_or(case_file, "fixed_point.density_exponent", p.rest_density, 48);
+  p.acceleration_scale =
+      scale_or(case_file, "fixed_point.acceleration_exponent",
+               p.sound_speed * p.sound_speed / p.support_radius, 48);
+  return p;
+}
+
+template Parameters<2> read_parameters<2>(const CaseFile&);
+template Parameters<3> read_parameters<3>(const CaseFile&);
+
+} // namespace revsph::wcsph

@@ -1,0 +1,38 @@
+#pragma once
+// Parameters of a WCSPH case, read from its case file (reference in models/wcsph/README.md).
+
+#include "core/case_file.hpp"
+#include "core/geometry.hpp"
+#include "fixedpoint/scale.hpp"
+
+namespace revsph::wcsph {
+
+template <int D>
+struct Parameters {
+  // [physics]
+  double rest_density = 0.0;             // rho0 (kg/m^3)
+  double sound_speed = 0.0;              // c (m/s)
+  double gravity = 0.0;                  // g (m/s^2), along -axis D-1
+  double gravity_reference_height = 0.0; // height of zero gravitational potential (m)
+  // [discretisation]
+  double dr = 0.0;             // particle spacing (m)
+  double support_radius = 0.0; // kernel support radius h (m)
+  double dt = 0.0;             // time step (s)
+  double cell_size_factor = 1.0; // neighbour-search cell size / search radius, >= 1
+  // [wall], eq. (7)
+  double wall_radius = 0.0;          // r_wall (m)
+  double wall_energy_per_mass = 0.0; // E_wall / m (J/kg)
+  double wall_epsilon = 0.0;         // eps (m)
+  Box<D> domain;
+  // [fixed_point]: scales of the stored and the accumulated quantities
+  fixedpoint::Scale position_scale;
+  fixedpoint::Scale velocity_scale;
+  fixedpoint::Scale density_scale;      // density sums and the constants C_a
+  fixedpoint::Scale acceleration_scale; // acceleration sums
+  int mass_fraction_bits = 52;
+};
+
+template <int D>
+Parameters<D> read_parameters(const CaseFile& case_file);
+
+} // namespace revsph::wcsph

@@ -1,0 +1,38 @@
+#pragma once
+// The revsph subcommands. Each returns the process exit status (common.hpp).
+
+#include "tools/revsph/common.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace revsph::cli {
+
+struct RunOptions {
+  CaseOptions case_options;
+  std::string out_dir; // default out/<case name>
+  std::optional<std::int64_t> steps;
+  std::optional<double> t_end;
+  bool force = false;
+};
+
+struct VerifyCommandOptions {
+  CaseOptions case_options;
+  std::optional<std::int64_t> steps;
+  std::optional<double> t_end;
+  bool check_substeps = false;
+};
+
+struct HashOptions {
+  CaseOptions case_options;
+  std::optional<std::int64_t> steps;
+  std::optional<double> t_end;
+};
+
+int run_command(const RunOptions& options);
+int verify_command(const VerifyCommandOptions& options);
+int hash_command(const HashOptions& options);
+int cases_command(const std::string& name);
+
+} // namespace revsph::cli

@@ -1,0 +1,28 @@
+#pragma once
+// summary.json of a run: what ran, how fast, with which build, and the final state hash.
+
+#include "core/energy_log.hpp"
+#include "core/simulation.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace revsph::cli {
+
+struct RunSummary {
+  std::string case_source;
+  std::vector<std::string> overrides;
+  std::int64_t steps_requested = 0;
+  double wall_seconds = 0.0;
+  int threads = 1;
+  std::string initial_hash;
+  std::string final_hash;
+  std::optional<std::string> failure; // the fault message if the run stopped early
+};
+
+void write_summary(const std::filesystem::path& path, Simulation& simulation,
+                   const RunSummary& run, const EnergyLog& energy);
+
+} // namespace revsph::cli

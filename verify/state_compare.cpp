@@ -1,0 +1,125 @@
+#include "verify/state_compare.hpp"
+
+#include "fixedpoint/exact_sum.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace revsph {
+
+namespace {
+
+using fixedpoint::int128;
+
+// Maps double bit patterns to integers that are ordered like the doubles, so that the difference
+// of two of them counts the representable doubles between them.
+int128 ordered(std::int64_t bits) {
+  return bits >= 0 ? int128{bits} : int128{std::numeric_limits<std::int64_t>::min()} - bits;
+}
+
+std::string component_suffix(const FieldSnapshot& field, int component) {
+  return field.info.components == 1 ? "" : "[" + std::to_string(component) + "]";
+}
+
+} // namespace
+
+std::uint64_t units_in_last_place(RawKind kind, std::int64_t a, std::int64_t b) {
+  const int128 difference =
+      kind == RawKind::fixed_point ? int128{a} - int128{b} : ordered(a) - ordered(b);
+  const int128 magnitude = difference < 0 ? -difference : difference;
+  return magnitude > int128{std::numeric_limits<std::uint64_t>::max()}
+             ? std::numeric_limits<std::uint64_t>::max()
+             : static_cast<std::uint64_t>(magnitude);
+}
+
+StateComparison compare_states(const StateSnapshot& expected, const StateSnapshot& actual) {
+  StateComparison result;
+  if (expected.fields.size() != actual.fields.size()) {
+    result.identical = false;
+    result.layout_error = "the states have different numbers of variables";
+    return result;
+  }
+  for (std::size_t f = 0; f < expected.fields.size(); ++f) {
+    const FieldSnapshot& e = expected.fields[f];
+    const FieldSnapshot& a = actual.fields[f];
+    try {
+      require_same_layout(e, a);
+    } catch (const std::invalid_argument& error) {
+      result.identical = false;
+      result.layout_error = error.what();
+      return result;
+    }
+    VariableDifference difference{e.info.particle_set, e.info.name, 0, e.bits.size(), 0, 0.0,
+                                  e.info.unit, {}};
+    for (std::size_t i = 0; i < e.count; ++i) {
+      for (int c = 0; c < e.info.components; ++c) {
+        const std::int64_t expected_bits = e.at(c, i);
+        const std::int64_t actual_bits = a.at(c, i);
+        if (expected_bits == actual_bits) {
+          continue;
+        }
+        const ValueLocation location{e.info.particle_set, e.info.name + component_suffix(e, c), i,
+                                     c, expected_bits, actual_bits};
+        if (!result.first_difference) {
+          result.first_difference = location;
+        }
+        ++difference.differing_values;
+        const std::uint64_t ulps = units_in_last_place(e.kind, expected_bits, actual_bits);
+        if (ulps > difference.max_units_in_last_place) {
+          difference.max_units_in_last_place = ulps;
+          difference.worst = location;
+        }
+        const double abs_difference = std::fabs(e.real(c, i) - a.real(c, i));
+        if (abs_difference > difference.max_abs_difference || std::isnan(abs_difference)) {
+          difference.max_abs_difference = abs_difference;
+        }
+      }
+    }
+    result.compared_values += e.bits.size();
+    if (difference.differing_values > 0) {
+      result.identical = false;
+      result.differences.push_back(std::move(difference));
+    }
+  }
+  return result;
+}
+
+std::string StateComparison::verdict() const {
+  std::ostringstream out;
+  if (!layout_error.empty()) {
+    out << "cannot compare: " << layout_error;
+    return out.str();
+  }
+  if (identical) {
+    out << "bitwise identical (" << compared_values << " raw values compared)";
+    return out.str();
+  }
+  const ValueLocation& first = *first_difference;
+  std::size_t differing = 0;
+  std::uint64_t worst = 0;
+  for (const VariableDifference& d : differences) {
+    differing += d.differing_values;
+    worst = std::max(worst, d.max_units_in_last_place);
+  }
+  out << "NOT identical: first difference at " << first.particle_set << " particle "
+      << first.particle << ", " << first.variable << " (raw " << first.expected << " -> "
+      << first.actual << "); " << differing << " of " << compared_values
+      << " values differ, largest difference " << worst << " units in the last place";
+  return out.str();
+}
+
+std::vector<std::string> StateComparison::details() const {
+  std::vector<std::string> lines;
+  for (const VariableDifference& d : differences) {
+    std::ostringstream out;
+    out << d.particle_set << "." << d.variable << ": " << d.differing_values << " of "
+        << d.total_values << " values differ; largest " << d.max_units_in_last_place
+        << " units in the last place (" << d.max_abs_difference << " " << d.unit << ") at "
+        << d.worst.particle_set << " particle " << d.worst.particle << ", " << d.worst.variable;
+    lines.push_back(out.str());
+  }
+  return lines;
+}
+
+} // namespace revsph

@@ -1,0 +1,14 @@
+#pragma once
+// SHA-256 of a state: every declared field, in declaration order, as its layout (particle set,
+// name, components, count, scale exponent, raw kind) followed by its raw integers in little-endian
+// byte order. Two states have the same hash exactly when they are bit for bit the same.
+
+#include "core/state_snapshot.hpp"
+
+#include <string>
+
+namespace revsph {
+
+std::string state_hash(const StateSnapshot& state);
+
+} // namespace revsph
