@@ -2,9 +2,11 @@
 
 #include "fixedpoint/exact_sum.hpp"
 
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <algorithm>
 
 namespace revsph {
 
@@ -12,25 +14,22 @@ namespace {
 
 using fixedpoint::int128;
 
-// Maps double bit patterns to integers that are ordered like the doubles, so that the difference
-// of two of them counts the representable doubles between them.
-int128 ordered(std::int64_t bits) {
-  return bits >= 0 ? int128{bits} : int128{std::numeric_limits<std::int64_t>::min()} - bits;
-}
-
 std::string component_suffix(const FieldSnapshot& field, int component) {
   return field.info.components == 1 ? "" : "[" + std::to_string(component) + "]";
 }
 
 } // namespace
 
-std::uint64_t units_in_last_place(RawKind kind, std::int64_t a, std::int64_t b) {
-  const int128 difference =
-      kind == RawKind::fixed_point ? int128{a} - int128{b} : ordered(a) - ordered(b);
+std::uint64_t units_in_last_place(const FieldSnapshot& field, std::int64_t a, std::int64_t b) {
+  constexpr auto largest = std::numeric_limits<std::uint64_t>::max();
+  if (field.kind == RawKind::ieee_double) {
+    const double units = std::ceil(std::fabs(std::bit_cast<double>(a) - std::bit_cast<double>(b)) /
+                                   field.info.scale.unit());
+    return !(units < 1.8e19) ? largest : static_cast<std::uint64_t>(units);
+  }
+  const int128 difference = int128{a} - int128{b};
   const int128 magnitude = difference < 0 ? -difference : difference;
-  return magnitude > int128{std::numeric_limits<std::uint64_t>::max()}
-             ? std::numeric_limits<std::uint64_t>::max()
-             : static_cast<std::uint64_t>(magnitude);
+  return magnitude > int128{largest} ? largest : static_cast<std::uint64_t>(magnitude);
 }
 
 StateComparison compare_states(const StateSnapshot& expected, const StateSnapshot& actual) {
@@ -59,13 +58,16 @@ StateComparison compare_states(const StateSnapshot& expected, const StateSnapsho
         if (expected_bits == actual_bits) {
           continue;
         }
-        const ValueLocation location{e.info.particle_set, e.info.name + component_suffix(e, c), i,
-                                     c, expected_bits, actual_bits};
+        const ValueLocation location{e.info.particle_set, e.info.name + component_suffix(e, c),
+                                     i,          c,
+                                     expected_bits, actual_bits,
+                                     e.real(c, i),  a.real(c, i),
+                                     e.info.unit};
         if (!result.first_difference) {
           result.first_difference = location;
         }
         ++difference.differing_values;
-        const std::uint64_t ulps = units_in_last_place(e.kind, expected_bits, actual_bits);
+        const std::uint64_t ulps = units_in_last_place(e, expected_bits, actual_bits);
         if (ulps > difference.max_units_in_last_place) {
           difference.max_units_in_last_place = ulps;
           difference.worst = location;
@@ -87,6 +89,7 @@ StateComparison compare_states(const StateSnapshot& expected, const StateSnapsho
 
 std::string StateComparison::verdict() const {
   std::ostringstream out;
+  out.precision(17);
   if (!layout_error.empty()) {
     out << "cannot compare: " << layout_error;
     return out.str();
@@ -103,8 +106,9 @@ std::string StateComparison::verdict() const {
     worst = std::max(worst, d.max_units_in_last_place);
   }
   out << "NOT identical: first difference at " << first.particle_set << " particle "
-      << first.particle << ", " << first.variable << " (raw " << first.expected << " -> "
-      << first.actual << "); " << differing << " of " << compared_values
+      << first.particle << ", " << first.variable << " (expected " << first.expected_value
+      << " " << first.unit << ", got " << first.actual_value << " " << first.unit << "); "
+      << differing << " of " << compared_values
       << " values differ, largest difference " << worst << " units in the last place";
   return out.str();
 }

@@ -1,7 +1,10 @@
 #pragma once
 // Bit-for-bit comparison of two states of the same layout, with a report a person can act on:
 // the first differing particle and variable, and per variable how many values differ and by
-// how many units in the last place (raw units in fixed point, ULPs of double in FloPA).
+// how many units in the last place. The last place is the variable's fixed-point unit
+// (2^exponent of its scale) in both arithmetics: the raw difference in fixed point, and
+// |difference| / unit rounded up for double state (FloPA), so the two are on one yardstick.
+// (Counting representable doubles instead would call 0 -> 1e-11 four quintillion ULPs.)
 
 #include "core/state_snapshot.hpp"
 
@@ -19,6 +22,9 @@ struct ValueLocation {
   int component = 0;
   std::int64_t expected = 0; // raw bits
   std::int64_t actual = 0;
+  double expected_value = 0.0; // physical values
+  double actual_value = 0.0;
+  std::string unit;
 };
 
 struct VariableDifference {
@@ -47,7 +53,7 @@ struct StateComparison {
 
 StateComparison compare_states(const StateSnapshot& expected, const StateSnapshot& actual);
 
-// Distance between two raw values in units of the last place.
-std::uint64_t units_in_last_place(RawKind kind, std::int64_t a, std::int64_t b);
+// Distance between two raw values of a field in units of its last place (see above).
+std::uint64_t units_in_last_place(const FieldSnapshot& field, std::int64_t a, std::int64_t b);
 
 } // namespace revsph

@@ -42,7 +42,7 @@ int run_command(const RunOptions& options) {
 
   const SimulationInfo& info = simulation.info();
   std::cout << "revsph run: " << info.case_name << " (" << info.model << ", " << info.dimension
-            << "D, " << to_string(info.arithmetic) << " point), " << describe_particles(info)
+            << "D, " << to_string(info.arithmetic) << "-point arithmetic), " << describe_particles(info)
             << ", dt = " << info.dt << " s, " << steps << " steps, " << thread_count()
             << " threads\n";
 

@@ -1,0 +1,23 @@
+#include "simulation_fixture.hpp"
+
+#include "core/run_settings.hpp"
+#include "verify/state_hash.hpp"
+
+namespace revsph::testing {
+
+std::unique_ptr<Simulation> make_simulation(const std::string& name,
+                                            const std::vector<Override>& overrides,
+                                            Arithmetic arithmetic) {
+  CaseFile case_file = load_case(name);
+  for (const Override& o : overrides) {
+    case_file.set(o.key, o.value);
+  }
+  read_run_settings(case_file);
+  auto simulation = create_simulation(case_file, SimulationOptions{arithmetic});
+  case_file.require_no_unknown_keys();
+  return simulation;
+}
+
+std::string hash_of(Simulation& simulation) { return state_hash(simulation.capture_state()); }
+
+} // namespace revsph::testing

@@ -1,0 +1,26 @@
+#pragma once
+// Helpers shared by the system tests: build a simulation from a built-in or inline case.
+
+#include "core/model_registry.hpp"
+#include "core/simulation.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace revsph::testing {
+
+struct Override {
+  std::string key;
+  std::string value;
+};
+
+// A simulation of the built-in case `name` with command-line style overrides applied, checked
+// for unknown keys like the CLI does.
+std::unique_ptr<Simulation> make_simulation(const std::string& name,
+                                            const std::vector<Override>& overrides = {},
+                                            Arithmetic arithmetic = Arithmetic::fixed);
+
+std::string hash_of(Simulation& simulation);
+
+} // namespace revsph::testing
