@@ -2,9 +2,10 @@
 
 #include <toml++/toml.h>
 
+#include <charconv>
 #include <cmath>
 #include <fstream>
-#include <limits>
+#include <optional>
 #include <sstream>
 
 namespace revsph {
@@ -91,6 +92,12 @@ CaseFile& CaseFile::operator=(CaseFile&&) noexcept = default;
 CaseFile::~CaseFile() = default;
 
 CaseFile CaseFile::load(const std::filesystem::path& path) {
+  // A directory opens as a stream that reads as empty, which would be reported as a case with
+  // no `model`.
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) {
+    throw CaseError(path.string(), "", "is a directory, not a case file");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     throw CaseError(path.string(), "", "cannot open the case file");
@@ -248,23 +255,41 @@ void CaseFile::set(std::string_view key, std::string_view value) {
   while (true) {
     const std::size_t dot = rest.find('.');
     std::string_view part = rest.substr(0, dot);
-    std::size_t index = std::numeric_limits<std::size_t>::max();
+    std::optional<std::size_t> index;
     if (const std::size_t bracket = part.find('['); bracket != std::string_view::npos) {
-      index = static_cast<std::size_t>(std::stoul(std::string(part.substr(bracket + 1))));
+      // from_chars rather than stoul: a malformed index must be a CaseError naming the key, not
+      // a std::invalid_argument that reaches the user as "stoul".
+      const std::string_view digits =
+          part.ends_with(']') ? part.substr(bracket + 1, part.size() - bracket - 2) : "";
+      std::size_t parsed_index = 0;
+      const auto [end, error] =
+          std::from_chars(digits.data(), digits.data() + digits.size(), parsed_index);
+      if (digits.empty() || error != std::errc() || end != digits.data() + digits.size()) {
+        fail(key, "cannot set: expected an array index such as particles[0], got '" +
+                      std::string(part) + "'");
+      }
+      index = parsed_index;
       part = part.substr(0, bracket);
     }
-    walked += (walked.empty() ? "" : ".") + std::string(part);
+    if (part.empty()) {
+      fail(key, "cannot set: the key has an empty part");
+    }
     toml::table* table = current->as_table();
     if (table == nullptr) {
       fail(key, "cannot set: '" + walked + "' is not a table");
     }
+    if (!walked.empty()) {
+      walked += '.';
+    }
+    walked += part;
     const bool last = dot == std::string_view::npos;
-    if (index != std::numeric_limits<std::size_t>::max()) {
+    if (index) {
       toml::array* array = table->get_as<toml::array>(part);
-      if (array == nullptr || index >= array->size()) {
-        fail(key, "cannot set: no element " + std::to_string(index) + " in '" + walked + "'");
+      if (array == nullptr || *index >= array->size()) {
+        fail(key, "cannot set: no element " + std::to_string(*index) + " in '" + walked + "'");
       }
-      current = array->get(index);
+      current = array->get(*index);
+      walked.append("[").append(std::to_string(*index)).append("]");
       if (last) {
         fail(key, "cannot replace a whole array element");
       }
@@ -294,8 +319,11 @@ void CaseFile::require_no_unknown_keys() const {
       first = &u;
     }
   }
-  fail(first->key, "unknown key (line " + std::to_string(first->position.line) +
-                       "); see the case-file reference in README.md");
+  // Values added by --set have no position in the file (line 0).
+  const std::string where = first->position.line == 0
+                                ? std::string("given with --set")
+                                : "line " + std::to_string(first->position.line);
+  fail(first->key, "unknown key (" + where + "); see the case-file reference in README.md");
 }
 
 } // namespace revsph

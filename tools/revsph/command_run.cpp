@@ -32,6 +32,10 @@ int run_command(const RunOptions& options) {
   const std::filesystem::path out =
       options.out_dir.empty() ? std::filesystem::path("out") / loaded.settings.name
                               : std::filesystem::path(options.out_dir);
+  if (std::filesystem::exists(out) && !std::filesystem::is_directory(out)) {
+    throw CaseError(loaded.case_file.source_name(), "--out",
+                    out.string() + " exists and is not a directory");
+  }
   if (std::filesystem::exists(out) && !std::filesystem::is_empty(out) && !options.force) {
     throw CaseError(loaded.case_file.source_name(), "--out",
                     "the output directory " + out.string() +

@@ -1,0 +1,103 @@
+// The central promise: forward N steps, time reversal, N steps, time reversal returns every raw
+// integer of the initial state. And the verifier that checks it can fail.
+
+#include "simulation_fixture.hpp"
+#include "verify/reversibility.hpp"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using revsph::Simulation;
+using revsph::StateSnapshot;
+using revsph::VerifyOptions;
+using revsph::VerifyPhase;
+using revsph::testing::make_simulation;
+
+// Changes one raw integer of one variable by one unit, through the public state interface.
+void nudge(Simulation& simulation, const std::string& set, const std::string& variable,
+           std::size_t particle, int component) {
+  StateSnapshot state = simulation.capture_state();
+  revsph::FieldSnapshot* field = state.find(set, variable);
+  ASSERT_NE(field, nullptr);
+  field->bits[static_cast<std::size_t>(component) * field->count + particle] += 1;
+  simulation.restore_state(state);
+}
+
+TEST(Reversibility, DambreakSmallReturnsBitwiseAfter5000StepsEachWay) {
+  auto simulation = make_simulation("dambreak-small");
+  VerifyOptions options;
+  options.steps = 5000;
+  const auto report = revsph::verify_reversibility(*simulation, options);
+  EXPECT_TRUE(report.identical()) << report.comparison.verdict();
+  EXPECT_EQ(report.initial_hash, report.final_hash);
+  EXPECT_NE(report.initial_hash, report.turning_point_hash) << "the fluid did move";
+}
+
+TEST(Reversibility, EverySubstepIsSelfInverseUnderTimeReversal) {
+  auto simulation = make_simulation("dambreak-small");
+  simulation->advance(300); // a state with motion and wall contact
+  for (const auto& check : revsph::check_substeps(*simulation, simulation->info().dt)) {
+    EXPECT_TRUE(check.comparison.identical) << check.name << ": " << check.comparison.verdict();
+  }
+}
+
+TEST(Reversibility, Dambreak3DReturnsBitwise) {
+  auto simulation = make_simulation("dambreak-3d-small");
+  VerifyOptions options;
+  options.steps = 400;
+  const auto report = revsph::verify_reversibility(*simulation, options);
+  EXPECT_TRUE(report.identical()) << report.comparison.verdict();
+}
+
+TEST(Reversibility, FloatingPointVariantDoesNotReturnAndReportsHowFar) {
+  auto simulation = make_simulation("dambreak-small", {}, revsph::Arithmetic::floating);
+  VerifyOptions options;
+  options.steps = 500;
+  const auto report = revsph::verify_reversibility(*simulation, options);
+  ASSERT_FALSE(report.identical());
+  ASSERT_TRUE(report.comparison.first_difference.has_value());
+  bool position_differs = false;
+  for (const auto& difference : report.comparison.differences) {
+    position_differs = position_differs || difference.variable == "position";
+    EXPECT_GT(difference.max_abs_difference, 0.0);
+    EXPECT_LT(difference.max_abs_difference, 1e-6) << "round-off, not a broken scheme";
+  }
+  EXPECT_TRUE(position_differs);
+}
+
+TEST(Verifier, ReportsAOneUnitChangeMadeDuringTheRun) {
+  auto simulation = make_simulation("dambreak-small");
+  VerifyOptions options;
+  options.steps = 300;
+  options.after_step = [](Simulation& s, VerifyPhase phase, std::int64_t step) {
+    if (phase == VerifyPhase::forward && step == 150) {
+      nudge(s, "fluid", "velocity", 1234, 1);
+    }
+  };
+  const auto report = revsph::verify_reversibility(*simulation, options);
+  EXPECT_FALSE(report.identical());
+  EXPECT_NE(report.comparison.verdict().find("NOT identical"), std::string::npos);
+}
+
+TEST(Verifier, NamesExactlyTheParticleChangedJustBeforeTheComparison) {
+  auto simulation = make_simulation("dambreak-small");
+  VerifyOptions options;
+  options.steps = 200;
+  options.before_compare = [](Simulation& s) { nudge(s, "fluid", "velocity", 4321, 0); };
+  const auto report = revsph::verify_reversibility(*simulation, options);
+  ASSERT_FALSE(report.identical());
+  const auto& first = *report.comparison.first_difference;
+  EXPECT_EQ(first.particle_set, "fluid");
+  EXPECT_EQ(first.particle, 4321u);
+  EXPECT_EQ(first.variable, "velocity[0]");
+  EXPECT_EQ(first.actual - first.expected, 1);
+  ASSERT_EQ(report.comparison.differences.size(), 1u);
+  EXPECT_EQ(report.comparison.differences[0].differing_values, 1u);
+  EXPECT_EQ(report.comparison.differences[0].max_units_in_last_place, 1u);
+  EXPECT_NE(report.comparison.verdict().find("fluid particle 4321, velocity[0]"),
+            std::string::npos)
+      << report.comparison.verdict();
+}
+
+} // namespace

@@ -1,0 +1,473 @@
+// The revsph binary on bad input: exit status 2, exactly one line on stderr naming the file, the
+// key and the reason, nothing on stdout, and nothing written.
+//
+// Every run happens in a fresh temporary working directory that holds only the case file, so a
+// stray file (a default out/ directory, a log) would show up as well as the --out directory.
+
+#include "core/model_registry.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <ostream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string error_prefix = "revsph: error: ";
+
+std::string dambreak_small_text() {
+  const revsph::BuiltinCase* builtin = revsph::find_builtin_case("dambreak-small");
+  if (builtin == nullptr) {
+    throw std::logic_error("the built-in case dambreak-small is missing");
+  }
+  return std::string(builtin->text);
+}
+
+// `from` must occur exactly once, so that an edit of the built-in case cannot silently land on
+// another line (or nowhere) when that case changes.
+std::string replaced_once(std::string text, std::string_view from, std::string_view to) {
+  const std::size_t first = text.find(from);
+  if (first == std::string::npos || text.find(from, first + 1) != std::string::npos) {
+    throw std::logic_error("expected exactly one occurrence of \"" + std::string(from) +
+                           "\" in the case text");
+  }
+  return text.replace(first, from.size(), to);
+}
+
+// Line (1-based) on which the last line of `edit` lies in `text`, for messages that point into
+// the file.
+int line_of_edit(const std::string& text, const std::string& edit) {
+  const std::size_t end = text.find(edit) + edit.size();
+  int line = 1;
+  for (std::size_t i = 0; i < end && i < text.size(); ++i) {
+    line += text[i] == '\n' ? 1 : 0;
+  }
+  return line;
+}
+
+// "@LINE@" in `part` stands for line_of_edit.
+std::string with_line(std::string part, const std::string& text, const std::string& edit) {
+  const std::string marker = "@LINE@";
+  if (const std::size_t at = part.find(marker); at != std::string::npos) {
+    part.replace(at, marker.size(), std::to_string(line_of_edit(text, edit)));
+  }
+  return part;
+}
+
+std::string shell_quoted(const std::string& word) {
+  std::string quoted = "'";
+  for (char c : word) {
+    quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  }
+  return quoted + "'";
+}
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+std::set<std::string> entries_of(const fs::path& directory) {
+  std::set<std::string> names;
+  for (const fs::directory_entry& entry : fs::directory_iterator(directory)) {
+    names.insert(entry.path().filename().string());
+  }
+  return names;
+}
+
+struct CommandResult {
+  int exit_status = -1;
+  std::string out;
+  std::string err;
+};
+
+std::ostream& operator<<(std::ostream& stream, const CommandResult& result) {
+  return stream << "exit status " << result.exit_status << "\n--- stdout:\n"
+                << result.out << "--- stderr:\n"
+                << result.err << "---";
+}
+
+// A scratch area: `work()` is the binary's working directory and holds the case file; the
+// captured output lives beside it, so that work() shows exactly what the binary wrote.
+class Sandbox {
+public:
+  Sandbox() {
+    std::string pattern = "/tmp/revsph-cli-test-XXXXXX";
+    if (mkdtemp(pattern.data()) == nullptr) {
+      throw std::runtime_error("mkdtemp failed");
+    }
+    root_ = pattern;
+    fs::create_directory(work());
+  }
+  Sandbox(const Sandbox&) = delete;
+  Sandbox& operator=(const Sandbox&) = delete;
+  ~Sandbox() {
+    std::error_code ignored;
+    fs::remove_all(root_, ignored);
+  }
+
+  fs::path work() const { return root_ / "work"; }
+  fs::path out() const { return work() / "out"; }
+
+  fs::path write_case(const std::string& text, const std::string& name = "case.toml") const {
+    const fs::path path = work() / name;
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+
+  CommandResult revsph(const std::vector<std::string>& arguments) const {
+    const fs::path out_file = root_ / "stdout.txt";
+    const fs::path err_file = root_ / "stderr.txt";
+    // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on `" " + string`.
+    std::string command = "cd ";
+    command.append(shell_quoted(work().string()))
+        .append(" && ")
+        .append(shell_quoted(REVSPH_BINARY));
+    for (const std::string& argument : arguments) {
+      command.append(" ").append(shell_quoted(argument));
+    }
+    command.append(" </dev/null >").append(shell_quoted(out_file.string()));
+    command.append(" 2>").append(shell_quoted(err_file.string()));
+    const int status = std::system(command.c_str());
+    CommandResult result;
+    result.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = read_file(out_file);
+    result.err = read_file(err_file);
+    return result;
+  }
+
+private:
+  fs::path root_;
+};
+
+// The contract for every rejected input. `parts` must all appear in the one error line.
+void expect_clean_rejection(const Sandbox& sandbox, const CommandResult& result,
+                            const std::set<std::string>& expected_work_entries,
+                            const std::vector<std::string>& parts) {
+  EXPECT_EQ(result.exit_status, 2) << result;
+  EXPECT_EQ(result.out, "") << result;
+  EXPECT_EQ(result.err.rfind(error_prefix, 0), 0u) << result;
+  ASSERT_FALSE(result.err.empty()) << result;
+  EXPECT_EQ(result.err.back(), '\n') << result;
+  EXPECT_EQ(result.err.find('\n'), result.err.size() - 1) << "more than one line: " << result;
+  for (const std::string& part : parts) {
+    EXPECT_NE(result.err.find(part), std::string::npos)
+        << "the message lacks \"" << part << "\": " << result;
+  }
+  EXPECT_FALSE(fs::exists(sandbox.out())) << "the --out directory was created";
+  EXPECT_EQ(entries_of(sandbox.work()), expected_work_entries) << "something was written";
+}
+
+// ---------------------------------------------------------------------------------------------
+// One edit of the built-in case per defect, run with `revsph run`.
+
+struct Defect {
+  std::string name; // test-name suffix
+  std::string from; // text of the built-in case to replace (must occur once)
+  std::string to;
+  std::string key;                       // must appear as "<file>: <key>: "
+  std::vector<std::string> reason_parts; // must appear in the message
+  std::vector<std::string> extra_arguments = {};
+};
+
+std::ostream& operator<<(std::ostream& out, const Defect& defect) {
+  return out << defect.name;
+}
+
+const std::vector<Defect>& defects() {
+  static const std::vector<Defect> all = {
+      {"syntax_error", "\ndr = 0.02", "\ndr = = 0.02", "", {"syntax error at line @LINE@,"}},
+      {"syntax_error_duplicate_key",
+       "\ndr = 0.02",
+       "\ndr = 0.02\ndr = 0.03",
+       "",
+       {"syntax error at line @LINE@,"}},
+      {"unknown_key",
+       "\ndr = 0.02",
+       "\ndr = 0.02\ndrr = 0.02",
+       "discretisation.drr",
+       {"unknown key (line @LINE@)"}},
+      {"unknown_key_in_particles_block",
+       "kind = \"fluid\"",
+       "kind = \"fluid\"\ncolour = \"blue\"",
+       "particles[0].colour",
+       {"unknown key (line @LINE@)"}},
+      {"missing_required_key",
+       "sound_speed = 120.0",
+       "",
+       "physics.sound_speed",
+       {"missing required key"}},
+      {"missing_dt", "courant_number = 0.2", "", "discretisation.dt", {"missing required key"}},
+      {"dt_zero", "courant_number = 0.2", "dt = 0.0", "discretisation.dt", {"must be > 0 (got 0)"}},
+      {"dt_negative",
+       "courant_number = 0.2",
+       "dt = -1e-4",
+       "discretisation.dt",
+       {"must be > 0 (got -0.0001)"}},
+      {"h_zero",
+       "support_radius_over_dr = 3.0",
+       "support_radius_over_dr = 0.0",
+       "discretisation.support_radius_over_dr",
+       {"must be > 0 (got 0)"}},
+      {"h_negative",
+       "support_radius_over_dr = 3.0",
+       "support_radius_over_dr = -3.0",
+       "discretisation.support_radius_over_dr",
+       {"must be > 0 (got -3)"}},
+      {"dr_zero", "\ndr = 0.02", "\ndr = 0.0", "discretisation.dr", {"must be > 0 (got 0)"}},
+      {"dr_negative",
+       "\ndr = 0.02",
+       "\ndr = -0.02",
+       "discretisation.dr",
+       {"must be > 0 (got -0.02)"}},
+      {"fluid_block_outside_domain",
+       "min = [0.0, 0.0]\nmax = [1.0, 2.0]",
+       "min = [-1.0, 0.0]\nmax = [1.0, 2.0]",
+       "particles[0]",
+       {"outside the domain"}},
+      {"container_outside_domain",
+       "max = [4.1, 3.1]",
+       "max = [4.0, 3.1]",
+       "particles[1]",
+       {"outside the domain"}},
+      {"string_for_number",
+       "sound_speed = 120.0",
+       "sound_speed = \"120\"",
+       "physics.sound_speed",
+       {"expected a number, got a string"}},
+      {"string_in_number_array",
+       "max = [4.1, 3.1]",
+       "max = [4.1, \"3.1\"]",
+       "domain.max",
+       {"expected an array of numbers"}},
+      {"dimension_4", "dimension = 2", "dimension = 4", "dimension", {"must be 2 or 3 (got 4)"}},
+      {"unknown_model",
+       "model = \"wcsph\"",
+       "model = \"isph\"",
+       "model",
+       {"unknown model \"isph\""}},
+      {"unknown_particle_kind",
+       "kind = \"fluid\"",
+       "kind = \"sand\"",
+       "particles[0].kind",
+       {"unknown particle kind \"sand\""}},
+      {"misspelt_lattice",
+       "shape = \"box\"\nlattice = \"square\"",
+       "shape = \"box\"\nlattice = \"hexagnal\"",
+       "particles[0].lattice",
+       {"expected \"square\" or \"hexagonal\", got \"hexagnal\""}},
+      {"min_with_three_components",
+       "min = [-0.1, -0.1]",
+       "min = [-0.1, -0.1, -0.1]",
+       "domain.min",
+       {"expected 2 numbers, got 3"}},
+      {"dt_and_courant_number",
+       "courant_number = 0.2",
+       "courant_number = 0.2\ndt = 1e-4",
+       "discretisation.dt",
+       {"not both"}},
+      // Bad --set overrides on a good file.
+      {"set_without_value",
+       "",
+       "",
+       "discretisation.dr",
+       {"--set expects key=value"},
+       {"--set", "discretisation.dr"}},
+      {"set_bad_index",
+       "",
+       "",
+       "particles[x].min",
+       {"expected an array index"},
+       {"--set", "particles[x].min=[0.0, 0.0]"}},
+      {"set_missing_element",
+       "",
+       "",
+       "particles[7].min",
+       {"no element 7"},
+       {"--set", "particles[7].min=[0.0, 0.0]"}},
+      {"set_negative_dr",
+       "",
+       "",
+       "discretisation.dr",
+       {"must be > 0 (got -0.01)"},
+       {"--set", "discretisation.dr=-0.01"}},
+      {"set_word_for_number",
+       "",
+       "",
+       "physics.sound_speed",
+       {"expected a number, got a string"},
+       {"--set", "physics.sound_speed=fast"}},
+      {"set_unknown_key",
+       "",
+       "",
+       "physics.sound_sped",
+       {"unknown key (given with --set)"},
+       {"--set", "physics.sound_sped=100"}},
+  };
+  return all;
+}
+
+class CliDefectTest : public ::testing::TestWithParam<Defect> {};
+
+TEST_P(CliDefectTest, RunExitsWithOneLineAndWritesNothing) {
+  const Defect& defect = GetParam();
+  Sandbox sandbox;
+  const std::string text = defect.from.empty()
+                               ? dambreak_small_text()
+                               : replaced_once(dambreak_small_text(), defect.from, defect.to);
+  const fs::path case_path = sandbox.write_case(text);
+  std::vector<std::string> arguments = {
+      "run", case_path.string(), "--out", sandbox.out().string(), "--steps", "1"};
+  arguments.insert(arguments.end(), defect.extra_arguments.begin(), defect.extra_arguments.end());
+  const CommandResult result = sandbox.revsph(arguments);
+
+  std::vector<std::string> parts;
+  for (const std::string& part : defect.reason_parts) {
+    parts.push_back(with_line(part, text, defect.to));
+  }
+  // The file, then the key, exactly as CaseError formats them.
+  parts.push_back(error_prefix + case_path.string() + ": " +
+                  (defect.key.empty() ? std::string() : defect.key + ": "));
+  expect_clean_rejection(sandbox, result, {"case.toml"}, parts);
+}
+
+INSTANTIATE_TEST_SUITE_P(BadCaseFiles, CliDefectTest, ::testing::ValuesIn(defects()),
+                         [](const ::testing::TestParamInfo<Defect>& param_info) {
+                           return param_info.param.name;
+                         });
+
+// ---------------------------------------------------------------------------------------------
+// The other subcommands reject the same way.
+
+TEST(CliBadInputTest, VerifyRejectsBadCase) {
+  Sandbox sandbox;
+  const fs::path case_path = sandbox.write_case(
+      replaced_once(dambreak_small_text(), "courant_number = 0.2", "dt = -1e-4"));
+  const CommandResult result = sandbox.revsph({"verify", case_path.string(), "--steps", "1"});
+  expect_clean_rejection(sandbox, result, {"case.toml"},
+                         {case_path.string() + ": discretisation.dt: ", "must be > 0"});
+}
+
+TEST(CliBadInputTest, VerifyRejectsSyntaxError) {
+  Sandbox sandbox;
+  const std::string text = replaced_once(dambreak_small_text(), "\ndr = 0.02", "\ndr = = 0.02");
+  const fs::path case_path = sandbox.write_case(text);
+  const CommandResult result = sandbox.revsph({"verify", case_path.string(), "--steps", "1"});
+  expect_clean_rejection(
+      sandbox, result, {"case.toml"},
+      {with_line(case_path.string() + ": syntax error at line @LINE@,", text, "\ndr = = 0.02")});
+}
+
+TEST(CliBadInputTest, HashRejectsBadCase) {
+  Sandbox sandbox;
+  const fs::path case_path = sandbox.write_case(
+      replaced_once(dambreak_small_text(), "sound_speed = 120.0", "sound_speed = \"120\""));
+  const CommandResult result = sandbox.revsph({"hash", case_path.string(), "--steps", "1"});
+  expect_clean_rejection(sandbox, result, {"case.toml"},
+                         {case_path.string() + ": physics.sound_speed: ", "got a string"});
+}
+
+TEST(CliBadInputTest, HashRejectsUnknownKey) {
+  Sandbox sandbox;
+  const std::string edit = "dimension = 2\ndimensions = 2";
+  const std::string text = replaced_once(dambreak_small_text(), "dimension = 2", edit);
+  const fs::path case_path = sandbox.write_case(text);
+  const CommandResult result = sandbox.revsph({"hash", case_path.string(), "--steps", "1"});
+  expect_clean_rejection(
+      sandbox, result, {"case.toml"},
+      {case_path.string() + ": dimensions: ", with_line("unknown key (line @LINE@)", text, edit)});
+}
+
+TEST(CliBadInputTest, MissingCaseFileIsRejected) {
+  Sandbox sandbox;
+  const fs::path case_path = sandbox.work() / "absent.toml";
+  const CommandResult result =
+      sandbox.revsph({"run", case_path.string(), "--out", sandbox.out().string(), "--steps", "1"});
+  expect_clean_rejection(sandbox, result, {},
+                         {case_path.string() + ": ", "no such file", "dambreak-small"});
+}
+
+TEST(CliBadInputTest, DirectoryAsCaseFileIsRejected) {
+  Sandbox sandbox;
+  const fs::path case_path = sandbox.work() / "cases";
+  fs::create_directory(case_path);
+  const CommandResult result =
+      sandbox.revsph({"run", case_path.string(), "--out", sandbox.out().string(), "--steps", "1"});
+  expect_clean_rejection(sandbox, result, {"cases"}, {case_path.string() + ": ", "is a directory"});
+}
+
+TEST(CliBadInputTest, EmptyCaseFileIsRejected) {
+  Sandbox sandbox;
+  const fs::path case_path = sandbox.write_case("");
+  const CommandResult result =
+      sandbox.revsph({"run", case_path.string(), "--out", sandbox.out().string(), "--steps", "1"});
+  expect_clean_rejection(sandbox, result, {"case.toml"},
+                         {case_path.string() + ": model: ", "missing required key"});
+}
+
+// ---------------------------------------------------------------------------------------------
+// A valid run, and the guard on an existing output directory.
+
+TEST(CliRunTest, ValidCaseRunsAndWritesOutput) {
+  Sandbox sandbox;
+  const fs::path case_path = sandbox.write_case(dambreak_small_text());
+  const CommandResult result =
+      sandbox.revsph({"run", case_path.string(), "--out", sandbox.out().string(), "--steps", "1"});
+  EXPECT_EQ(result.exit_status, 0) << result;
+  EXPECT_EQ(result.err, "") << result;
+  EXPECT_NE(result.out.find("state hash: "), std::string::npos) << result;
+  EXPECT_TRUE(fs::is_regular_file(sandbox.out() / "energy.csv")) << result;
+  EXPECT_TRUE(fs::is_regular_file(sandbox.out() / "summary.json")) << result;
+  EXPECT_EQ(entries_of(sandbox.work()), (std::set<std::string>{"case.toml", "out"}));
+}
+
+TEST(CliRunTest, NonEmptyOutputDirectoryNeedsForce) {
+  Sandbox sandbox;
+  const fs::path case_path = sandbox.write_case(dambreak_small_text());
+  fs::create_directory(sandbox.out());
+  const fs::path earlier = sandbox.out() / "earlier-result.txt";
+  std::ofstream(earlier) << "keep me\n";
+
+  const CommandResult refused =
+      sandbox.revsph({"run", case_path.string(), "--out", sandbox.out().string(), "--steps", "1"});
+  EXPECT_EQ(refused.exit_status, 2) << refused;
+  EXPECT_EQ(refused.out, "") << refused;
+  EXPECT_EQ(refused.err.rfind(error_prefix + case_path.string() + ": --out: ", 0), 0u) << refused;
+  EXPECT_EQ(refused.err.find('\n'), refused.err.size() - 1) << refused;
+  EXPECT_NE(refused.err.find("--force"), std::string::npos) << refused;
+  EXPECT_EQ(entries_of(sandbox.out()), (std::set<std::string>{"earlier-result.txt"}));
+  EXPECT_EQ(read_file(earlier), "keep me\n");
+
+  const CommandResult forced = sandbox.revsph(
+      {"run", case_path.string(), "--out", sandbox.out().string(), "--steps", "1", "--force"});
+  EXPECT_EQ(forced.exit_status, 0) << forced;
+  EXPECT_EQ(forced.err, "") << forced;
+  EXPECT_TRUE(fs::is_regular_file(sandbox.out() / "energy.csv")) << forced;
+  EXPECT_TRUE(fs::is_regular_file(sandbox.out() / "summary.json")) << forced;
+}
+
+TEST(CliRunTest, EmptyOutputDirectoryIsUsedWithoutForce) {
+  Sandbox sandbox;
+  const fs::path case_path = sandbox.write_case(dambreak_small_text());
+  fs::create_directory(sandbox.out());
+  const CommandResult result =
+      sandbox.revsph({"run", case_path.string(), "--out", sandbox.out().string(), "--steps", "1"});
+  EXPECT_EQ(result.exit_status, 0) << result;
+  EXPECT_TRUE(fs::is_regular_file(sandbox.out() / "summary.json")) << result;
+}
+
+} // namespace
