@@ -34,7 +34,8 @@ struct FixedArithmetic {
   static bool try_increment(Raw& raw, double increment, const fixedpoint::Scale& scale) {
     std::int64_t delta = 0;
     std::int64_t sum = 0;
-    if (!fixedpoint::try_to_fixed(increment, scale, delta) || !fixedpoint::try_add(raw, delta, sum)) {
+    if (!fixedpoint::try_to_fixed(increment, scale, delta) ||
+        !fixedpoint::try_add(raw, delta, sum)) {
       return false;
     }
     raw = sum;

@@ -139,7 +139,9 @@ const toml::node& CaseFile::require(std::string_view key) const {
   return *node;
 }
 
-bool CaseFile::has(std::string_view key) const { return root_->at_path(key).node() != nullptr; }
+bool CaseFile::has(std::string_view key) const {
+  return root_->at_path(key).node() != nullptr;
+}
 
 double CaseFile::number(std::string_view key) const {
   const toml::node& node = require(key);
@@ -204,12 +206,12 @@ std::vector<double> CaseFile::numbers(std::string_view key, std::size_t size) co
   const toml::node& node = require(key);
   const toml::array* array = node.as_array();
   if (array == nullptr) {
-    fail(key, "expected an array of " + std::to_string(size) + " numbers, got " +
-                  describe_type(node));
+    fail(key,
+         "expected an array of " + std::to_string(size) + " numbers, got " + describe_type(node));
   }
   if (array->size() != size) {
-    fail(key, "expected " + std::to_string(size) + " numbers, got " +
-                  std::to_string(array->size()));
+    fail(key,
+         "expected " + std::to_string(size) + " numbers, got " + std::to_string(array->size()));
   }
   std::vector<double> values;
   for (const toml::node& element : *array) {
@@ -238,7 +240,9 @@ std::size_t CaseFile::table_count(std::string_view key) const {
   return array->size();
 }
 
-void CaseFile::accept_table(std::string_view key) const { read_keys_.emplace(key); }
+void CaseFile::accept_table(std::string_view key) const {
+  read_keys_.emplace(key);
+}
 
 void CaseFile::set(std::string_view key, std::string_view value) {
   overrides_.push_back(std::string(key) + "=" + std::string(value));

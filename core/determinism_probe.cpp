@@ -2,6 +2,8 @@
 
 namespace revsph {
 
-double multiply_add_unfused(double a, double b, double c) { return a * b + c; }
+double multiply_add_unfused(double a, double b, double c) {
+  return a * b + c;
+}
 
 } // namespace revsph

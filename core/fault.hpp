@@ -5,10 +5,10 @@
 // lowest particle index so that the report is the same for any thread count. The caller then
 // throws a SimulationFault naming the particle, the variable and the step.
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <mutex>
-#include <atomic>
 #include <optional>
 #include <stdexcept>
 #include <string>

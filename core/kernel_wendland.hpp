@@ -16,8 +16,8 @@ public:
   explicit WendlandQuintic(double support_radius)
       : support_(support_radius), inverse_support_(1.0 / support_radius),
         normalisation_(D == 2 ? 7.0 / (std::numbers::pi * support_radius * support_radius)
-                              : 21.0 / (2.0 * std::numbers::pi * support_radius *
-                                        support_radius * support_radius)) {}
+                              : 21.0 / (2.0 * std::numbers::pi * support_radius * support_radius *
+                                        support_radius)) {}
 
   double support_radius() const { return support_; }
 

@@ -136,16 +136,16 @@ std::vector<ParticleBlock<D>> read_particle_blocks(const CaseFile& case_file,
       allowed += (allowed.empty() ? "\"" : ", \"") + std::string(k) + "\"";
     }
     if (!known_kind) {
-      case_file.fail(field("kind"), "unknown particle kind \"" + block.kind + "\" (this model has " +
-                                        allowed + ")");
+      case_file.fail(field("kind"), "unknown particle kind \"" + block.kind +
+                                        "\" (this model has " + allowed + ")");
     }
     const std::string lattice_name = case_file.string_or(field("lattice"), "square");
     Lattice lattice = Lattice::square;
     if (lattice_name == "hexagonal") {
       lattice = Lattice::hexagonal;
     } else if (lattice_name != "square") {
-      case_file.fail(field("lattice"), "expected \"square\" or \"hexagonal\", got \"" +
-                                           lattice_name + "\"");
+      case_file.fail(field("lattice"),
+                     "expected \"square\" or \"hexagonal\", got \"" + lattice_name + "\"");
     }
     block.spacing = default_spacing;
     if (case_file.has(field("spacing"))) {
@@ -166,8 +166,8 @@ std::vector<ParticleBlock<D>> read_particle_blocks(const CaseFile& case_file,
     } else if (shape == "container") {
       const std::int64_t layers = case_file.integer_or(field("layers"), 1);
       if (layers < 1 || layers > 1000) {
-        case_file.fail(field("layers"), "must be between 1 and 1000 (got " +
-                                            std::to_string(layers) + ")");
+        case_file.fail(field("layers"),
+                       "must be between 1 and 1000 (got " + std::to_string(layers) + ")");
       }
       const bool open_top = case_file.boolean_or(field("open_top"), false);
       const Vec<D> period = lattice_periods<D>(lattice, block.spacing);
@@ -214,11 +214,9 @@ template double lattice_cell_volume<2>(Lattice, double);
 template double lattice_cell_volume<3>(Lattice, double);
 template Box<2> read_domain<2>(const CaseFile&);
 template Box<3> read_domain<3>(const CaseFile&);
-template std::vector<ParticleBlock<2>> read_particle_blocks<2>(const CaseFile&, double,
-                                                               const Box<2>&,
-                                                               std::span<const std::string_view>);
-template std::vector<ParticleBlock<3>> read_particle_blocks<3>(const CaseFile&, double,
-                                                               const Box<3>&,
-                                                               std::span<const std::string_view>);
+template std::vector<ParticleBlock<2>>
+read_particle_blocks<2>(const CaseFile&, double, const Box<2>&, std::span<const std::string_view>);
+template std::vector<ParticleBlock<3>>
+read_particle_blocks<3>(const CaseFile&, double, const Box<3>&, std::span<const std::string_view>);
 
 } // namespace revsph

@@ -6,9 +6,9 @@
 //   shape   = "box"              "box": the region [min, max] filled;
 //                                "container": `layers` lattice layers around the box [min, max]
 //                                (its walls), with `open_top = true` leaving the top open
-//   lattice = "square"           "square" or "hexagonal" (2D: triangular; 3D: hexagonal close packed)
-//   min, max                     corners of the region (m)
-//   spacing                      lattice spacing (m), default the case's dr
+//   lattice = "square"           "square" or "hexagonal" (2D: triangular; 3D: hexagonal close
+//   packed) min, max                     corners of the region (m) spacing lattice spacing (m),
+//   default the case's dr
 //
 // Particles sit at lattice points at least half a lattice period inside the region, so that
 // blocks placed side by side, and a container around a block, continue one lattice.
@@ -44,8 +44,8 @@ double lattice_cell_volume(Lattice lattice, double spacing);
 
 // Reads every [[particles]] block. Each generated particle must lie inside `domain`.
 template <int D>
-std::vector<ParticleBlock<D>> read_particle_blocks(const CaseFile& case_file, double default_spacing,
-                                                   const Box<D>& domain,
+std::vector<ParticleBlock<D>> read_particle_blocks(const CaseFile& case_file,
+                                                   double default_spacing, const Box<D>& domain,
                                                    std::span<const std::string_view> kinds);
 
 // Reads [domain] min/max and checks min < max on every axis.

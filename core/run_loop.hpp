@@ -12,7 +12,7 @@
 namespace revsph {
 
 struct RunHooks {
-  EnergyLog* energy_log = nullptr;      // records every `energy_every` steps (and at both ends)
+  EnergyLog* energy_log = nullptr; // records every `energy_every` steps (and at both ends)
   std::int64_t energy_every = 100;
   ProgressReporter* progress = nullptr;
   // Called after every step with the number of steps taken so far in this call.

@@ -63,6 +63,8 @@ FixedScalar operator-(const FixedScalar& x) {
   return {negated, x.scale};
 }
 
-FixedScalar operator-(const FixedScalar& x, const FixedScalar& d) { return x + (-d); }
+FixedScalar operator-(const FixedScalar& x, const FixedScalar& d) {
+  return x + (-d);
+}
 
 } // namespace revsph::fixedpoint

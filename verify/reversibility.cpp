@@ -19,7 +19,9 @@ VerifyReport verify_reversibility(Simulation& simulation, const VerifyOptions& o
     hooks.energy_every = options.energy_every;
     hooks.progress = progress;
     if (options.after_step) {
-      hooks.after_step = [&](Simulation& s, std::int64_t step) { options.after_step(s, phase, step); };
+      hooks.after_step = [&](Simulation& s, std::int64_t step) {
+        options.after_step(s, phase, step);
+      };
     }
     run_steps(simulation, options.steps, hooks);
   };

@@ -2,11 +2,11 @@
 
 #include "fixedpoint/exact_sum.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
 #include <sstream>
-#include <algorithm>
 
 namespace revsph {
 
@@ -15,7 +15,12 @@ namespace {
 using fixedpoint::int128;
 
 std::string component_suffix(const FieldSnapshot& field, int component) {
-  return field.info.components == 1 ? "" : "[" + std::to_string(component) + "]";
+  // Built with append: GCC 12 warns falsely (-Wrestrict) on "[" + std::string + "]".
+  std::string suffix;
+  if (field.info.components > 1) {
+    suffix.append("[").append(std::to_string(component)).append("]");
+  }
+  return suffix;
 }
 
 } // namespace
@@ -50,7 +55,7 @@ StateComparison compare_states(const StateSnapshot& expected, const StateSnapsho
       return result;
     }
     VariableDifference difference{e.info.particle_set, e.info.name, 0, e.bits.size(), 0, 0.0,
-                                  e.info.unit, {}};
+                                  e.info.unit,         {}};
     for (std::size_t i = 0; i < e.count; ++i) {
       for (int c = 0; c < e.info.components; ++c) {
         const std::int64_t expected_bits = e.at(c, i);
@@ -58,10 +63,14 @@ StateComparison compare_states(const StateSnapshot& expected, const StateSnapsho
         if (expected_bits == actual_bits) {
           continue;
         }
-        const ValueLocation location{e.info.particle_set, e.info.name + component_suffix(e, c),
-                                     i,          c,
-                                     expected_bits, actual_bits,
-                                     e.real(c, i),  a.real(c, i),
+        const ValueLocation location{e.info.particle_set,
+                                     e.info.name + component_suffix(e, c),
+                                     i,
+                                     c,
+                                     expected_bits,
+                                     actual_bits,
+                                     e.real(c, i),
+                                     a.real(c, i),
                                      e.info.unit};
         if (!result.first_difference) {
           result.first_difference = location;
@@ -106,10 +115,10 @@ std::string StateComparison::verdict() const {
     worst = std::max(worst, d.max_units_in_last_place);
   }
   out << "NOT identical: first difference at " << first.particle_set << " particle "
-      << first.particle << ", " << first.variable << " (expected " << first.expected_value
-      << " " << first.unit << ", got " << first.actual_value << " " << first.unit << "); "
-      << differing << " of " << compared_values
-      << " values differ, largest difference " << worst << " units in the last place";
+      << first.particle << ", " << first.variable << " (expected " << first.expected_value << " "
+      << first.unit << ", got " << first.actual_value << " " << first.unit << "); " << differing
+      << " of " << compared_values << " values differ, largest difference " << worst
+      << " units in the last place";
   return out.str();
 }
 

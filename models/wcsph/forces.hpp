@@ -13,8 +13,8 @@
 
 #include <array>
 #include <cmath>
-#include <utility>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace revsph::wcsph {
@@ -76,8 +76,10 @@ void compute_acceleration(const WendlandQuintic<D>& kernel, const CoordinateView
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n; ++a) {
     std::array<typename Arith::Sum, D> sum = [&]<std::size_t... K>(std::index_sequence<K...>) {
-      return std::array<typename Arith::Sum, D>{((void)K, typename Arith::Sum(acceleration_scale))...};
-    }(std::make_index_sequence<D>{});
+      return std::array<typename Arith::Sum, D>{
+          ((void)K, typename Arith::Sum(acceleration_scale))...};
+    }
+    (std::make_index_sequence<D>{});
     const double pressure_a = pressure_over_density_squared[a];
     for (const std::uint32_t b : neighbours.of(a)) {
       std::array<double, D> d{};

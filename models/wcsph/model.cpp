@@ -11,7 +11,9 @@ namespace revsph::wcsph {
 namespace {
 
 // At most a few cells per particle, so a large empty domain cannot exhaust memory.
-std::size_t cell_budget(std::size_t particles) { return 4 * particles + 4096; }
+std::size_t cell_budget(std::size_t particles) {
+  return 4 * particles + 4096;
+}
 
 template <class Arith, int D>
 void real_coordinates(const StateField<typename Arith::Raw>& field, CoordinateArrays<D>& out) {
@@ -94,9 +96,9 @@ void Model<D, Arith>::update_derived() {
   try {
     fluid_cells_.build(x);
   } catch (const PointOutsideDomain& outside) {
-    throw SimulationFault({"fluid", outside.index(), "position",
-                           "left the domain: " + std::string(outside.what())},
-                          -1);
+    throw SimulationFault(
+        {"fluid", outside.index(), "position", "left the domain: " + std::string(outside.what())},
+        -1);
   }
   find_neighbours<D>(fluid_cells_, x, x, parameters_.support_radius, SelfPairs::excluded,
                      fluid_neighbours_);

@@ -70,9 +70,8 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
       scale_or(case_file, "fixed_point.position_exponent", p.domain.max_abs_coordinate(), 52);
   p.velocity_scale = scale_or(case_file, "fixed_point.velocity_exponent", p.sound_speed, 50);
   p.density_scale = scale_or(case_file, "fixed_point.density_exponent", p.rest_density, 48);
-  p.acceleration_scale =
-      scale_or(case_file, "fixed_point.acceleration_exponent",
-               p.sound_speed * p.sound_speed / p.support_radius, 48);
+  p.acceleration_scale = scale_or(case_file, "fixed_point.acceleration_exponent",
+                                  p.sound_speed * p.sound_speed / p.support_radius, 48);
   return p;
 }
 

@@ -15,9 +15,9 @@ struct Parameters {
   double gravity = 0.0;                  // g (m/s^2), along -axis D-1
   double gravity_reference_height = 0.0; // height of zero gravitational potential (m)
   // [discretisation]
-  double dr = 0.0;             // particle spacing (m)
-  double support_radius = 0.0; // kernel support radius h (m)
-  double dt = 0.0;             // time step (s)
+  double dr = 0.0;               // particle spacing (m)
+  double support_radius = 0.0;   // kernel support radius h (m)
+  double dt = 0.0;               // time step (s)
   double cell_size_factor = 1.0; // neighbour-search cell size / search radius, >= 1
   // [wall], eq. (7)
   double wall_radius = 0.0;          // r_wall (m)

@@ -30,8 +30,8 @@ template <int D, class Arith>
 std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const SimulationOptions& options) {
   using Raw = typename Arith::Raw;
   const Parameters<D> parameters = read_parameters<D>(case_file);
-  const auto blocks = read_particle_blocks<D>(case_file, parameters.dr, parameters.domain,
-                                              particle_kinds);
+  const auto blocks =
+      read_particle_blocks<D>(case_file, parameters.dr, parameters.domain, particle_kinds);
   std::size_t fluid_count = 0;
   std::size_t wall_count = 0;
   double largest_mass = 0.0;

@@ -44,13 +44,15 @@ TEST(Determinism, Dambreak3DHashIsTheSameForThreadCountsAndCellSizes) {
 TEST(GoldenHash, DambreakSmallAfter500Steps) {
   auto simulation = make_simulation("dambreak-small");
   simulation->advance(500);
-  EXPECT_EQ(hash_of(*simulation), "719d9071520b65e6c354f118f251eafd2ebffd1f53964e47947a2dfba0eabcef");
+  EXPECT_EQ(hash_of(*simulation),
+            "719d9071520b65e6c354f118f251eafd2ebffd1f53964e47947a2dfba0eabcef");
 }
 
 TEST(GoldenHash, Dambreak3DAfter100Steps) {
   auto simulation = make_simulation("dambreak-3d-small");
   simulation->advance(100);
-  EXPECT_EQ(hash_of(*simulation), "704077a888badea88dff20a1dea9275d5a4f29ba003d4ad13231ddcee61952e0");
+  EXPECT_EQ(hash_of(*simulation),
+            "704077a888badea88dff20a1dea9275d5a4f29ba003d4ad13231ddcee61952e0");
 }
 
 } // namespace

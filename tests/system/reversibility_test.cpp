@@ -95,8 +95,7 @@ TEST(Verifier, NamesExactlyTheParticleChangedJustBeforeTheComparison) {
   ASSERT_EQ(report.comparison.differences.size(), 1u);
   EXPECT_EQ(report.comparison.differences[0].differing_values, 1u);
   EXPECT_EQ(report.comparison.differences[0].max_units_in_last_place, 1u);
-  EXPECT_NE(report.comparison.verdict().find("fluid particle 4321, velocity[0]"),
-            std::string::npos)
+  EXPECT_NE(report.comparison.verdict().find("fluid particle 4321, velocity[0]"), std::string::npos)
       << report.comparison.verdict();
 }
 

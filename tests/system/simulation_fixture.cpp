@@ -18,6 +18,8 @@ std::unique_ptr<Simulation> make_simulation(const std::string& name,
   return simulation;
 }
 
-std::string hash_of(Simulation& simulation) { return state_hash(simulation.capture_state()); }
+std::string hash_of(Simulation& simulation) {
+  return state_hash(simulation.capture_state());
+}
 
 } // namespace revsph::testing

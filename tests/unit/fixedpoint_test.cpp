@@ -211,6 +211,8 @@ TEST(Scale, CoversTheRequestedMagnitudeWithTheRequestedResolution) {
   EXPECT_THROW(Scale::covering(0.0, 10), std::invalid_argument);
 }
 
-TEST(RoundingMode, IsRoundToNearest) { EXPECT_NO_THROW(revsph::fixedpoint::require_round_to_nearest()); }
+TEST(RoundingMode, IsRoundToNearest) {
+  EXPECT_NO_THROW(revsph::fixedpoint::require_round_to_nearest());
+}
 
 } // namespace

@@ -18,9 +18,8 @@ template <class F>
 double integrate(F&& f, double h, int panels) {
   static constexpr double nodes[] = {-0.9061798459386640, -0.5384693101056831, 0.0,
                                      0.5384693101056831, 0.9061798459386640};
-  static constexpr double weights[] = {0.2369268850561891, 0.4786286704993665,
-                                       0.5688888888888889, 0.4786286704993665,
-                                       0.2369268850561891};
+  static constexpr double weights[] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
+                                       0.4786286704993665, 0.2369268850561891};
   double total = 0.0;
   const double width = h / panels;
   for (int p = 0; p < panels; ++p) {

@@ -19,7 +19,8 @@ TEST(Lattice, SquareBlockHoldsOneParticlePerCellAtCellCentres) {
   EXPECT_NEAR(points.back()[0], 0.99, 1e-12);
   EXPECT_NEAR(points.back()[1], 1.99, 1e-12);
   EXPECT_DOUBLE_EQ(revsph::lattice_cell_volume<2>(Lattice::square, 0.02), 0.0004);
-  const auto cube = revsph::lattice_points<3>(Lattice::square, Box<3>{{0, 0, 0}, {1, 0.5, 0.25}}, 0.05);
+  const auto cube =
+      revsph::lattice_points<3>(Lattice::square, Box<3>{{0, 0, 0}, {1, 0.5, 0.25}}, 0.05);
   EXPECT_EQ(cube.size(), 20u * 10u * 5u);
 }
 
@@ -30,14 +31,17 @@ TEST(Lattice, HexagonalBlockHasNearestNeighboursAtTheSpacing) {
     ASSERT_GT(points.size(), 300u);
     double nearest = 1e9;
     for (std::size_t i = 1; i < points.size(); ++i) {
-      nearest = std::min(nearest, std::hypot(points[i][0] - points[0][0], points[i][1] - points[0][1]));
+      nearest =
+          std::min(nearest, std::hypot(points[i][0] - points[0][0], points[i][1] - points[0][1]));
     }
     EXPECT_NEAR(nearest, spacing, 1e-12);
     // Density of the lattice: one particle per cell volume.
-    EXPECT_NEAR(static_cast<double>(points.size()) * revsph::lattice_cell_volume<2>(Lattice::hexagonal, spacing),
+    EXPECT_NEAR(static_cast<double>(points.size()) *
+                    revsph::lattice_cell_volume<2>(Lattice::hexagonal, spacing),
                 4.0, 0.15);
   }
-  const auto hcp = revsph::lattice_points<3>(Lattice::hexagonal, Box<3>{{0, 0, 0}, {1, 1, 1}}, spacing);
+  const auto hcp =
+      revsph::lattice_points<3>(Lattice::hexagonal, Box<3>{{0, 0, 0}, {1, 1, 1}}, spacing);
   double nearest = 1e9;
   const auto& centre = hcp[hcp.size() / 2];
   for (const auto& p : hcp) {
@@ -47,7 +51,8 @@ TEST(Lattice, HexagonalBlockHasNearestNeighboursAtTheSpacing) {
     }
   }
   EXPECT_NEAR(nearest, spacing, 1e-12);
-  EXPECT_NEAR(revsph::lattice_cell_volume<3>(Lattice::hexagonal, spacing), std::pow(spacing, 3) / std::sqrt(2.0), 1e-15);
+  EXPECT_NEAR(revsph::lattice_cell_volume<3>(Lattice::hexagonal, spacing),
+              std::pow(spacing, 3) / std::sqrt(2.0), 1e-15);
 }
 
 } // namespace

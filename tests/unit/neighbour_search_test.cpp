@@ -70,8 +70,8 @@ void check_against_brute_force(std::size_t n, double radius, std::uint64_t seed)
       revsph::view_of<D>(points), revsph::view_of<D>(points), radius, SelfPairs::excluded);
   ASSERT_GT(reference.pair_count(), n) << "the test needs points with several neighbours";
   for (const double factor : {1.0, 1.37, 2.5}) {
-    expect_same(reference, cell_list_neighbours<D>(points, points, domain, radius,
-                                                   factor * radius, SelfPairs::excluded));
+    expect_same(reference, cell_list_neighbours<D>(points, points, domain, radius, factor * radius,
+                                                   SelfPairs::excluded));
   }
   // Queries against another point set, self pairs included (the fluid-wall search).
   const auto others = random_points<D>(n / 3, domain, seed + 1);

@@ -17,10 +17,14 @@ using revsph::StateField;
 
 template <class Raw>
 struct ToyState {
-  StateField<Raw> position{{"fluid", "position", "m", Parity::even, 2, revsph::fixedpoint::Scale(-40), true}};
-  StateField<Raw> velocity{{"fluid", "velocity", "m/s", Parity::odd, 2, revsph::fixedpoint::Scale(-30), true}};
-  StateField<Raw> entropy{{"fluid", "entropy", "J/K", Parity::even, 1, revsph::fixedpoint::Scale(-20), true}};
-  StateField<Raw> flux{{"other", "heat_flux", "W/m^2", Parity::odd, 1, revsph::fixedpoint::Scale(-20), true}};
+  StateField<Raw> position{
+      {"fluid", "position", "m", Parity::even, 2, revsph::fixedpoint::Scale(-40), true}};
+  StateField<Raw> velocity{
+      {"fluid", "velocity", "m/s", Parity::odd, 2, revsph::fixedpoint::Scale(-30), true}};
+  StateField<Raw> entropy{
+      {"fluid", "entropy", "J/K", Parity::even, 1, revsph::fixedpoint::Scale(-20), true}};
+  StateField<Raw> flux{
+      {"other", "heat_flux", "W/m^2", Parity::odd, 1, revsph::fixedpoint::Scale(-20), true}};
 
   ToyState() {
     for_each_field([](auto& field) { field.resize(3); });
@@ -71,7 +75,8 @@ TEST(TimeReversal, NegatesExactlyTheOddVariablesOfEverySet) {
   for (std::size_t f = 0; f < before.fields.size(); ++f) {
     const bool odd = before.fields[f].info.parity == Parity::odd;
     for (std::size_t i = 0; i < before.fields[f].bits.size(); ++i) {
-      EXPECT_EQ(after.fields[f].bits[i], odd ? -before.fields[f].bits[i] : before.fields[f].bits[i]);
+      EXPECT_EQ(after.fields[f].bits[i],
+                odd ? -before.fields[f].bits[i] : before.fields[f].bits[i]);
     }
   }
   revsph::apply_time_reversal<revsph::FixedArithmetic>(state);
@@ -111,7 +116,8 @@ TEST(StateCompare, ReportsFirstDifferenceAndUnitsInTheLastPlace) {
   ToyState<std::int64_t> b;
   b.entropy.at(0, 1) += 3;
   b.flux.at(0, 2) -= 5;
-  const auto comparison = revsph::compare_states(revsph::capture_state(a), revsph::capture_state(b));
+  const auto comparison =
+      revsph::compare_states(revsph::capture_state(a), revsph::capture_state(b));
   EXPECT_FALSE(comparison.identical);
   ASSERT_TRUE(comparison.first_difference);
   EXPECT_EQ(comparison.first_difference->variable, "entropy");
@@ -128,7 +134,8 @@ TEST(StateCompare, MeasuresDoubleStateInFixedPointUnits) {
   ToyState<double> a;
   ToyState<double> b;
   b.velocity.at(1, 0) += 2.5 * std::ldexp(1.0, -30);
-  const auto comparison = revsph::compare_states(revsph::capture_state(a), revsph::capture_state(b));
+  const auto comparison =
+      revsph::compare_states(revsph::capture_state(a), revsph::capture_state(b));
   ASSERT_EQ(comparison.differences.size(), 1u);
   EXPECT_EQ(comparison.differences[0].max_units_in_last_place, 3u);
   // +0 and -0 differ in their bits (FloPA can return -0 where +0 was): reported, 0 units apart.

@@ -12,8 +12,12 @@ struct Recorder {
   std::vector<std::pair<char, double>> calls;
 };
 
-void a(Recorder& r, double dt) { r.calls.push_back({'a', dt}); }
-void b(Recorder& r, double dt) { r.calls.push_back({'b', dt}); }
+void a(Recorder& r, double dt) {
+  r.calls.push_back({'a', dt});
+}
+void b(Recorder& r, double dt) {
+  r.calls.push_back({'b', dt});
+}
 
 using Step = revsph::Substep<Recorder>;
 
@@ -29,8 +33,8 @@ TEST(StepComposition, AcceptsVerletAndAppliesFractionsOfTheStep) {
 }
 
 TEST(StepComposition, AcceptsLongerPalindromes) {
-  const Step strang[] = {{"a", 0.25, &a}, {"b", 0.5, &b}, {"a", 0.5, &a}, {"b", 0.5, &b},
-                         {"a", 0.25, &a}};
+  const Step strang[] = {
+      {"a", 0.25, &a}, {"b", 0.5, &b}, {"a", 0.5, &a}, {"b", 0.5, &b}, {"a", 0.25, &a}};
   EXPECT_NO_THROW(revsph::require_palindrome<Recorder>(strang));
 }
 

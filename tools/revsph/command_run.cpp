@@ -29,9 +29,9 @@ int run_command(const RunOptions& options) {
   LoadedCase loaded = load_simulation(options.case_options);
   Simulation& simulation = *loaded.simulation;
   const std::int64_t steps = resolve_steps(loaded, options.steps, options.t_end, false);
-  const std::filesystem::path out =
-      options.out_dir.empty() ? std::filesystem::path("out") / loaded.settings.name
-                              : std::filesystem::path(options.out_dir);
+  const std::filesystem::path out = options.out_dir.empty()
+                                        ? std::filesystem::path("out") / loaded.settings.name
+                                        : std::filesystem::path(options.out_dir);
   if (std::filesystem::exists(out) && !std::filesystem::is_directory(out)) {
     throw CaseError(loaded.case_file.source_name(), "--out",
                     out.string() + " exists and is not a directory");
@@ -46,9 +46,9 @@ int run_command(const RunOptions& options) {
 
   const SimulationInfo& info = simulation.info();
   std::cout << "revsph run: " << info.case_name << " (" << info.model << ", " << info.dimension
-            << "D, " << to_string(info.arithmetic) << "-point arithmetic), " << describe_particles(info)
-            << ", dt = " << info.dt << " s, " << steps << " steps, " << thread_count()
-            << " threads\n";
+            << "D, " << to_string(info.arithmetic) << "-point arithmetic), "
+            << describe_particles(info) << ", dt = " << info.dt << " s, " << steps << " steps, "
+            << thread_count() << " threads\n";
 
   EnergyLog energy((out / "energy.csv").string());
   ProgressReporter progress(stdout, "run", simulation.steps_taken() + steps, info.dt,

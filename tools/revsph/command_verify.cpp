@@ -15,8 +15,8 @@ int verify_command(const VerifyCommandOptions& options) {
   Simulation& simulation = *loaded.simulation;
   const std::int64_t steps = resolve_steps(loaded, options.steps, options.t_end, true);
   const SimulationInfo& info = simulation.info();
-  std::cout << "revsph verify: " << info.case_name << " (" << info.model << ", "
-            << info.dimension << "D, " << to_string(info.arithmetic) << "-point arithmetic), " << steps
+  std::cout << "revsph verify: " << info.case_name << " (" << info.model << ", " << info.dimension
+            << "D, " << to_string(info.arithmetic) << "-point arithmetic), " << steps
             << " steps forward, time reversal, " << steps << " steps, time reversal; "
             << thread_count() << " threads\n";
 

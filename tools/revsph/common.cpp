@@ -60,6 +60,8 @@ void apply_thread_count(int threads) {
   }
 }
 
-void print_error(const std::string& message) { std::cerr << "revsph: error: " << message << "\n"; }
+void print_error(const std::string& message) {
+  std::cerr << "revsph: error: " << message << "\n";
+}
 
 } // namespace revsph::cli

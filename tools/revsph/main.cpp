@@ -14,9 +14,9 @@ namespace {
 using namespace revsph::cli;
 
 void add_case_options(CLI::App& command, CaseOptions& options, bool case_required) {
-  auto* case_option = command.add_option(
-      "case", options.case_path,
-      "case file (TOML), or the name of a built-in case (list: revsph cases)");
+  auto* case_option =
+      command.add_option("case", options.case_path,
+                         "case file (TOML), or the name of a built-in case (list: revsph cases)");
   if (case_required) {
     case_option->required();
   } else {
@@ -24,11 +24,13 @@ void add_case_options(CLI::App& command, CaseOptions& options, bool case_require
   }
   command.add_option("--set", options.overrides,
                      "override a case-file value: --set discretisation.dr=0.01 (repeatable)");
-  command.add_option("--arithmetic", options.arithmetic,
-                     "fixed (bitwise reversible, default) or float (the paper's FloPA)")
+  command
+      .add_option("--arithmetic", options.arithmetic,
+                  "fixed (bitwise reversible, default) or float (the paper's FloPA)")
       ->check(CLI::IsMember({"fixed", "float"}));
-  command.add_option("--threads", options.threads,
-                     "number of threads (default: all); results do not depend on it")
+  command
+      .add_option("--threads", options.threads,
+                  "number of threads (default: all); results do not depend on it")
       ->check(CLI::PositiveNumber);
 }
 
@@ -70,8 +72,7 @@ int main(int argc, char** argv) {
                        "also check each sub-step (kick, drift, …) on its own");
 
   HashOptions hash;
-  auto* hash_app =
-      app.add_subcommand("hash", "print the SHA-256 hash of the state after N steps");
+  auto* hash_app = app.add_subcommand("hash", "print the SHA-256 hash of the state after N steps");
   add_case_options(*hash_app, hash.case_options, true);
   add_length_options(*hash_app, hash.steps, hash.t_end);
 

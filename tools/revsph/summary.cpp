@@ -10,8 +10,8 @@
 
 namespace revsph::cli {
 
-void write_summary(const std::filesystem::path& path, Simulation& simulation,
-                   const RunSummary& run, const EnergyLog& energy) {
+void write_summary(const std::filesystem::path& path, Simulation& simulation, const RunSummary& run,
+                   const EnergyLog& energy) {
   const SimulationInfo& info = simulation.info();
   nlohmann::ordered_json summary;
   summary["case"] = info.case_name;
@@ -32,8 +32,8 @@ void write_summary(const std::filesystem::path& path, Simulation& simulation,
     summary["failure"] = *run.failure;
   }
   summary["wall_seconds"] = run.wall_seconds;
-  const double particle_steps =
-      static_cast<double>(info.moving_particle_count()) * static_cast<double>(simulation.steps_taken());
+  const double particle_steps = static_cast<double>(info.moving_particle_count()) *
+                                static_cast<double>(simulation.steps_taken());
   summary["particle_steps_per_second"] =
       run.wall_seconds > 0 ? particle_steps / run.wall_seconds : 0.0;
   summary["threads"] = run.threads;

@@ -22,7 +22,7 @@ struct RunSummary {
   std::optional<std::string> failure; // the fault message if the run stopped early
 };
 
-void write_summary(const std::filesystem::path& path, Simulation& simulation,
-                   const RunSummary& run, const EnergyLog& energy);
+void write_summary(const std::filesystem::path& path, Simulation& simulation, const RunSummary& run,
+                   const EnergyLog& energy);
 
 } // namespace revsph::cli
