@@ -22,8 +22,10 @@ void add_case_options(CLI::App& command, CaseOptions& options, bool case_require
   } else {
     case_option->capture_default_str();
   }
-  command.add_option("--set", options.overrides,
-                     "override a case-file value: --set discretisation.dr=0.01 (repeatable)");
+  command
+      .add_option("--set", options.overrides,
+                  "override a case-file value: --set discretisation.dr=0.01 (repeatable)")
+      ->allow_extra_args(false); // one value per --set, so a following CASE stays positional
   command
       .add_option("--arithmetic", options.arithmetic,
                   "fixed (bitwise reversible, default) or float (the paper's FloPA)")
