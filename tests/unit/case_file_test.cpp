@@ -10,6 +10,8 @@
 #include "core/particle_blocks.hpp"
 #include "core/run_settings.hpp"
 
+#include "case_text.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -30,32 +32,11 @@ namespace {
 const std::string bad_file_name = "bad.toml";
 
 std::string dambreak_small_text() {
-  const BuiltinCase* builtin = find_builtin_case("dambreak-small");
-  if (builtin == nullptr) {
-    throw std::logic_error("the built-in case dambreak-small is missing");
-  }
-  return std::string(builtin->text);
+  return testing::builtin_case_text("dambreak-small");
 }
 
-// `from` must occur exactly once, so that an edit of the built-in case cannot silently land on
-// another line (or nowhere) when that case changes.
-std::string replaced_once(std::string text, std::string_view from, std::string_view to) {
-  const std::size_t first = text.find(from);
-  if (first == std::string::npos || text.find(from, first + 1) != std::string::npos) {
-    throw std::logic_error("expected exactly one occurrence of \"" + std::string(from) +
-                           "\" in the case text");
-  }
-  return text.replace(first, from.size(), to);
-}
-
-// 1-based line on which the character at `offset` lies.
-int line_at(const std::string& text, std::size_t offset) {
-  int line = 1;
-  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
-    line += text[i] == '\n' ? 1 : 0;
-  }
-  return line;
-}
+using testing::line_at;
+using testing::replaced_once;
 
 // What tools/revsph/common.cpp does with a case after loading and overriding it.
 void read_like_the_cli(const CaseFile& case_file) {

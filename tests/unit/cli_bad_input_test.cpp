@@ -6,6 +6,8 @@
 
 #include "core/model_registry.hpp"
 
+#include "case_text.hpp"
+
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -30,33 +32,15 @@ namespace fs = std::filesystem;
 const std::string error_prefix = "revsph: error: ";
 
 std::string dambreak_small_text() {
-  const revsph::BuiltinCase* builtin = revsph::find_builtin_case("dambreak-small");
-  if (builtin == nullptr) {
-    throw std::logic_error("the built-in case dambreak-small is missing");
-  }
-  return std::string(builtin->text);
+  return revsph::testing::builtin_case_text("dambreak-small");
 }
 
-// `from` must occur exactly once, so that an edit of the built-in case cannot silently land on
-// another line (or nowhere) when that case changes.
-std::string replaced_once(std::string text, std::string_view from, std::string_view to) {
-  const std::size_t first = text.find(from);
-  if (first == std::string::npos || text.find(from, first + 1) != std::string::npos) {
-    throw std::logic_error("expected exactly one occurrence of \"" + std::string(from) +
-                           "\" in the case text");
-  }
-  return text.replace(first, from.size(), to);
-}
+using revsph::testing::replaced_once;
 
 // Line (1-based) on which the last line of `edit` lies in `text`, for messages that point into
 // the file.
 int line_of_edit(const std::string& text, const std::string& edit) {
-  const std::size_t end = text.find(edit) + edit.size();
-  int line = 1;
-  for (std::size_t i = 0; i < end && i < text.size(); ++i) {
-    line += text[i] == '\n' ? 1 : 0;
-  }
-  return line;
+  return revsph::testing::line_at(text, text.find(edit) + edit.size());
 }
 
 // "@LINE@" in `part` stands for line_of_edit.
