@@ -11,6 +11,7 @@
 #include "core/run_settings.hpp"
 
 #include "case_text.hpp"
+#include "temp_directory.hpp"
 
 #include <gtest/gtest.h>
 
@@ -533,26 +534,7 @@ INSTANTIATE_TEST_SUITE_P(
 // ---------------------------------------------------------------------------------------------
 // Loading from disk.
 
-class TempDirectory {
-public:
-  TempDirectory() {
-    std::string pattern = "/tmp/revsph-case-file-test-XXXXXX";
-    if (mkdtemp(pattern.data()) == nullptr) {
-      throw std::runtime_error("mkdtemp failed");
-    }
-    path_ = pattern;
-  }
-  TempDirectory(const TempDirectory&) = delete;
-  TempDirectory& operator=(const TempDirectory&) = delete;
-  ~TempDirectory() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  const std::filesystem::path& path() const { return path_; }
-
-private:
-  std::filesystem::path path_;
-};
+using testing::TempDirectory;
 
 TEST(CaseFileLoadTest, FileNameIsTheSourceName) {
   TempDirectory dir;

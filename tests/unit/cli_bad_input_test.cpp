@@ -7,6 +7,7 @@
 #include "core/model_registry.hpp"
 
 #include "case_text.hpp"
+#include "temp_directory.hpp"
 
 #include <gtest/gtest.h>
 
@@ -89,22 +90,9 @@ std::ostream& operator<<(std::ostream& stream, const CommandResult& result) {
 // captured output lives beside it, so that work() shows exactly what the binary wrote.
 class Sandbox {
 public:
-  Sandbox() {
-    std::string pattern = "/tmp/revsph-cli-test-XXXXXX";
-    if (mkdtemp(pattern.data()) == nullptr) {
-      throw std::runtime_error("mkdtemp failed");
-    }
-    root_ = pattern;
-    fs::create_directory(work());
-  }
-  Sandbox(const Sandbox&) = delete;
-  Sandbox& operator=(const Sandbox&) = delete;
-  ~Sandbox() {
-    std::error_code ignored;
-    fs::remove_all(root_, ignored);
-  }
+  Sandbox() { fs::create_directory(work()); }
 
-  fs::path work() const { return root_ / "work"; }
+  fs::path work() const { return root_.path() / "work"; }
   fs::path out() const { return work() / "out"; }
 
   fs::path write_case(const std::string& text, const std::string& name = "case.toml") const {
@@ -114,8 +102,8 @@ public:
   }
 
   CommandResult revsph(const std::vector<std::string>& arguments) const {
-    const fs::path out_file = root_ / "stdout.txt";
-    const fs::path err_file = root_ / "stderr.txt";
+    const fs::path out_file = root_.path() / "stdout.txt";
+    const fs::path err_file = root_.path() / "stderr.txt";
     // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on `" " + string`.
     std::string command = "cd ";
     command.append(shell_quoted(work().string()))
@@ -135,7 +123,7 @@ public:
   }
 
 private:
-  fs::path root_;
+  revsph::testing::TempDirectory root_{"revsph-cli-test"};
 };
 
 // The contract for every rejected input. `parts` must all appear in the one error line.
