@@ -77,7 +77,6 @@ public:
 
   std::int64_t steps_taken() const { return steps_taken_; }
   double time() const { return static_cast<double>(steps_taken_) * info().dt; }
-  void set_steps_taken(std::int64_t steps) { steps_taken_ = steps; }
 
 protected:
   std::int64_t steps_taken_ = 0;

@@ -19,6 +19,15 @@
 
 namespace revsph::wcsph {
 
+// D accumulators at one scale (Sum has no default constructor).
+template <class Sum, int D>
+std::array<Sum, D> sums_at(const fixedpoint::Scale& scale) {
+  return [&]<std::size_t... K>(std::index_sequence<K...>) {
+    return std::array<Sum, D>{((void)K, Sum(scale))...};
+  }
+  (std::make_index_sequence<D>{});
+}
+
 // Paper 1 eq. (5): rho_a = sum_b m_b w(r_ab) + C_a, the sum including b = a.
 template <int D, class Arith>
 void compute_density(const WendlandQuintic<D>& kernel, const CoordinateView<D>& x,
@@ -49,13 +58,6 @@ void compute_density(const WendlandQuintic<D>& kernel, const CoordinateView<D>& 
   }
 }
 
-struct AccelerationTerms {
-  double rest_density;
-  double sound_speed;
-  double gravity;
-  WallPotential wall;
-};
-
 // Paper 1 eq. (1b), with the sign that makes it -grad of eq. (3):
 //   a_a = -sum_b m_b (p_a / rho_a^2 + p_b / rho_b^2) w'(r_ab) (x_a - x_b) / r_ab
 //         + sum_wall F_wall->a / m_a - g e_vertical.
@@ -66,7 +68,7 @@ void compute_acceleration(const WendlandQuintic<D>& kernel, const CoordinateView
                           const CoordinateView<D>& wall_x, std::span<const double> mass,
                           std::span<const double> pressure_over_density_squared,
                           const NeighbourList& neighbours, const NeighbourList& wall_neighbours,
-                          const AccelerationTerms& terms,
+                          double gravity, const WallPotential& wall,
                           const fixedpoint::Scale& acceleration_scale,
                           std::array<std::vector<double>, D>& acceleration, FaultRecorder& faults) {
   const std::size_t n = mass.size();
@@ -75,11 +77,7 @@ void compute_acceleration(const WendlandQuintic<D>& kernel, const CoordinateView
   }
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n; ++a) {
-    std::array<typename Arith::Sum, D> sum = [&]<std::size_t... K>(std::index_sequence<K...>) {
-      return std::array<typename Arith::Sum, D>{
-          ((void)K, typename Arith::Sum(acceleration_scale))...};
-    }
-    (std::make_index_sequence<D>{});
+    auto sum = sums_at<typename Arith::Sum, D>(acceleration_scale);
     const double pressure_a = pressure_over_density_squared[a];
     for (const std::uint32_t b : neighbours.of(a)) {
       std::array<double, D> d{};
@@ -101,12 +99,12 @@ void compute_acceleration(const WendlandQuintic<D>& kernel, const CoordinateView
         d[k] = x[k][a] - wall_x[k][w];
         r_squared += d[k] * d[k];
       }
-      const double factor = terms.wall.acceleration_over_distance(r_squared);
+      const double factor = wall.acceleration_over_distance(r_squared);
       for (int k = 0; k < D; ++k) {
         sum[k].add(factor * d[k]);
       }
     }
-    sum[D - 1].add(-terms.gravity);
+    sum[D - 1].add(-gravity);
     for (int k = 0; k < D; ++k) {
       if (!sum[k].try_value(acceleration[k][a])) {
         faults.record(a, "fluid", "acceleration", "fixed-point overflow or non-finite force");

@@ -29,8 +29,7 @@ void real_coordinates(const StateField<typename Arith::Raw>& field, CoordinateAr
 } // namespace
 
 template <int D, class Arith>
-Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, Raw> state,
-                       bool keep_density_constant)
+Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, Raw> state)
     : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
       kernel_(parameters_.support_radius),
       fluid_cells_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
@@ -39,17 +38,15 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
                   std::max(parameters_.support_radius, parameters_.wall_radius) *
                       parameters_.cell_size_factor,
                   cell_budget(state_.wall_position.count())) {
-  if (!keep_density_constant) {
-    // Eq. (5): with C_a = 0 the density is the plain kernel sum; C_a = rho0 - that sum makes
-    // rho_a(0) = rho0 for every particle.
-    std::fill(state_.density_constant.all().begin(), state_.density_constant.all().end(), Raw{});
-    update_derived();
-    auto constant = state_.density_constant.component(0);
-    const auto& scale = state_.density_constant.info().scale;
-    for (std::size_t a = 0; a < constant.size(); ++a) {
-      if (!Arith::try_from_real(parameters_.rest_density - density_[a], scale, constant[a])) {
-        throw SimulationFault({"fluid", a, "density_constant", "does not fit its scale"}, 0);
-      }
+  // Eq. (5): with C_a = 0 the density is the plain kernel sum; C_a = rho0 - that sum makes
+  // rho_a(0) = rho0 for every particle.
+  std::fill(state_.density_constant.all().begin(), state_.density_constant.all().end(), Raw{});
+  update_derived();
+  auto constant = state_.density_constant.component(0);
+  const auto& scale = state_.density_constant.info().scale;
+  for (std::size_t a = 0; a < constant.size(); ++a) {
+    if (!Arith::try_from_real(parameters_.rest_density - density_[a], scale, constant[a])) {
+      throw SimulationFault({"fluid", a, "density_constant", "does not fit its scale"}, 0);
     }
   }
   derived_valid_ = false;
@@ -115,15 +112,10 @@ void Model<D, Arith>::update_derived() {
     pressure_over_density_squared_[a] =
         tait_pressure(rho, parameters_.rest_density, parameters_.sound_speed) / (rho * rho);
   }
-  const AccelerationTerms terms{
-      parameters_.rest_density, parameters_.sound_speed, parameters_.gravity,
-      WallPotential{parameters_.wall_radius * parameters_.wall_radius +
-                        parameters_.wall_epsilon * parameters_.wall_epsilon,
-                    parameters_.wall_epsilon * parameters_.wall_epsilon,
-                    parameters_.wall_energy_per_mass}};
   compute_acceleration<D, Arith>(kernel_, x, wall_x, mass_, pressure_over_density_squared_,
-                                 fluid_neighbours_, wall_neighbours_, terms,
-                                 parameters_.acceleration_scale, acceleration_, faults);
+                                 fluid_neighbours_, wall_neighbours_, parameters_.gravity,
+                                 parameters_.wall_potential(), parameters_.acceleration_scale,
+                                 acceleration_, faults);
   faults.throw_if_any();
   derived_valid_ = true;
 }
@@ -149,10 +141,7 @@ void Model<D, Arith>::update_walls() {
 template <int D, class Arith>
 EnergyBudget Model<D, Arith>::energy() {
   update_derived();
-  const WallPotential wall{parameters_.wall_radius * parameters_.wall_radius +
-                               parameters_.wall_epsilon * parameters_.wall_epsilon,
-                           parameters_.wall_epsilon * parameters_.wall_epsilon,
-                           parameters_.wall_energy_per_mass};
+  const WallPotential wall = parameters_.wall_potential();
   // Serial sums in particle order: the same value for any thread count.
   double kinetic = 0.0;
   double gravitational = 0.0;

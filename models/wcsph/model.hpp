@@ -25,10 +25,9 @@ public:
   using Raw = typename Arith::Raw;
 
   // `state` holds positions, velocities, masses and wall positions with their scales set;
-  // `density_constant` is computed here (eq. 5: C_a = rho0 - rho_a(t = 0)) unless
-  // `keep_density_constant` (the state comes from a snapshot).
-  Model(Parameters<D> parameters, SimulationInfo info, State<D, Raw> state,
-        bool keep_density_constant);
+  // `density_constant` is computed here from the initial positions (eq. 5: C_a = rho0 -
+  // rho_a(t = 0)). A state restored later (Simulation::restore_state) brings its own C_a.
+  Model(Parameters<D> parameters, SimulationInfo info, State<D, Raw> state);
 
   static std::span<const Substep<Model>> palindrome();
 

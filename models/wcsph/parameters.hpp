@@ -4,6 +4,7 @@
 #include "core/case_file.hpp"
 #include "core/geometry.hpp"
 #include "fixedpoint/scale.hpp"
+#include "models/wcsph/equations.hpp"
 
 namespace revsph::wcsph {
 
@@ -29,7 +30,12 @@ struct Parameters {
   fixedpoint::Scale velocity_scale;
   fixedpoint::Scale density_scale;      // density sums and the constants C_a
   fixedpoint::Scale acceleration_scale; // acceleration sums
-  int mass_fraction_bits = 52;
+
+  // The wall interaction of eq. (7) with these parameters.
+  WallPotential wall_potential() const {
+    return {wall_radius * wall_radius + wall_epsilon * wall_epsilon, wall_epsilon * wall_epsilon,
+            wall_energy_per_mass};
+  }
 };
 
 template <int D>

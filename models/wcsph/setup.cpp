@@ -11,6 +11,8 @@ namespace revsph::wcsph {
 namespace {
 
 constexpr std::string_view particle_kinds[] = {"fluid", "wall"};
+// Masses are constants of the setup; 52 bits keep their double view exact.
+constexpr int mass_fraction_bits = 52;
 
 template <class Arith, int D>
 void fill_positions(const CaseFile& case_file, const ParticleBlock<D>& block,
@@ -50,8 +52,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   State<D, Raw> state;
   state.position.info().scale = parameters.position_scale;
   state.velocity.info().scale = parameters.velocity_scale;
-  state.mass.info().scale =
-      fixedpoint::Scale::covering(largest_mass, parameters.mass_fraction_bits);
+  state.mass.info().scale = fixedpoint::Scale::covering(largest_mass, mass_fraction_bits);
   state.density_constant.info().scale = parameters.density_scale;
   state.wall_position.info().scale = parameters.position_scale;
   state.position.resize(fluid_count);
@@ -84,7 +85,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   info.dt = parameters.dt;
   info.particles = {{"fluid", fluid_count, true}, {"wall", wall_count, false}};
   return std::make_unique<ModelSimulation<Model<D, Arith>>>(
-      Model<D, Arith>(parameters, std::move(info), std::move(state), false));
+      Model<D, Arith>(parameters, std::move(info), std::move(state)));
 }
 
 template <int D>
