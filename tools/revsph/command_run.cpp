@@ -48,7 +48,7 @@ int run_command(const RunOptions& options) {
   std::cout << "revsph run: " << info.case_name << " (" << info.model << ", " << info.dimension
             << "D, " << to_string(info.arithmetic) << "-point arithmetic), "
             << describe_particles(info) << ", dt = " << info.dt << " s, " << steps << " steps, "
-            << thread_count() << " threads\n";
+            << thread_count() << (thread_count() == 1 ? " thread\n" : " threads\n");
 
   EnergyLog energy((out / "energy.csv").string());
   ProgressReporter progress(stdout, "run", simulation.steps_taken() + steps, info.dt,

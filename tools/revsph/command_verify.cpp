@@ -18,7 +18,7 @@ int verify_command(const VerifyCommandOptions& options) {
   std::cout << "revsph verify: " << info.case_name << " (" << info.model << ", " << info.dimension
             << "D, " << to_string(info.arithmetic) << "-point arithmetic), " << steps
             << " steps forward, time reversal, " << steps << " steps, time reversal; "
-            << thread_count() << " threads\n";
+            << thread_count() << (thread_count() == 1 ? " thread\n" : " threads\n");
 
   if (options.check_substeps) {
     for (const SubstepCheck& check : check_substeps(simulation, info.dt)) {
