@@ -111,17 +111,6 @@ CaseFile CaseFile::parse(std::string text, std::string source_name) {
   return CaseFile(std::move(text), std::move(source_name));
 }
 
-std::string CaseFile::text() const {
-  std::string result = text_;
-  if (!overrides_.empty()) {
-    result += "\n# command-line overrides:\n";
-    for (const std::string& o : overrides_) {
-      result += "# --set " + o + "\n";
-    }
-  }
-  return result;
-}
-
 void CaseFile::fail(std::string_view key, const std::string& reason) const {
   throw CaseError(source_name_, std::string(key), reason);
 }

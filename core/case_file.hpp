@@ -47,8 +47,9 @@ public:
   ~CaseFile();
 
   const std::string& source_name() const { return source_name_; }
-  // The file as written, followed by the command-line overrides as comments.
-  std::string text() const;
+  // The file as written; the overrides applied since are overrides(). A snapshot stores both,
+  // so that a restart rebuilds exactly the same case.
+  const std::string& text() const { return text_; }
   const std::vector<std::string>& overrides() const { return overrides_; }
 
   // Keys are dotted paths with array indices: "discretisation.dr", "particles[1].min".

@@ -17,6 +17,9 @@ namespace revsph {
 
 struct SimulationOptions {
   Arithmetic arithmetic = Arithmetic::fixed;
+  // Memory a case may use; 0: what the machine has available. Cases that would need more are
+  // refused before allocating (see ParticleBudget).
+  std::size_t memory_budget_bytes = 0;
 };
 
 using ModelFactory =

@@ -1,6 +1,9 @@
 #include "core/particle_blocks.hpp"
 
+#include "core/memory.hpp"
+
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace revsph {
@@ -114,96 +117,178 @@ Box<D> read_domain(const CaseFile& case_file) {
   return domain;
 }
 
+namespace {
+
+enum class Shape { box, container };
+
+// A block as read from the case, before its particles are generated.
 template <int D>
-std::vector<ParticleBlock<D>> read_particle_blocks(const CaseFile& case_file,
-                                                   double default_spacing, const Box<D>& domain,
-                                                   std::span<const std::string_view> kinds) {
-  std::vector<ParticleBlock<D>> blocks;
+struct BlockSpec {
+  std::string key;
+  std::string kind;
+  Lattice lattice = Lattice::square;
+  Shape shape = Shape::box;
+  double spacing = 0.0;
+  Box<D> region;
+  Box<D> outer; // the region grown by a container's layers (the region itself for a box)
+};
+
+template <int D>
+double volume_of(const Box<D>& box) {
+  double volume = 1.0;
+  for (int k = 0; k < D; ++k) {
+    volume *= box.max[k] - box.min[k];
+  }
+  return volume;
+}
+
+template <int D>
+BlockSpec<D> read_block(const CaseFile& case_file, std::size_t index, double default_spacing,
+                        std::span<const std::string_view> kinds) {
+  BlockSpec<D> spec;
+  spec.key = "particles[" + std::to_string(index) + "]";
+  auto field = [&](const char* name) { return spec.key + "." + name; };
+  spec.kind = case_file.string(field("kind"));
+  bool known_kind = false;
+  std::string allowed;
+  for (std::string_view k : kinds) {
+    known_kind = known_kind || k == spec.kind;
+    allowed += (allowed.empty() ? "\"" : ", \"") + std::string(k) + "\"";
+  }
+  if (!known_kind) {
+    case_file.fail(field("kind"),
+                   "unknown particle kind \"" + spec.kind + "\" (this model has " + allowed + ")");
+  }
+  const std::string lattice_name = case_file.string_or(field("lattice"), "square");
+  if (lattice_name == "hexagonal") {
+    spec.lattice = Lattice::hexagonal;
+  } else if (lattice_name != "square") {
+    case_file.fail(field("lattice"),
+                   "expected \"square\" or \"hexagonal\", got \"" + lattice_name + "\"");
+  }
+  spec.spacing = default_spacing;
+  if (case_file.has(field("spacing"))) {
+    spec.spacing = case_file.positive_number(field("spacing"));
+  }
+  spec.region = Box<D>{to_vec<D>(case_file.numbers(field("min"), D)),
+                       to_vec<D>(case_file.numbers(field("max"), D))};
+  for (int k = 0; k < D; ++k) {
+    if (!(spec.region.min[k] < spec.region.max[k])) {
+      case_file.fail(field("max"), "must be greater than min on every axis");
+    }
+  }
+  spec.outer = spec.region;
+  const std::string shape = case_file.string_or(field("shape"), "box");
+  if (shape == "container") {
+    spec.shape = Shape::container;
+    const std::int64_t layers = case_file.integer_or(field("layers"), 1);
+    if (layers < 1 || layers > 1000) {
+      case_file.fail(field("layers"),
+                     "must be between 1 and 1000 (got " + std::to_string(layers) + ")");
+    }
+    const bool open_top = case_file.boolean_or(field("open_top"), false);
+    const Vec<D> period = lattice_periods<D>(spec.lattice, spec.spacing);
+    for (int k = 0; k < D; ++k) {
+      spec.outer.min[k] -= static_cast<double>(layers) * period[k];
+      if (!(open_top && k == D - 1)) {
+        spec.outer.max[k] += static_cast<double>(layers) * period[k];
+      }
+    }
+  } else if (shape != "box") {
+    case_file.fail(field("shape"), "expected \"box\" or \"container\", got \"" + shape + "\"");
+  } else if (case_file.has(field("layers")) || case_file.has(field("open_top"))) {
+    case_file.fail(case_file.has(field("layers")) ? field("layers") : field("open_top"),
+                   "only a \"container\" block has layers and open_top");
+  }
+  return spec;
+}
+
+// An upper estimate of a block's particles from volumes, without generating any: the lattice
+// cells of its outer box padded by one period (partial rows, half-period offsets), minus the
+// hollow of a container.
+template <int D>
+double estimated_particles(const BlockSpec<D>& spec) {
+  Box<D> padded = spec.outer;
+  const Vec<D> period = lattice_periods<D>(spec.lattice, spec.spacing);
+  for (int k = 0; k < D; ++k) {
+    padded.max[k] += period[k];
+  }
+  const double hollow = spec.shape == Shape::container ? volume_of<D>(spec.region) : 0.0;
+  return (volume_of<D>(padded) - hollow) / lattice_cell_volume<D>(spec.lattice, spec.spacing);
+}
+
+void require_memory(const CaseFile& case_file, double particles, const ParticleBudget& budget) {
+  constexpr double index_limit = 4294967295.0; // particle indices are 32-bit
+  const double needed = particles * budget.bytes_per_particle;
+  const std::size_t available =
+      budget.memory_bytes > 0 ? budget.memory_bytes : available_memory_bytes();
+  char estimate[64];
+  std::snprintf(estimate, sizeof estimate, "%.3g", particles);
+  if (!(particles <= index_limit)) {
+    case_file.fail("particles", std::string("about ") + estimate +
+                                    " particles: more than the 2^32 - 1 one run can index");
+  }
+  if (needed > static_cast<double>(available)) {
+    case_file.fail("particles", std::string("about ") + estimate + " particles would need about " +
+                                    format_bytes(needed) + " of memory; " +
+                                    format_bytes(static_cast<double>(available)) +
+                                    " is available (refused before allocating)");
+  }
+}
+
+template <int D>
+ParticleBlock<D> generate_block(const CaseFile& case_file, const BlockSpec<D>& spec,
+                                const Box<D>& domain) {
+  ParticleBlock<D> block;
+  block.key = spec.key;
+  block.kind = spec.kind;
+  block.spacing = spec.spacing;
+  block.volume_per_particle = lattice_cell_volume<D>(spec.lattice, spec.spacing);
+  if (spec.shape == Shape::box) {
+    block.positions = lattice_points<D>(spec.lattice, spec.region, spec.spacing);
+  } else {
+    for (const Vec<D>& p : lattice_points<D>(spec.lattice, spec.outer, spec.spacing)) {
+      bool inside_hollow = true;
+      for (int k = 0; k < D; ++k) {
+        inside_hollow = inside_hollow && p[k] > spec.region.min[k] && p[k] < spec.region.max[k];
+      }
+      if (!inside_hollow) {
+        block.positions.push_back(p);
+      }
+    }
+  }
+  if (block.positions.empty()) {
+    case_file.fail(spec.key, "the block holds no particles (is it thinner than the spacing?)");
+  }
+  for (const Vec<D>& p : block.positions) {
+    if (!domain.contains(p)) {
+      case_file.fail(spec.key, "the block reaches outside the domain: a particle at " +
+                                   format_point<D>(p) + " is not inside [domain]");
+    }
+  }
+  return block;
+}
+
+} // namespace
+
+template <int D>
+std::vector<ParticleBlock<D>>
+read_particle_blocks(const CaseFile& case_file, double default_spacing, const Box<D>& domain,
+                     std::span<const std::string_view> kinds, const ParticleBudget& budget) {
   const std::size_t count = case_file.table_count("particles");
   if (count == 0) {
     case_file.fail("particles", "no [[particles]] blocks: the case has no particles");
   }
+  std::vector<BlockSpec<D>> specs;
+  double particles = 0.0;
   for (std::size_t b = 0; b < count; ++b) {
-    const std::string key = "particles[" + std::to_string(b) + "]";
-    auto field = [&](const char* name) { return key + "." + name; };
-    ParticleBlock<D> block;
-    block.key = key;
-    block.kind = case_file.string(field("kind"));
-    bool known_kind = false;
-    std::string allowed;
-    for (std::string_view k : kinds) {
-      known_kind = known_kind || k == block.kind;
-      allowed += (allowed.empty() ? "\"" : ", \"") + std::string(k) + "\"";
-    }
-    if (!known_kind) {
-      case_file.fail(field("kind"), "unknown particle kind \"" + block.kind +
-                                        "\" (this model has " + allowed + ")");
-    }
-    const std::string lattice_name = case_file.string_or(field("lattice"), "square");
-    Lattice lattice = Lattice::square;
-    if (lattice_name == "hexagonal") {
-      lattice = Lattice::hexagonal;
-    } else if (lattice_name != "square") {
-      case_file.fail(field("lattice"),
-                     "expected \"square\" or \"hexagonal\", got \"" + lattice_name + "\"");
-    }
-    block.spacing = default_spacing;
-    if (case_file.has(field("spacing"))) {
-      block.spacing = case_file.positive_number(field("spacing"));
-    }
-    block.volume_per_particle = lattice_cell_volume<D>(lattice, block.spacing);
-
-    const Box<D> region{to_vec<D>(case_file.numbers(field("min"), D)),
-                        to_vec<D>(case_file.numbers(field("max"), D))};
-    for (int k = 0; k < D; ++k) {
-      if (!(region.min[k] < region.max[k])) {
-        case_file.fail(field("max"), "must be greater than min on every axis");
-      }
-    }
-    const std::string shape = case_file.string_or(field("shape"), "box");
-    if (shape == "box") {
-      block.positions = lattice_points<D>(lattice, region, block.spacing);
-    } else if (shape == "container") {
-      const std::int64_t layers = case_file.integer_or(field("layers"), 1);
-      if (layers < 1 || layers > 1000) {
-        case_file.fail(field("layers"),
-                       "must be between 1 and 1000 (got " + std::to_string(layers) + ")");
-      }
-      const bool open_top = case_file.boolean_or(field("open_top"), false);
-      const Vec<D> period = lattice_periods<D>(lattice, block.spacing);
-      Box<D> outer = region;
-      for (int k = 0; k < D; ++k) {
-        outer.min[k] -= static_cast<double>(layers) * period[k];
-        if (!(open_top && k == D - 1)) {
-          outer.max[k] += static_cast<double>(layers) * period[k];
-        }
-      }
-      for (const Vec<D>& p : lattice_points<D>(lattice, outer, block.spacing)) {
-        bool inside_inner = true;
-        for (int k = 0; k < D; ++k) {
-          inside_inner = inside_inner && p[k] > region.min[k] && p[k] < region.max[k];
-        }
-        if (!inside_inner) {
-          block.positions.push_back(p);
-        }
-      }
-    } else {
-      case_file.fail(field("shape"), "expected \"box\" or \"container\", got \"" + shape + "\"");
-    }
-    if (shape == "box" && (case_file.has(field("layers")) || case_file.has(field("open_top")))) {
-      case_file.fail(case_file.has(field("layers")) ? field("layers") : field("open_top"),
-                     "only a \"container\" block has layers and open_top");
-    }
-    if (block.positions.empty()) {
-      case_file.fail(key, "the block holds no particles (is it thinner than the spacing?)");
-    }
-    for (const Vec<D>& p : block.positions) {
-      if (!domain.contains(p)) {
-        case_file.fail(key, "the block reaches outside the domain: a particle at " +
-                                format_point<D>(p) + " is not inside [domain]");
-      }
-    }
-    blocks.push_back(std::move(block));
+    specs.push_back(read_block<D>(case_file, b, default_spacing, kinds));
+    particles += estimated_particles<D>(specs.back());
+  }
+  require_memory(case_file, particles, budget);
+  std::vector<ParticleBlock<D>> blocks;
+  for (const BlockSpec<D>& spec : specs) {
+    blocks.push_back(generate_block<D>(case_file, spec, domain));
   }
   return blocks;
 }
@@ -214,9 +299,13 @@ template double lattice_cell_volume<2>(Lattice, double);
 template double lattice_cell_volume<3>(Lattice, double);
 template Box<2> read_domain<2>(const CaseFile&);
 template Box<3> read_domain<3>(const CaseFile&);
-template std::vector<ParticleBlock<2>>
-read_particle_blocks<2>(const CaseFile&, double, const Box<2>&, std::span<const std::string_view>);
-template std::vector<ParticleBlock<3>>
-read_particle_blocks<3>(const CaseFile&, double, const Box<3>&, std::span<const std::string_view>);
+template std::vector<ParticleBlock<2>> read_particle_blocks<2>(const CaseFile&, double,
+                                                               const Box<2>&,
+                                                               std::span<const std::string_view>,
+                                                               const ParticleBudget&);
+template std::vector<ParticleBlock<3>> read_particle_blocks<3>(const CaseFile&, double,
+                                                               const Box<3>&,
+                                                               std::span<const std::string_view>,
+                                                               const ParticleBudget&);
 
 } // namespace revsph

@@ -42,11 +42,20 @@ std::vector<Vec<D>> lattice_points(Lattice lattice, const Box<D>& region, double
 template <int D>
 double lattice_cell_volume(Lattice lattice, double spacing);
 
-// Reads every [[particles]] block. Each generated particle must lie inside `domain`.
+// What the particles of a case may cost: a model's memory per particle (state, neighbour lists,
+// derived arrays) and the memory available (0: what the machine has free now).
+struct ParticleBudget {
+  double bytes_per_particle = 0.0;
+  std::size_t memory_bytes = 0;
+};
+
+// Reads every [[particles]] block. Each generated particle must lie inside `domain`. Before any
+// particle is generated, the count is estimated from the block volumes; a case that would not
+// fit in memory (or exceeds 2^32 - 1 particles) is refused with the estimate in the message.
 template <int D>
-std::vector<ParticleBlock<D>> read_particle_blocks(const CaseFile& case_file,
-                                                   double default_spacing, const Box<D>& domain,
-                                                   std::span<const std::string_view> kinds);
+std::vector<ParticleBlock<D>>
+read_particle_blocks(const CaseFile& case_file, double default_spacing, const Box<D>& domain,
+                     std::span<const std::string_view> kinds, const ParticleBudget& budget);
 
 // Reads [domain] min/max and checks min < max on every axis.
 template <int D>

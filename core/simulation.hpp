@@ -6,6 +6,7 @@
 #include "core/arithmetic.hpp"
 #include "core/energy.hpp"
 #include "core/fault.hpp"
+#include "core/particle_view.hpp"
 #include "core/state_snapshot.hpp"
 #include "core/step_composition.hpp"
 
@@ -51,6 +52,8 @@ concept Model = requires(M& model, const M& const_model) {
   { model.state() } -> DeclaredState;
   // Energy terms at the current (synchronised) state.
   { model.energy() } -> std::same_as<EnergyBudget>;
+  // Physical per-particle quantities for snapshots (density, pressure, energy per particle, …).
+  { model.derived_views() } -> std::same_as<std::vector<ParticleView>>;
   // Forget cached quantities derived from the state (after the state was replaced).
   model.invalidate_derived();
   { const_model.info() } -> std::convertible_to<const SimulationInfo&>;
@@ -70,6 +73,7 @@ public:
   virtual StateSnapshot capture_state() = 0;
   virtual void restore_state(const StateSnapshot& snapshot) = 0;
   virtual EnergyBudget energy() = 0;
+  virtual std::vector<ParticleView> derived_views() = 0;
 
   // Single sub-steps, to check each one's reversibility on its own.
   virtual std::vector<std::string> substep_names() const = 0;
@@ -77,6 +81,8 @@ public:
 
   std::int64_t steps_taken() const { return steps_taken_; }
   double time() const { return static_cast<double>(steps_taken_) * info().dt; }
+  // For a restart: the state came from a snapshot taken after `steps` steps.
+  void set_steps_taken(std::int64_t steps) { steps_taken_ = steps; }
 
 protected:
   std::int64_t steps_taken_ = 0;
@@ -110,6 +116,7 @@ public:
     model_.invalidate_derived();
   }
   EnergyBudget energy() override { return model_.energy(); }
+  std::vector<ParticleView> derived_views() override { return model_.derived_views(); }
 
   std::vector<std::string> substep_names() const override {
     std::vector<std::string> names;

@@ -139,27 +139,27 @@ void Model<D, Arith>::update_walls() {
 }
 
 template <int D, class Arith>
-EnergyBudget Model<D, Arith>::energy() {
+typename Model<D, Arith>::ParticleEnergies Model<D, Arith>::particle_energies() {
   update_derived();
   const WallPotential wall = parameters_.wall_potential();
-  // Serial sums in particle order: the same value for any thread count.
-  double kinetic = 0.0;
-  double gravitational = 0.0;
-  double compressional = 0.0;
-  double wall_energy = 0.0;
   const auto& velocity_scale = state_.velocity.info().scale;
-  for (std::size_t a = 0; a < mass_.size(); ++a) {
+  const std::size_t n = mass_.size();
+  ParticleEnergies energies{std::vector<double>(n), std::vector<double>(n), std::vector<double>(n),
+                            std::vector<double>(n)};
+  for (std::size_t a = 0; a < n; ++a) {
     const double m = mass_[a];
     double v_squared = 0.0;
     for (int k = 0; k < D; ++k) {
       const double v = Arith::real(state_.velocity.at(k, a), velocity_scale);
       v_squared += v * v;
     }
-    kinetic += 0.5 * m * v_squared;
-    gravitational +=
+    energies.kinetic[a] = 0.5 * m * v_squared;
+    energies.gravitational[a] =
         m * parameters_.gravity * (position_[D - 1][a] - parameters_.gravity_reference_height);
-    compressional += m * compressional_energy_per_mass(density_[a], parameters_.rest_density,
-                                                       parameters_.sound_speed);
+    energies.compressional[a] =
+        m * compressional_energy_per_mass(density_[a], parameters_.rest_density,
+                                          parameters_.sound_speed); // eq. (3)
+    double wall_energy = 0.0; // eq. (7), attributed to the fluid particle
     for (const std::uint32_t w : wall_neighbours_.of(a)) {
       double r_squared = 0.0;
       for (int k = 0; k < D; ++k) {
@@ -168,11 +168,47 @@ EnergyBudget Model<D, Arith>::energy() {
       }
       wall_energy += m * wall.energy_per_fluid_mass(r_squared);
     }
+    energies.wall[a] = wall_energy;
   }
-  return EnergyBudget{{{"kinetic", kinetic},
-                       {"gravitational", gravitational},
-                       {"compressional", compressional},
-                       {"wall", wall_energy}}};
+  return energies;
+}
+
+template <int D, class Arith>
+EnergyBudget Model<D, Arith>::energy() {
+  const ParticleEnergies energies = particle_energies();
+  // Serial sums in particle order: the same value for any thread count.
+  auto total = [](const std::vector<double>& values) {
+    double sum = 0.0;
+    for (const double value : values) {
+      sum += value;
+    }
+    return sum;
+  };
+  return EnergyBudget{{{"kinetic", total(energies.kinetic)},
+                       {"gravitational", total(energies.gravitational)},
+                       {"compressional", total(energies.compressional)},
+                       {"wall", total(energies.wall)}}};
+}
+
+template <int D, class Arith>
+std::vector<ParticleView> Model<D, Arith>::derived_views() {
+  ParticleEnergies energies = particle_energies();
+  std::vector<double> pressure(density_.size());
+  for (std::size_t a = 0; a < pressure.size(); ++a) {
+    pressure[a] = tait_pressure(density_[a], parameters_.rest_density, parameters_.sound_speed);
+  }
+  std::vector<double> acceleration;
+  for (int k = 0; k < D; ++k) {
+    acceleration.insert(acceleration.end(), acceleration_[k].begin(), acceleration_[k].end());
+  }
+  const std::string energy_unit = D == 2 ? "J/m" : "J";
+  return {{"fluid", "density", "kg/m^3", 1, density_},
+          {"fluid", "pressure", "Pa", 1, std::move(pressure)},
+          {"fluid", "acceleration", "m/s^2", D, std::move(acceleration)},
+          {"fluid", "kinetic_energy", energy_unit, 1, std::move(energies.kinetic)},
+          {"fluid", "gravitational_energy", energy_unit, 1, std::move(energies.gravitational)},
+          {"fluid", "compressional_energy", energy_unit, 1, std::move(energies.compressional)},
+          {"fluid", "wall_energy", energy_unit, 1, std::move(energies.wall)}};
 }
 
 template <int D, class Arith>

@@ -35,6 +35,8 @@ public:
   const SimulationInfo& info() const { return info_; }
   const Parameters<D>& parameters() const { return parameters_; }
   EnergyBudget energy();
+  // Density, pressure, acceleration and each energy term per fluid particle.
+  std::vector<ParticleView> derived_views();
   void invalidate_derived() {
     derived_valid_ = false;
     walls_valid_ = false;
@@ -53,8 +55,12 @@ public:
 private:
   static void kick_substep(Model& model, double dt) { model.kick(dt); }
   static void drift_substep(Model& model, double dt) { model.drift(dt); }
+  struct ParticleEnergies {
+    std::vector<double> kinetic, gravitational, compressional, wall;
+  };
   void update_derived();
   void update_walls();
+  ParticleEnergies particle_energies();
 
   Parameters<D> parameters_;
   SimulationInfo info_;

@@ -1,7 +1,7 @@
 #include "tools/revsph/summary.hpp"
 
 #include "core/build_info.hpp"
-#include "core/peak_memory.hpp"
+#include "core/memory.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -1,0 +1,300 @@
+#include "core/snapshot_file.hpp"
+
+#include "core/hdf5_handle.hpp"
+
+#include <array>
+#include <fstream>
+#include <map>
+#include <set>
+
+namespace revsph {
+
+namespace {
+
+using hdf5::Handle;
+using hdf5::Hdf5Error;
+
+Handle create_group(hid_t parent, const std::string& name) {
+  return Handle(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                "cannot create group " + name);
+}
+
+Handle open_or_create_group(hid_t parent, const std::string& name) {
+  if (H5Lexists(parent, name.c_str(), H5P_DEFAULT) > 0) {
+    return Handle(H5Gopen2(parent, name.c_str(), H5P_DEFAULT), H5Gclose, "cannot open " + name);
+  }
+  return create_group(parent, name);
+}
+
+// Rows are particles: (count, components), or (count,) for scalars, the shape h5py users and
+// XDMF expect. Storage is component-major, hence the transpose.
+template <class Value>
+void write_matrix(hid_t group, const std::string& name, hid_t file_type, hid_t memory_type,
+                  std::size_t count, int components, const std::vector<Value>& component_major) {
+  std::vector<Value> rows(component_major.size());
+  for (std::size_t i = 0; i < count; ++i) {
+    for (int c = 0; c < components; ++c) {
+      rows[i * static_cast<std::size_t>(components) + static_cast<std::size_t>(c)] =
+          component_major[static_cast<std::size_t>(c) * count + i];
+    }
+  }
+  const std::array<hsize_t, 2> dims{count, static_cast<hsize_t>(components)};
+  const Handle space(H5Screate_simple(components == 1 ? 1 : 2, dims.data(), nullptr), H5Sclose,
+                     "cannot create a dataspace for " + name);
+  const Handle dataset(
+      H5Dcreate2(group, name.c_str(), file_type, space.id(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+      H5Dclose, "cannot create dataset " + name);
+  if (!rows.empty() &&
+      H5Dwrite(dataset.id(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, rows.data()) < 0) {
+    throw Hdf5Error("cannot write dataset " + name);
+  }
+}
+
+std::vector<std::int64_t> read_raw_matrix(hid_t group, const std::string& name, std::size_t count,
+                                          int components) {
+  const Handle dataset(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose,
+                       "missing dataset " + name);
+  const Handle space(H5Dget_space(dataset.id()), H5Sclose, "unreadable dataset " + name);
+  const int rank = H5Sget_simple_extent_ndims(space.id());
+  std::array<hsize_t, 2> dims{0, 0};
+  if (rank != (components == 1 ? 1 : 2) ||
+      H5Sget_simple_extent_dims(space.id(), dims.data(), nullptr) < 0 || dims[0] != count ||
+      (rank == 2 && dims[1] != static_cast<hsize_t>(components))) {
+    throw Hdf5Error("dataset " + name + " does not have the declared shape");
+  }
+  std::vector<std::int64_t> rows(count * static_cast<std::size_t>(components));
+  if (!rows.empty() &&
+      H5Dread(dataset.id(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, rows.data()) < 0) {
+    throw Hdf5Error("cannot read dataset " + name + " (truncated file?)");
+  }
+  std::vector<std::int64_t> component_major(rows.size());
+  for (std::size_t i = 0; i < count; ++i) {
+    for (int c = 0; c < components; ++c) {
+      component_major[static_cast<std::size_t>(c) * count + i] =
+          rows[i * static_cast<std::size_t>(components) + static_cast<std::size_t>(c)];
+    }
+  }
+  return component_major;
+}
+
+void write_state_field(hid_t file, const FieldSnapshot& field) {
+  const Handle state = open_or_create_group(file, "state");
+  const Handle set = open_or_create_group(state.id(), field.info.particle_set);
+  write_matrix(set.id(), field.info.name, H5T_STD_I64LE, H5T_NATIVE_INT64, field.count,
+               field.info.components, field.bits);
+  const Handle dataset(H5Dopen2(set.id(), field.info.name.c_str(), H5P_DEFAULT), H5Dclose,
+                       "cannot reopen dataset " + field.info.name);
+  hdf5::write_string_attribute(dataset.id(), "unit", field.info.unit);
+  hdf5::write_string_attribute(dataset.id(), "parity",
+                               field.info.parity == Parity::odd ? "odd" : "even");
+  hdf5::write_int_attribute(dataset.id(), "components", field.info.components);
+  hdf5::write_int_attribute(dataset.id(), "scale_exponent", field.info.scale.exponent());
+  hdf5::write_int_attribute(dataset.id(), "evolved", field.info.evolved ? 1 : 0);
+  hdf5::write_string_attribute(dataset.id(), "raw_kind",
+                               field.kind == RawKind::fixed_point ? "fixed_point" : "ieee_double");
+}
+
+void write_view(hid_t file, const ParticleView& view, std::size_t count) {
+  const Handle particles = open_or_create_group(file, "particles");
+  const Handle set = open_or_create_group(particles.id(), view.particle_set);
+  write_matrix(set.id(), view.name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, count, view.components,
+               view.values);
+  const Handle dataset(H5Dopen2(set.id(), view.name.c_str(), H5P_DEFAULT), H5Dclose,
+                       "cannot reopen dataset " + view.name);
+  hdf5::write_string_attribute(dataset.id(), "unit", view.unit);
+}
+
+// Physical values of a state field, for people.
+ParticleView view_of_field(const FieldSnapshot& field) {
+  ParticleView view{
+      field.info.particle_set, field.info.name, field.info.unit, field.info.components, {}};
+  view.values.reserve(field.bits.size());
+  for (int c = 0; c < field.info.components; ++c) {
+    for (std::size_t i = 0; i < field.count; ++i) {
+      view.values.push_back(field.real(c, i));
+    }
+  }
+  return view;
+}
+
+void write_metadata(hid_t file, const SnapshotMetadata& m, const StateSnapshot& state) {
+  using namespace hdf5;
+  write_string_attribute(file, "format", snapshot_format);
+  write_int_attribute(file, "format_version", snapshot_format_version);
+  write_string_attribute(file, "model", m.model);
+  write_int_attribute(file, "dimension", m.dimension);
+  write_string_attribute(file, "arithmetic", std::string(to_string(m.arithmetic)));
+  write_string_attribute(file, "case_name", m.case_name);
+  write_string_attribute(file, "case_source", m.case_source);
+  write_string_attribute(file, "case_text", m.case_text);
+  write_strings_attribute(file, "overrides", m.overrides);
+  write_int_attribute(file, "step", m.step);
+  write_double_attribute(file, "time", m.time);
+  write_double_attribute(file, "dt", m.dt);
+  write_string_attribute(file, "state_hash", m.state_hash);
+  std::vector<std::string> order;
+  for (const FieldSnapshot& field : state.fields) {
+    order.push_back(field.info.particle_set + "/" + field.info.name);
+  }
+  write_strings_attribute(file, "field_order", order);
+  write_string_attribute(file, "code_version", m.code_version);
+  write_string_attribute(file, "git_commit", m.git_commit);
+  write_string_attribute(file, "build_type", m.build_type);
+  write_string_attribute(file, "build_flags", m.build_flags);
+}
+
+SnapshotMetadata read_metadata(hid_t file) {
+  using namespace hdf5;
+  SnapshotMetadata m;
+  m.model = read_string_attribute(file, "model");
+  m.dimension = static_cast<int>(read_int_attribute(file, "dimension"));
+  const std::string arithmetic = read_string_attribute(file, "arithmetic");
+  if (arithmetic != "fixed" && arithmetic != "float") {
+    throw Hdf5Error("unknown arithmetic '" + arithmetic + "'");
+  }
+  m.arithmetic = arithmetic == "fixed" ? Arithmetic::fixed : Arithmetic::floating;
+  m.case_name = read_string_attribute(file, "case_name");
+  m.case_source = read_string_attribute(file, "case_source");
+  m.case_text = read_string_attribute(file, "case_text");
+  m.overrides = read_strings_attribute(file, "overrides");
+  m.step = read_int_attribute(file, "step");
+  m.time = read_double_attribute(file, "time");
+  m.dt = read_double_attribute(file, "dt");
+  m.state_hash = read_string_attribute(file, "state_hash");
+  m.code_version = read_string_attribute(file, "code_version");
+  m.git_commit = read_string_attribute(file, "git_commit");
+  m.build_type = read_string_attribute(file, "build_type");
+  m.build_flags = read_string_attribute(file, "build_flags");
+  return m;
+}
+
+FieldSnapshot read_state_field(hid_t file, const std::string& set_and_name) {
+  const std::size_t slash = set_and_name.find('/');
+  if (slash == std::string::npos) {
+    throw Hdf5Error("malformed field name '" + set_and_name + "'");
+  }
+  FieldSnapshot field;
+  field.info.particle_set = set_and_name.substr(0, slash);
+  field.info.name = set_and_name.substr(slash + 1);
+  const std::string path = "/state/" + set_and_name;
+  const Handle dataset(H5Dopen2(file, path.c_str(), H5P_DEFAULT), H5Dclose,
+                       "missing dataset " + path);
+  field.info.unit = hdf5::read_string_attribute(dataset.id(), "unit");
+  const std::string parity = hdf5::read_string_attribute(dataset.id(), "parity");
+  if (parity != "odd" && parity != "even") {
+    throw Hdf5Error(path + ": parity '" + parity + "'");
+  }
+  field.info.parity = parity == "odd" ? Parity::odd : Parity::even;
+  const long long components = hdf5::read_int_attribute(dataset.id(), "components");
+  if (components < 1 || components > 9) {
+    throw Hdf5Error(path + ": " + std::to_string(components) + " components");
+  }
+  field.info.components = static_cast<int>(components);
+  const long long exponent = hdf5::read_int_attribute(dataset.id(), "scale_exponent");
+  if (exponent < -1100 || exponent > 1100) {
+    throw Hdf5Error(path + ": scale exponent " + std::to_string(exponent));
+  }
+  field.info.scale = fixedpoint::Scale(static_cast<int>(exponent));
+  field.info.evolved = hdf5::read_int_attribute(dataset.id(), "evolved") != 0;
+  const std::string raw_kind = hdf5::read_string_attribute(dataset.id(), "raw_kind");
+  if (raw_kind != "fixed_point" && raw_kind != "ieee_double") {
+    throw Hdf5Error(path + ": raw kind '" + raw_kind + "'");
+  }
+  field.kind = raw_kind == "fixed_point" ? RawKind::fixed_point : RawKind::ieee_double;
+  const Handle space(H5Dget_space(dataset.id()), H5Sclose, "unreadable dataset " + path);
+  hsize_t dims[2] = {0, 0};
+  if (H5Sget_simple_extent_ndims(space.id()) < 1 ||
+      H5Sget_simple_extent_dims(space.id(), dims, nullptr) < 0) {
+    throw Hdf5Error("unreadable dataset " + path);
+  }
+  field.count = static_cast<std::size_t>(dims[0]);
+  const Handle set(H5Gopen2(file, ("/state/" + field.info.particle_set).c_str(), H5P_DEFAULT),
+                   H5Gclose, "missing group /state/" + field.info.particle_set);
+  field.bits = read_raw_matrix(set.id(), field.info.name, field.count, field.info.components);
+  return field;
+}
+
+} // namespace
+
+std::string view_dataset(const std::string& particle_set, const std::string& name) {
+  return "/particles/" + particle_set + "/" + name;
+}
+
+bool is_hdf5_file(const std::filesystem::path& path) {
+  static constexpr char signature[8] = {'\x89', 'H', 'D', 'F', '\r', '\n', '\x1a', '\n'};
+  std::ifstream in(path, std::ios::binary);
+  char head[8] = {};
+  return in.read(head, 8) && std::equal(head, head + 8, signature);
+}
+
+void write_snapshot(const std::filesystem::path& path, const SnapshotMetadata& metadata,
+                    const StateSnapshot& state, const std::vector<ParticleView>& views) {
+  hdf5::silence_library_errors();
+  std::filesystem::path temporary = path;
+  temporary += ".tmp";
+  try {
+    Handle file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
+                "cannot create " + temporary.string());
+    write_metadata(file.id(), metadata, state);
+    std::map<std::string, std::size_t> counts;
+    for (const FieldSnapshot& field : state.fields) {
+      write_state_field(file.id(), field);
+      write_view(file.id(), view_of_field(field), field.count);
+      counts[field.info.particle_set] = field.count;
+    }
+    for (const ParticleView& view : views) {
+      const auto count = counts.find(view.particle_set);
+      if (count == counts.end() ||
+          view.values.size() != count->second * static_cast<std::size_t>(view.components)) {
+        throw Hdf5Error("view " + view.particle_set + "/" + view.name +
+                        " does not match its particle set");
+      }
+      write_view(file.id(), view, count->second);
+    }
+    file.close("cannot finish writing " + temporary.string());
+  } catch (const Hdf5Error& error) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw SnapshotError("writing snapshot " + path.string() + ": " + error.what());
+  }
+  std::filesystem::rename(temporary, path);
+}
+
+Snapshot read_snapshot(const std::filesystem::path& path) {
+  hdf5::silence_library_errors();
+  const std::string name = path.string();
+  if (!std::filesystem::exists(path)) {
+    throw SnapshotError(name + ": no such snapshot file");
+  }
+  if (!is_hdf5_file(path)) {
+    throw SnapshotError(name + ": not an HDF5 file (a revsph snapshot is one)");
+  }
+  try {
+    Handle file(H5Fopen(name.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose,
+                "cannot open the file (truncated or damaged HDF5)");
+    if (!hdf5::has_attribute(file.id(), "format") ||
+        hdf5::read_string_attribute(file.id(), "format") != snapshot_format) {
+      throw SnapshotError(name + ": not a revsph snapshot (no format attribute '" +
+                          std::string(snapshot_format) + "')");
+    }
+    const long long version = hdf5::read_int_attribute(file.id(), "format_version");
+    if (version != snapshot_format_version) {
+      throw SnapshotError(name + ": written in snapshot format version " + std::to_string(version) +
+                          "; this revsph reads version " + std::to_string(snapshot_format_version));
+    }
+    Snapshot snapshot;
+    snapshot.metadata = read_metadata(file.id());
+    std::set<std::string> seen;
+    for (const std::string& field : hdf5::read_strings_attribute(file.id(), "field_order")) {
+      if (!seen.insert(field).second) {
+        throw Hdf5Error("field " + field + " listed twice");
+      }
+      snapshot.state.fields.push_back(read_state_field(file.id(), field));
+    }
+    return snapshot;
+  } catch (const Hdf5Error& error) {
+    throw SnapshotError(name + ": " + error.what());
+  }
+}
+
+} // namespace revsph

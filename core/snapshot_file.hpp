@@ -1,0 +1,75 @@
+#pragma once
+// Snapshot files (HDF5): the exact state of a simulation plus physical views for people.
+//
+// Layout (format "revsph-snapshot", version 1; see README "Snapshots"):
+//   /                        attributes: format, format_version, model, dimension, arithmetic,
+//                            case_name, case_source, case_text, overrides, step, time, dt,
+//                            state_hash, field_order, code_version, git_commit, build_type,
+//                            build_flags
+//   /state/SET/VARIABLE      int64 (particles, components) or (particles,): the raw integers
+//                            (IEEE bit patterns for float state); attributes unit, parity,
+//                            components, scale_exponent, evolved, raw_kind
+//   /particles/SET/NAME      float64 (particles, components) or (particles,): physical values of
+//                            every state variable and of the model's derived views; attribute unit
+// The layout follows each model's state declaration; nothing in here is written per model.
+
+#include "core/arithmetic.hpp"
+#include "core/particle_view.hpp"
+#include "core/state_snapshot.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace revsph {
+
+inline constexpr const char* snapshot_format = "revsph-snapshot";
+inline constexpr long long snapshot_format_version = 1;
+
+class SnapshotError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+struct SnapshotMetadata {
+  std::string model;
+  int dimension = 2;
+  Arithmetic arithmetic = Arithmetic::fixed;
+  std::string case_name;
+  std::string case_source;            // file name or built-in name it came from
+  std::string case_text;              // the case file as written
+  std::vector<std::string> overrides; // --set key=value applied to it
+  std::int64_t step = 0;
+  double time = 0.0;
+  double dt = 0.0;
+  std::string state_hash;
+  std::string code_version;
+  std::string git_commit;
+  std::string build_type;
+  std::string build_flags;
+};
+
+struct Snapshot {
+  SnapshotMetadata metadata;
+  StateSnapshot state;
+};
+
+// Writes `path` atomically: the file is written as `path` + ".tmp" and renamed into place, so a
+// process killed while writing never leaves a partial file under the final name.
+void write_snapshot(const std::filesystem::path& path, const SnapshotMetadata& metadata,
+                    const StateSnapshot& state, const std::vector<ParticleView>& views);
+
+// Reads metadata and exact state. Throws SnapshotError, naming the file and what is wrong, for a
+// missing, truncated or foreign file and for an incompatible format version. The state is not
+// checked against the recorded hash here; verify/snapshot_check.hpp does that.
+Snapshot read_snapshot(const std::filesystem::path& path);
+
+// True if the file starts with the HDF5 signature.
+bool is_hdf5_file(const std::filesystem::path& path);
+
+// The physical-view dataset path of a set's variable: "/particles/SET/NAME".
+std::string view_dataset(const std::string& particle_set, const std::string& name);
+
+} // namespace revsph

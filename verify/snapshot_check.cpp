@@ -1,0 +1,16 @@
+#include "verify/snapshot_check.hpp"
+
+#include "verify/state_hash.hpp"
+
+namespace revsph {
+
+Snapshot read_checked_snapshot(const std::filesystem::path& path) {
+  Snapshot snapshot = read_snapshot(path);
+  if (state_hash(snapshot.state) != snapshot.metadata.state_hash) {
+    throw SnapshotError(path.string() +
+                        ": the state does not match the hash recorded in the file (damaged)");
+  }
+  return snapshot;
+}
+
+} // namespace revsph
