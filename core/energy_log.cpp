@@ -6,7 +6,8 @@
 
 namespace revsph {
 
-EnergyLog::EnergyLog(std::optional<std::string> csv_path) {
+EnergyLog::EnergyLog(std::optional<std::string> csv_path, std::optional<double> reference_total)
+    : initial_total_(reference_total) {
   if (csv_path) {
     csv_.emplace(*csv_path);
     if (!*csv_) {
@@ -18,8 +19,11 @@ EnergyLog::EnergyLog(std::optional<std::string> csv_path) {
 
 void EnergyLog::record(std::int64_t step, double time, const EnergyBudget& budget) {
   const double total = budget.total();
-  if (!initial_total_) {
-    initial_total_ = total;
+  if (!recorded_) {
+    recorded_ = true;
+    if (!initial_total_) {
+      initial_total_ = total;
+    }
     if (csv_) {
       *csv_ << "step,time";
       for (const EnergyTerm& term : budget.terms) {

@@ -1,6 +1,7 @@
 #pragma once
 // energy.csv: one row per output step with every energy term, the total and the relative error
-// |E(t) - E(0)| / |E(0)| against the first row.
+// |E(t) - E(0)| / |E(0)|, E(0) being the first row's total or, for a restarted run, the total
+// at the start of the original run.
 
 #include "core/energy.hpp"
 
@@ -14,11 +15,12 @@ namespace revsph {
 class EnergyLog {
 public:
   // Writes to `csv_path` if given; always keeps the error statistics.
-  explicit EnergyLog(std::optional<std::string> csv_path);
+  explicit EnergyLog(std::optional<std::string> csv_path,
+                     std::optional<double> reference_total = std::nullopt);
 
   void record(std::int64_t step, double time, const EnergyBudget& budget);
 
-  bool empty() const { return !initial_total_.has_value(); }
+  bool empty() const { return !recorded_; }
   double initial_total() const { return initial_total_.value_or(0.0); }
   double last_relative_error() const { return last_relative_error_; }
   double max_relative_error() const { return max_relative_error_; }
@@ -27,6 +29,7 @@ public:
 private:
   std::optional<std::ofstream> csv_;
   std::optional<double> initial_total_;
+  bool recorded_ = false;
   double last_relative_error_ = 0.0;
   double max_relative_error_ = 0.0;
   EnergyBudget last_;

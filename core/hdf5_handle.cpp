@@ -57,6 +57,17 @@ void write_string_attribute(hid_t object, const std::string& name, const std::st
 void write_strings_attribute(hid_t object, const std::string& name,
                              const std::vector<std::string>& values) {
   const Handle type = string_type();
+  if (values.empty()) {
+    // HDF5 cannot write a zero-length simple dataspace; an empty list is a null dataspace.
+    const Handle space(H5Screate(H5S_NULL), H5Sclose, "cannot create a dataspace");
+    if (H5Aexists(object, name.c_str()) > 0) {
+      H5Adelete(object, name.c_str());
+    }
+    const Handle attribute(
+        H5Acreate2(object, name.c_str(), type.id(), space.id(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+        "cannot create attribute '" + name + "'");
+    return;
+  }
   const hsize_t size = values.size();
   const Handle space(H5Screate_simple(1, &size, nullptr), H5Sclose, "cannot create a dataspace");
   std::vector<const char*> texts;
@@ -99,6 +110,9 @@ std::string read_string_attribute(hid_t object, const std::string& name) {
 std::vector<std::string> read_strings_attribute(hid_t object, const std::string& name) {
   const Handle attribute = open_attribute(object, name);
   const Handle space(H5Aget_space(attribute.id()), H5Sclose, "unreadable attribute '" + name + "'");
+  if (H5Sget_simple_extent_type(space.id()) == H5S_NULL) {
+    return {};
+  }
   const hssize_t count = H5Sget_simple_extent_npoints(space.id());
   if (count < 0 || H5Sget_simple_extent_ndims(space.id()) != 1) {
     throw Hdf5Error("attribute '" + name + "' is not a list of strings");

@@ -40,6 +40,10 @@ RunSettings read_run_settings(const CaseFile& case_file) {
   if (settings.energy_every < 1) {
     case_file.fail("output.energy_every", "must be >= 1");
   }
+  settings.snapshot_every = case_file.integer_or("output.snapshot_every", 0);
+  if (settings.snapshot_every < 0) {
+    case_file.fail("output.snapshot_every", "must be >= 0 (0: only at the start and the end)");
+  }
   if (case_file.has("output.progress_interval")) {
     settings.progress_interval = case_file.positive_number("output.progress_interval");
   }

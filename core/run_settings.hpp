@@ -6,6 +6,7 @@
 //   steps = 1000                or t_end = 1.0 (s): how far `revsph run` goes by default
 //   [output]
 //   energy_every = 100          steps between rows of energy.csv
+//   snapshot_every = 1000       steps between snapshots (0: only at the start and the end)
 //   progress_interval = 10.0    seconds between progress lines when not on a terminal
 
 #include "core/case_file.hpp"
@@ -29,6 +30,7 @@ struct RunSettings {
   std::string name;
   RunLength length;
   std::int64_t energy_every = 100;
+  std::int64_t snapshot_every = 0;
   double progress_interval = 10.0;
 };
 

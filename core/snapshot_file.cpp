@@ -4,7 +4,6 @@
 
 #include <array>
 #include <fstream>
-#include <map>
 #include <set>
 
 namespace revsph {
@@ -131,6 +130,9 @@ void write_metadata(hid_t file, const SnapshotMetadata& m, const StateSnapshot& 
   write_int_attribute(file, "step", m.step);
   write_double_attribute(file, "time", m.time);
   write_double_attribute(file, "dt", m.dt);
+  if (m.reference_energy) {
+    write_double_attribute(file, "reference_energy", *m.reference_energy);
+  }
   write_string_attribute(file, "state_hash", m.state_hash);
   std::vector<std::string> order;
   for (const FieldSnapshot& field : state.fields) {
@@ -160,6 +162,9 @@ SnapshotMetadata read_metadata(hid_t file) {
   m.step = read_int_attribute(file, "step");
   m.time = read_double_attribute(file, "time");
   m.dt = read_double_attribute(file, "dt");
+  if (has_attribute(file, "reference_energy")) {
+    m.reference_energy = read_double_attribute(file, "reference_energy");
+  }
   m.state_hash = read_string_attribute(file, "state_hash");
   m.code_version = read_string_attribute(file, "code_version");
   m.git_commit = read_string_attribute(file, "git_commit");
@@ -227,29 +232,47 @@ bool is_hdf5_file(const std::filesystem::path& path) {
   return in.read(head, 8) && std::equal(head, head + 8, signature);
 }
 
-void write_snapshot(const std::filesystem::path& path, const SnapshotMetadata& metadata,
-                    const StateSnapshot& state, const std::vector<ParticleView>& views) {
+std::vector<XdmfParticleSet> write_snapshot(const std::filesystem::path& path,
+                                            const SnapshotMetadata& metadata,
+                                            const StateSnapshot& state,
+                                            const std::vector<ParticleView>& views) {
   hdf5::silence_library_errors();
   std::filesystem::path temporary = path;
   temporary += ".tmp";
+  std::vector<XdmfParticleSet> sets;
+  auto set_of = [&](const std::string& name, std::size_t count) -> XdmfParticleSet& {
+    for (XdmfParticleSet& set : sets) {
+      if (set.name == name) {
+        return set;
+      }
+    }
+    return sets.emplace_back(XdmfParticleSet{name, count, {}});
+  };
   try {
     Handle file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
                 "cannot create " + temporary.string());
     write_metadata(file.id(), metadata, state);
-    std::map<std::string, std::size_t> counts;
     for (const FieldSnapshot& field : state.fields) {
       write_state_field(file.id(), field);
       write_view(file.id(), view_of_field(field), field.count);
-      counts[field.info.particle_set] = field.count;
+      set_of(field.info.particle_set, field.count)
+          .fields.push_back({field.info.name, field.info.components});
     }
     for (const ParticleView& view : views) {
-      const auto count = counts.find(view.particle_set);
-      if (count == counts.end() ||
-          view.values.size() != count->second * static_cast<std::size_t>(view.components)) {
+      XdmfParticleSet& set = set_of(view.particle_set, 0);
+      if (view.values.size() != set.count * static_cast<std::size_t>(view.components)) {
         throw Hdf5Error("view " + view.particle_set + "/" + view.name +
                         " does not match its particle set");
       }
-      write_view(file.id(), view, count->second);
+      write_view(file.id(), view, set.count);
+      set.fields.push_back({view.name, view.components});
+    }
+    for (std::size_t k = 0; k < sets.size(); ++k) {
+      XdmfParticleSet& set = sets[k];
+      const ParticleView kind{set.name, "kind", "1", 1,
+                              std::vector<double>(set.count, static_cast<double>(k))};
+      write_view(file.id(), kind, set.count);
+      set.fields.push_back({"kind", 1});
     }
     file.close("cannot finish writing " + temporary.string());
   } catch (const Hdf5Error& error) {
@@ -258,6 +281,7 @@ void write_snapshot(const std::filesystem::path& path, const SnapshotMetadata& m
     throw SnapshotError("writing snapshot " + path.string() + ": " + error.what());
   }
   std::filesystem::rename(temporary, path);
+  return sets;
 }
 
 Snapshot read_snapshot(const std::filesystem::path& path) {

@@ -4,21 +4,25 @@
 // Layout (format "revsph-snapshot", version 1; see README "Snapshots"):
 //   /                        attributes: format, format_version, model, dimension, arithmetic,
 //                            case_name, case_source, case_text, overrides, step, time, dt,
-//                            state_hash, field_order, code_version, git_commit, build_type,
-//                            build_flags
+//                            reference_energy (if known), state_hash, field_order, code_version,
+//                            git_commit, build_type, build_flags
 //   /state/SET/VARIABLE      int64 (particles, components) or (particles,): the raw integers
 //                            (IEEE bit patterns for float state); attributes unit, parity,
 //                            components, scale_exponent, evolved, raw_kind
 //   /particles/SET/NAME      float64 (particles, components) or (particles,): physical values of
 //                            every state variable and of the model's derived views; attribute unit
+//   /particles/SET/kind      float64 (particles,): the index of SET in the declaration order, so
+//                            that merged point sets can be coloured by particle kind
 // The layout follows each model's state declaration; nothing in here is written per model.
 
 #include "core/arithmetic.hpp"
 #include "core/particle_view.hpp"
 #include "core/state_snapshot.hpp"
+#include "core/xdmf.hpp"
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -44,6 +48,9 @@ struct SnapshotMetadata {
   std::int64_t step = 0;
   double time = 0.0;
   double dt = 0.0;
+  // Total energy at the first step of the run this state descends from (through restarts), so
+  // that a restarted run reports its energy error against the original E(0).
+  std::optional<double> reference_energy;
   std::string state_hash;
   std::string code_version;
   std::string git_commit;
@@ -57,9 +64,12 @@ struct Snapshot {
 };
 
 // Writes `path` atomically: the file is written as `path` + ".tmp" and renamed into place, so a
-// process killed while writing never leaves a partial file under the final name.
-void write_snapshot(const std::filesystem::path& path, const SnapshotMetadata& metadata,
-                    const StateSnapshot& state, const std::vector<ParticleView>& views);
+// process killed while writing never leaves a partial file under the final name. Returns the
+// particle sets and view datasets written (what an XDMF description of the file lists).
+std::vector<XdmfParticleSet> write_snapshot(const std::filesystem::path& path,
+                                            const SnapshotMetadata& metadata,
+                                            const StateSnapshot& state,
+                                            const std::vector<ParticleView>& views);
 
 // Reads metadata and exact state. Throws SnapshotError, naming the file and what is wrong, for a
 // missing, truncated or foreign file and for an incompatible format version. The state is not

@@ -1,6 +1,8 @@
 #include "core/progress.hpp"
 #include "core/run_loop.hpp"
+#include "core/snapshot_file.hpp"
 #include "tools/revsph/commands.hpp"
+#include "verify/snapshot_check.hpp"
 #include "verify/state_hash.hpp"
 
 #include <iostream>
@@ -8,12 +10,27 @@
 namespace revsph::cli {
 
 int hash_command(const HashOptions& options) {
-  apply_thread_count(options.case_options.threads);
-  LoadedCase loaded = load_simulation(options.case_options);
+  CaseOptions case_options = options.case_options;
+  const bool snapshot_given =
+      is_hdf5_file(case_options.case_path) || case_options.case_path.ends_with(".h5");
+  if (snapshot_given && !options.steps && !options.t_end) {
+    // The hash of the snapshot itself (checked against the one recorded in it).
+    std::cout << state_hash(read_checked_snapshot(case_options.case_path).state) << "\n";
+    return success;
+  }
+  if (snapshot_given) {
+    case_options.from_snapshot = case_options.case_path;
+    case_options.case_given = false;
+  } else if (!options.steps && !options.t_end) {
+    print_error("hash of a case needs --steps N or --t-end T");
+    return bad_input;
+  }
+  apply_thread_count(case_options.threads);
+  LoadedCase loaded = load_simulation(case_options);
   Simulation& simulation = *loaded.simulation;
   const std::int64_t steps = resolve_steps(loaded, options.steps, options.t_end, true);
   // Progress on stderr: stdout carries only the hash, for scripts.
-  ProgressReporter progress(stderr, "hash", steps, simulation.info().dt,
+  ProgressReporter progress(stderr, "hash", simulation.steps_taken() + steps, simulation.info().dt,
                             loaded.settings.progress_interval);
   RunHooks hooks;
   hooks.progress = steps > 0 ? &progress : nullptr;

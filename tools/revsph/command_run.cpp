@@ -3,10 +3,12 @@
 #include "core/run_loop.hpp"
 #include "core/threads.hpp"
 #include "tools/revsph/commands.hpp"
+#include "tools/revsph/run_output.hpp"
 #include "tools/revsph/summary.hpp"
 #include "verify/state_hash.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 
@@ -22,6 +24,19 @@ std::string describe_particles(const SimulationInfo& info) {
   return text + " particles";
 }
 
+void print_header(const LoadedCase& loaded, std::int64_t steps) {
+  const Simulation& simulation = *loaded.simulation;
+  const SimulationInfo& info = simulation.info();
+  std::cout << "revsph run: " << info.case_name << " (" << info.model << ", " << info.dimension
+            << "D, " << to_string(info.arithmetic) << "-point arithmetic), "
+            << describe_particles(info) << ", dt = " << info.dt << " s, " << steps << " steps";
+  if (loaded.from_snapshot) {
+    std::cout << " from step " << simulation.steps_taken() << " (t = " << simulation.time()
+              << " s)";
+  }
+  std::cout << ", " << thread_count() << (thread_count() == 1 ? " thread\n" : " threads\n");
+}
+
 } // namespace
 
 int run_command(const RunOptions& options) {
@@ -29,67 +44,84 @@ int run_command(const RunOptions& options) {
   LoadedCase loaded = load_simulation(options.case_options);
   Simulation& simulation = *loaded.simulation;
   const std::int64_t steps = resolve_steps(loaded, options.steps, options.t_end, false);
-  const std::filesystem::path out = options.out_dir.empty()
-                                        ? std::filesystem::path("out") / loaded.settings.name
-                                        : std::filesystem::path(options.out_dir);
-  if (std::filesystem::exists(out) && !std::filesystem::is_directory(out)) {
-    throw CaseError(loaded.case_file.source_name(), "--out",
-                    out.string() + " exists and is not a directory");
-  }
-  if (std::filesystem::exists(out) && !std::filesystem::is_empty(out) && !options.force) {
-    throw CaseError(loaded.case_file.source_name(), "--out",
-                    "the output directory " + out.string() +
-                        " exists and is not empty; choose another with --out or overwrite it "
-                        "with --force");
-  }
-  std::filesystem::create_directories(out);
+  const std::filesystem::path directory = options.out_dir.empty()
+                                              ? std::filesystem::path("out") / loaded.settings.name
+                                              : std::filesystem::path(options.out_dir);
+  // Every check is done before the first file is written.
+  RunOutput::check_directory(directory, options.force, loaded.case_file.source_name());
 
-  const SimulationInfo& info = simulation.info();
-  std::cout << "revsph run: " << info.case_name << " (" << info.model << ", " << info.dimension
-            << "D, " << to_string(info.arithmetic) << "-point arithmetic), "
-            << describe_particles(info) << ", dt = " << info.dt << " s, " << steps << " steps, "
-            << thread_count() << (thread_count() == 1 ? " thread\n" : " threads\n");
-
-  EnergyLog energy((out / "energy.csv").string());
-  ProgressReporter progress(stdout, "run", simulation.steps_taken() + steps, info.dt,
+  print_header(loaded, steps);
+  const std::optional<double> reference_energy =
+      loaded.from_snapshot ? loaded.from_snapshot->metadata.reference_energy
+                           : std::optional<double>(simulation.energy().total());
+  RunOutput output(directory, run_metadata(simulation, loaded.case_file, reference_energy),
+                   loaded.settings.snapshot_every);
+  EnergyLog energy(output.energy_csv().string(), reference_energy);
+  ProgressReporter progress(stdout, "run", simulation.steps_taken() + steps, simulation.info().dt,
                             loaded.settings.progress_interval);
-  RunHooks hooks;
-  hooks.energy_log = &energy;
-  hooks.energy_every = loaded.settings.energy_every;
-  hooks.progress = &progress;
 
   RunSummary summary;
   summary.case_source = loaded.case_file.source_name();
   summary.overrides = loaded.case_file.overrides();
+  if (loaded.from_snapshot) {
+    summary.from_snapshot = options.case_options.from_snapshot;
+  }
+  summary.start_step = simulation.steps_taken();
   summary.steps_requested = steps;
   summary.threads = thread_count();
   summary.initial_hash = state_hash(simulation.capture_state());
+
+  RunHooks hooks;
+  hooks.energy_log = &energy;
+  hooks.energy_every = loaded.settings.energy_every;
+  hooks.progress = &progress;
+  hooks.after_step = [&](Simulation& s, std::int64_t) {
+    if (output.snapshot_due(s.steps_taken())) {
+      output.write_snapshot(s);
+    }
+  };
   const auto start = std::chrono::steady_clock::now();
   int status = success;
   try {
+    output.write_snapshot(simulation);
     run_steps(simulation, steps, hooks);
+    output.write_snapshot(simulation);
   } catch (const SimulationFault& fault) {
+    // The state is left half-updated by the failed step: no snapshot of it; the last one
+    // written stays the last good state.
     progress.finish(simulation.steps_taken());
     summary.failure = fault.what();
     print_error(std::string("the run stopped: ") + fault.what());
+    status = simulation_failed;
+  } catch (const SnapshotError& error) {
+    summary.failure = error.what();
+    print_error(error.what());
     status = simulation_failed;
   }
   summary.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary.final_hash = state_hash(simulation.capture_state());
-  write_summary(out / "summary.json", simulation, summary, energy);
+  summary.snapshots_written = output.snapshot_count();
+  if (const auto last = output.last_snapshot()) {
+    summary.last_snapshot = last->string();
+  }
+  write_summary(output.summary_json(), simulation, summary, energy);
 
-  std::printf("energy: max |E(t) - E(0)| / |E(0)| = %.3e over %lld steps\n",
-              energy.max_relative_error(), static_cast<long long>(simulation.steps_taken()));
+  const double steps_done = static_cast<double>(simulation.steps_taken() - summary.start_step);
+  std::printf("energy: max |E(t) - E(0)| / |E(0)| = %.3e\n", energy.max_relative_error());
   std::printf("speed: %.3g particle-steps/s (%.2f s wall)\n",
               summary.wall_seconds > 0
-                  ? static_cast<double>(info.moving_particle_count()) *
-                        static_cast<double>(simulation.steps_taken()) / summary.wall_seconds
+                  ? static_cast<double>(simulation.info().moving_particle_count()) * steps_done /
+                        summary.wall_seconds
                   : 0.0,
               summary.wall_seconds);
   std::cout << "state hash: " << summary.final_hash << "\n";
-  std::cout << "wrote " << (out / "energy.csv").string() << " and "
-            << (out / "summary.json").string() << "\n";
+  std::cout << "wrote " << output.directory().string() << "/: energy.csv, summary.json, run.xdmf, "
+            << output.snapshot_count() << " snapshots";
+  if (summary.last_snapshot) {
+    std::cout << " (last: " << *summary.last_snapshot << ")";
+  }
+  std::cout << "\n";
   return status;
 }
 

@@ -34,5 +34,7 @@ int run_command(const RunOptions& options);
 int verify_command(const VerifyCommandOptions& options);
 int hash_command(const HashOptions& options);
 int cases_command(const std::string& name);
+// Bit-for-bit comparison of two snapshots: 0 identical, 1 different, 2 not comparable.
+int diff_command(const std::string& first, const std::string& second);
 
 } // namespace revsph::cli

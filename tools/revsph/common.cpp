@@ -1,14 +1,17 @@
 #include "tools/revsph/common.hpp"
 
 #include "core/threads.hpp"
+#include "verify/snapshot_check.hpp"
 
+#include <cmath>
 #include <iostream>
 
 namespace revsph::cli {
 
-LoadedCase load_simulation(const CaseOptions& options) {
-  CaseFile case_file = load_case(options.case_path);
-  for (const std::string& assignment : options.overrides) {
+namespace {
+
+void apply_overrides(CaseFile& case_file, const std::vector<std::string>& overrides) {
+  for (const std::string& assignment : overrides) {
     const std::size_t equals = assignment.find('=');
     if (equals == std::string::npos || equals == 0) {
       throw CaseError(case_file.source_name(), assignment,
@@ -16,42 +19,97 @@ LoadedCase load_simulation(const CaseOptions& options) {
     }
     case_file.set(assignment.substr(0, equals), assignment.substr(equals + 1));
   }
+}
+
+LoadedCase build(CaseFile case_file, Arithmetic arithmetic) {
+  SimulationOptions simulation_options;
+  simulation_options.arithmetic = arithmetic;
+  RunSettings settings = read_run_settings(case_file);
+  std::unique_ptr<Simulation> simulation = create_simulation(case_file, simulation_options);
+  case_file.require_no_unknown_keys();
+  return {std::move(case_file), std::move(settings), std::move(simulation), std::nullopt};
+}
+
+LoadedCase load_from_snapshot(const CaseOptions& options) {
+  Snapshot snapshot = read_checked_snapshot(options.from_snapshot);
+  const SnapshotMetadata& metadata = snapshot.metadata;
+  if (options.arithmetic_given &&
+      options.arithmetic != std::string(to_string(metadata.arithmetic))) {
+    throw SnapshotError(options.from_snapshot + ": the snapshot holds " +
+                        std::string(to_string(metadata.arithmetic)) +
+                        "-point state; --arithmetic " + options.arithmetic + " cannot continue it");
+  }
+  CaseFile case_file = CaseFile::parse(metadata.case_text, metadata.case_source);
+  apply_overrides(case_file, metadata.overrides);
+  apply_overrides(case_file, options.overrides);
+  LoadedCase loaded = build(std::move(case_file), metadata.arithmetic);
+  if (loaded.simulation->info().model != metadata.model) {
+    throw SnapshotError(options.from_snapshot + ": written by model " + metadata.model +
+                        ", but its case builds model " + loaded.simulation->info().model);
+  }
+  try {
+    loaded.simulation->restore_state(snapshot.state);
+  } catch (const std::invalid_argument& mismatch) {
+    throw SnapshotError(options.from_snapshot +
+                        ": does not fit the model its case describes: " + mismatch.what());
+  }
+  loaded.simulation->set_steps_taken(metadata.step);
+  loaded.from_snapshot = std::move(snapshot);
+  return loaded;
+}
+
+} // namespace
+
+LoadedCase load_simulation(const CaseOptions& options) {
+  if (!options.from_snapshot.empty()) {
+    if (options.case_given) {
+      throw CaseError(options.case_path, "--from",
+                      "give either a case or --from SNAPSHOT (a snapshot carries its case)");
+    }
+    return load_from_snapshot(options);
+  }
+  CaseFile case_file = load_case(options.case_path);
+  apply_overrides(case_file, options.overrides);
   if (options.arithmetic != "fixed" && options.arithmetic != "float") {
     throw CaseError(case_file.source_name(), "--arithmetic",
                     "expected fixed or float, got " + options.arithmetic);
   }
-  SimulationOptions simulation_options;
-  simulation_options.arithmetic =
-      options.arithmetic == "fixed" ? Arithmetic::fixed : Arithmetic::floating;
-  RunSettings settings = read_run_settings(case_file);
-  std::unique_ptr<Simulation> simulation = create_simulation(case_file, simulation_options);
-  case_file.require_no_unknown_keys();
-  return {std::move(case_file), std::move(settings), std::move(simulation)};
+  return build(std::move(case_file),
+               options.arithmetic == "fixed" ? Arithmetic::fixed : Arithmetic::floating);
 }
 
 std::int64_t resolve_steps(const LoadedCase& loaded, std::optional<std::int64_t> steps,
                            std::optional<double> t_end, bool required_on_command_line) {
-  RunLength length;
-  if (steps || t_end) {
-    length.steps = steps;
-    length.t_end = t_end;
-  } else if (!required_on_command_line) {
-    length = loaded.settings.length;
+  const std::string& source = loaded.case_file.source_name();
+  const Simulation& simulation = *loaded.simulation;
+  if (steps) {
+    if (*steps < 0) {
+      throw CaseError(source, "--steps", "must be >= 0");
+    }
+    return *steps;
   }
-  if (!length.given()) {
-    throw CaseError(loaded.case_file.source_name(), "run",
+  RunLength end;
+  if (t_end) {
+    if (!(*t_end > 0.0)) {
+      throw CaseError(source, "--t-end", "must be > 0");
+    }
+    end.t_end = t_end;
+  } else if (!required_on_command_line) {
+    end = loaded.settings.length;
+  }
+  if (!end.given()) {
+    throw CaseError(source, "run",
                     required_on_command_line
                         ? "give the number of steps with --steps N or --t-end T"
                         : "no run length: give --steps N or --t-end T, or [run] steps / t_end");
   }
-  if (length.t_end && !(*length.t_end > 0.0)) {
-    throw CaseError(loaded.case_file.source_name(), "--t-end", "must be > 0");
+  const std::int64_t remaining = end.steps_for(simulation.info().dt) - simulation.steps_taken();
+  if (remaining < 0) {
+    throw CaseError(source, t_end ? "--t-end" : "run",
+                    "the run is already at step " + std::to_string(simulation.steps_taken()) +
+                        " (t = " + std::to_string(simulation.time()) + " s), past that end");
   }
-  const std::int64_t n = length.steps_for(loaded.simulation->info().dt);
-  if (n < 0) {
-    throw CaseError(loaded.case_file.source_name(), "--steps", "must be >= 0");
-  }
-  return n;
+  return remaining;
 }
 
 void apply_thread_count(int threads) {

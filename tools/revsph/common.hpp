@@ -1,10 +1,12 @@
 #pragma once
-// What the revsph subcommands share: loading a case with overrides, exit codes, error output.
+// What the revsph subcommands share: loading a case (or a snapshot) with overrides, exit codes,
+// error output.
 
 #include "core/case_file.hpp"
 #include "core/model_registry.hpp"
 #include "core/run_settings.hpp"
 #include "core/simulation.hpp"
+#include "core/snapshot_file.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -17,16 +19,19 @@ namespace revsph::cli {
 // Exit statuses of every subcommand.
 enum ExitStatus : int {
   success = 0,
-  not_reversible = 1, // verify: the state did not return bit for bit
-  bad_input = 2,      // command line or case file
+  not_reversible = 1, // verify: the state did not return bit for bit; diff: the states differ
+  bad_input = 2,      // command line, case file or snapshot file
   simulation_failed = 3,
 };
 
 // Options every simulating subcommand takes.
 struct CaseOptions {
   std::string case_path = "dambreak-small";
+  bool case_given = false;            // CASE was on the command line (not the default)
+  std::string from_snapshot;          // --from: start from this snapshot (its own case) instead
   std::vector<std::string> overrides; // --set key=value
   std::string arithmetic = "fixed";
+  bool arithmetic_given = false;
   int threads = 0; // 0: all hardware threads
 };
 
@@ -34,13 +39,16 @@ struct LoadedCase {
   CaseFile case_file;
   RunSettings settings;
   std::unique_ptr<Simulation> simulation;
+  std::optional<Snapshot> from_snapshot; // metadata and state the run started from
 };
 
-// Loads, overrides, validates (unknown keys included) and builds. Throws CaseError.
+// Loads, overrides, validates (unknown keys included) and builds; from a snapshot, rebuilds its
+// case with its overrides (plus any new ones) and restores its exact state and step.
+// Throws CaseError or SnapshotError.
 LoadedCase load_simulation(const CaseOptions& options);
 
-// The run length from --steps / --t-end, else from the case's [run] table. Throws CaseError if
-// neither says.
+// Steps to take: --steps N (N more), else up to the absolute end given by --t-end T or by the
+// case's [run] steps / t_end. Throws CaseError if nothing says.
 std::int64_t resolve_steps(const LoadedCase& loaded, std::optional<std::int64_t> steps,
                            std::optional<double> t_end, bool required_on_command_line);
 

@@ -1,6 +1,7 @@
 // revsph: the command line of the bitwise-reversible SPH engine.
 
 #include "core/build_info.hpp"
+#include "core/snapshot_file.hpp"
 #include "fixedpoint/conversion.hpp"
 #include "tools/revsph/commands.hpp"
 
@@ -13,35 +14,48 @@ namespace {
 
 using namespace revsph::cli;
 
-void add_case_options(CLI::App& command, CaseOptions& options, bool case_required) {
-  auto* case_option =
-      command.add_option("case", options.case_path,
-                         "case file (TOML), or the name of a built-in case (list: revsph cases)");
-  if (case_required) {
-    case_option->required();
-  } else {
-    case_option->capture_default_str();
-  }
+struct CaseOptionHandles {
+  CLI::Option* case_path = nullptr;
+  CLI::Option* arithmetic = nullptr;
+};
+
+CaseOptionHandles add_case_options(CLI::App& command, CaseOptions& options,
+                                   const std::string& case_help) {
+  CaseOptionHandles handles;
+  handles.case_path = command.add_option("case", options.case_path, case_help);
   command
       .add_option("--set", options.overrides,
                   "override a case-file value: --set discretisation.dr=0.01 (repeatable)")
       ->allow_extra_args(false); // one value per --set, so a following CASE stays positional
-  command
-      .add_option("--arithmetic", options.arithmetic,
-                  "fixed (bitwise reversible, default) or float (the paper's FloPA)")
-      ->check(CLI::IsMember({"fixed", "float"}));
+  handles.arithmetic =
+      command
+          .add_option("--arithmetic", options.arithmetic,
+                      "fixed (bitwise reversible, default) or float (the paper's FloPA)")
+          ->check(CLI::IsMember({"fixed", "float"}));
   command
       .add_option("--threads", options.threads,
                   "number of threads (default: all); results do not depend on it")
       ->check(CLI::PositiveNumber);
+  return handles;
+}
+
+void add_from_option(CLI::App& command, CaseOptions& options) {
+  command.add_option("--from", options.from_snapshot,
+                     "start from this snapshot (its exact state, step and case) instead of a "
+                     "case file");
 }
 
 void add_length_options(CLI::App& command, std::optional<std::int64_t>& steps,
                         std::optional<double>& t_end) {
-  auto* steps_option = command.add_option("--steps", steps, "number of time steps");
-  auto* t_end_option =
-      command.add_option("--t-end", t_end, "simulated time (s), rounded to whole steps");
+  auto* steps_option = command.add_option("--steps", steps, "number of time steps to take");
+  auto* t_end_option = command.add_option(
+      "--t-end", t_end, "run until this simulated time (s), rounded to whole steps");
   steps_option->excludes(t_end_option);
+}
+
+void record_given(const CaseOptionHandles& handles, CaseOptions& options) {
+  options.case_given = handles.case_path->count() > 0;
+  options.arithmetic_given = handles.arithmetic->count() > 0;
 }
 
 } // namespace
@@ -53,30 +67,45 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("revsph ") + revsph::build_info::version + " (" +
                                         revsph::build_info::git_commit + ")");
   app.require_subcommand(1);
+  const std::string case_help =
+      "case file (TOML), or the name of a built-in case (list: revsph cases)";
 
   RunOptions run;
-  auto* run_command_app = app.add_subcommand(
-      "run", "run a case; writes OUT/energy.csv and OUT/summary.json (default case: "
-             "dambreak-small)");
-  add_case_options(*run_command_app, run.case_options, false);
-  add_length_options(*run_command_app, run.steps, run.t_end);
-  run_command_app->add_option("--out", run.out_dir, "output directory (default: out/CASE_NAME)");
-  run_command_app->add_flag("--force", run.force, "overwrite a non-empty output directory");
+  auto* run_app = app.add_subcommand(
+      "run", "run a case (default: dambreak-small) or continue from a snapshot; writes "
+             "OUT/energy.csv, OUT/snapshots/*.h5, OUT/run.xdmf and OUT/summary.json");
+  const auto run_handles = add_case_options(*run_app, run.case_options, case_help);
+  add_from_option(*run_app, run.case_options);
+  add_length_options(*run_app, run.steps, run.t_end);
+  run_app->add_option("--out", run.out_dir, "output directory (default: out/CASE_NAME)");
+  run_app->add_flag("--force", run.force, "overwrite the files of a previous run in --out");
 
   VerifyCommandOptions verify;
   auto* verify_app = app.add_subcommand(
       "verify", "check bitwise reversibility: N steps, time reversal, N steps, time reversal, "
                 "compare every raw integer with the initial state (exit status 0 only if "
                 "identical)");
-  add_case_options(*verify_app, verify.case_options, true);
+  const auto verify_handles = add_case_options(*verify_app, verify.case_options, case_help);
+  add_from_option(*verify_app, verify.case_options);
   add_length_options(*verify_app, verify.steps, verify.t_end);
   verify_app->add_flag("--substeps", verify.check_substeps,
                        "also check each sub-step (kick, drift, …) on its own");
 
   HashOptions hash;
-  auto* hash_app = app.add_subcommand("hash", "print the SHA-256 hash of the state after N steps");
-  add_case_options(*hash_app, hash.case_options, true);
+  auto* hash_app = app.add_subcommand(
+      "hash", "print the SHA-256 hash of a snapshot's state, or of a case's (or snapshot's) "
+              "state after --steps N more steps");
+  const auto hash_handles =
+      add_case_options(*hash_app, hash.case_options, "case file, built-in case or snapshot (.h5)");
+  hash_handles.case_path->required();
   add_length_options(*hash_app, hash.steps, hash.t_end);
+
+  std::string first_snapshot;
+  std::string second_snapshot;
+  auto* diff_app = app.add_subcommand(
+      "diff", "compare two snapshots bit for bit (exit status 0 only if identical)");
+  diff_app->add_option("a", first_snapshot, "first snapshot (.h5)")->required();
+  diff_app->add_option("b", second_snapshot, "second snapshot (.h5)")->required();
 
   std::string case_name;
   auto* cases_app = app.add_subcommand("cases", "list the built-in cases, or print one");
@@ -91,10 +120,16 @@ int main(int argc, char** argv) {
 
   try {
     revsph::fixedpoint::require_round_to_nearest();
-    if (*run_command_app) {
+    if (*run_app) {
+      record_given(run_handles, run.case_options);
       return run_command(run);
     }
     if (*verify_app) {
+      record_given(verify_handles, verify.case_options);
+      if (!verify.case_options.case_given && verify.case_options.from_snapshot.empty()) {
+        print_error("verify needs a case or --from SNAPSHOT");
+        return bad_input;
+      }
       if (!verify.steps && !verify.t_end) {
         print_error("verify needs --steps N or --t-end T");
         return bad_input;
@@ -102,16 +137,19 @@ int main(int argc, char** argv) {
       return verify_command(verify);
     }
     if (*hash_app) {
-      if (!hash.steps && !hash.t_end) {
-        print_error("hash needs --steps N or --t-end T");
-        return bad_input;
-      }
+      record_given(hash_handles, hash.case_options);
       return hash_command(hash);
+    }
+    if (*diff_app) {
+      return diff_command(first_snapshot, second_snapshot);
     }
     if (*cases_app) {
       return cases_command(case_name);
     }
   } catch (const revsph::CaseError& error) {
+    print_error(error.what());
+    return bad_input;
+  } catch (const revsph::SnapshotError& error) {
     print_error(error.what());
     return bad_input;
   } catch (const revsph::SimulationFault& fault) {

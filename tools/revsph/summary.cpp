@@ -17,6 +17,10 @@ void write_summary(const std::filesystem::path& path, Simulation& simulation, co
   summary["case"] = info.case_name;
   summary["case_source"] = run.case_source;
   summary["overrides"] = run.overrides;
+  if (run.from_snapshot) {
+    summary["from_snapshot"] = *run.from_snapshot;
+  }
+  summary["start_step"] = run.start_step;
   summary["model"] = info.model;
   summary["dimension"] = info.dimension;
   summary["arithmetic"] = std::string(to_string(info.arithmetic));
@@ -25,7 +29,8 @@ void write_summary(const std::filesystem::path& path, Simulation& simulation, co
   }
   summary["dt"] = info.dt;
   summary["steps_requested"] = run.steps_requested;
-  summary["steps"] = simulation.steps_taken();
+  summary["steps"] = simulation.steps_taken() - run.start_step;
+  summary["final_step"] = simulation.steps_taken();
   summary["time"] = simulation.time();
   summary["completed"] = !run.failure.has_value();
   if (run.failure) {
@@ -33,13 +38,17 @@ void write_summary(const std::filesystem::path& path, Simulation& simulation, co
   }
   summary["wall_seconds"] = run.wall_seconds;
   const double particle_steps = static_cast<double>(info.moving_particle_count()) *
-                                static_cast<double>(simulation.steps_taken());
+                                static_cast<double>(simulation.steps_taken() - run.start_step);
   summary["particle_steps_per_second"] =
       run.wall_seconds > 0 ? particle_steps / run.wall_seconds : 0.0;
   summary["threads"] = run.threads;
   summary["peak_memory_bytes"] = peak_resident_bytes();
   summary["initial_hash"] = run.initial_hash;
   summary["final_hash"] = run.final_hash;
+  summary["snapshots_written"] = run.snapshots_written;
+  if (run.last_snapshot) {
+    summary["last_snapshot"] = *run.last_snapshot;
+  }
   if (!energy.empty()) {
     summary["energy"]["initial_total"] = energy.initial_total();
     summary["energy"]["final_total"] = energy.last().total();
@@ -53,11 +62,16 @@ void write_summary(const std::filesystem::path& path, Simulation& simulation, co
                       {"compiler", build_info::compiler},
                       {"build_type", build_info::build_type},
                       {"flags", build_info::flags}};
-  std::ofstream out(path);
-  if (!out) {
-    throw std::runtime_error("cannot write " + path.string());
+  std::filesystem::path temporary = path;
+  temporary += ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::trunc);
+    out << summary.dump(2) << "\n";
+    if (!out.flush()) {
+      throw std::runtime_error("cannot write " + temporary.string());
+    }
   }
-  out << summary.dump(2) << "\n";
+  std::filesystem::rename(temporary, path);
 }
 
 } // namespace revsph::cli

@@ -14,14 +14,19 @@ namespace revsph::cli {
 struct RunSummary {
   std::string case_source;
   std::vector<std::string> overrides;
+  std::optional<std::string> from_snapshot; // the snapshot a restarted run began from
+  std::int64_t start_step = 0;
   std::int64_t steps_requested = 0;
   double wall_seconds = 0.0;
   int threads = 1;
   std::string initial_hash;
   std::string final_hash;
   std::optional<std::string> failure; // the fault message if the run stopped early
+  std::size_t snapshots_written = 0;
+  std::optional<std::string> last_snapshot;
 };
 
+// Written atomically (temporary file, then rename).
 void write_summary(const std::filesystem::path& path, Simulation& simulation, const RunSummary& run,
                    const EnergyLog& energy);
 

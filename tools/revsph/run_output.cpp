@@ -1,0 +1,114 @@
+#include "tools/revsph/run_output.hpp"
+
+#include "core/build_info.hpp"
+#include "core/case_file.hpp"
+#include "verify/state_hash.hpp"
+
+#include <cstdio>
+
+namespace revsph::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// What a previous run leaves in its directory (and nothing else is removed by --force).
+bool is_run_artifact(const fs::path& path) {
+  const std::string name = path.filename().string();
+  return name == "energy.csv" || name == "summary.json" || name == "run.xdmf" ||
+         name == "run.xdmf.tmp" || name == "summary.json.tmp";
+}
+
+bool is_snapshot_artifact(const fs::path& path) {
+  const std::string name = path.filename().string();
+  return name.starts_with("step_") && (name.ends_with(".h5") || name.ends_with(".h5.tmp"));
+}
+
+} // namespace
+
+void RunOutput::check_directory(const fs::path& directory, bool force,
+                                const std::string& case_source) {
+  if (fs::exists(directory) && !fs::is_directory(directory)) {
+    throw CaseError(case_source, "--out", directory.string() + " exists and is not a directory");
+  }
+  if (!fs::exists(directory) || fs::is_empty(directory)) {
+    return;
+  }
+  if (!force) {
+    throw CaseError(case_source, "--out",
+                    "the output directory " + directory.string() +
+                        " exists and is not empty; choose another with --out or overwrite it "
+                        "with --force");
+  }
+  for (const auto& entry : fs::directory_iterator(directory)) {
+    if (is_run_artifact(entry.path())) {
+      fs::remove(entry.path());
+    }
+  }
+  if (fs::is_directory(directory / "snapshots")) {
+    for (const auto& entry : fs::directory_iterator(directory / "snapshots")) {
+      if (is_snapshot_artifact(entry.path())) {
+        fs::remove(entry.path());
+      }
+    }
+  }
+}
+
+RunOutput::RunOutput(fs::path directory, SnapshotMetadata base, std::int64_t snapshot_every)
+    : directory_(std::move(directory)), base_(std::move(base)), snapshot_every_(snapshot_every) {
+  fs::create_directories(directory_ / "snapshots");
+}
+
+bool RunOutput::snapshot_due(std::int64_t step) const {
+  return snapshot_every_ > 0 && step % snapshot_every_ == 0 && last_step_ != step;
+}
+
+void RunOutput::write_snapshot(Simulation& simulation) {
+  const std::int64_t step = simulation.steps_taken();
+  if (last_step_ == step) {
+    return;
+  }
+  const StateSnapshot state = simulation.capture_state();
+  SnapshotMetadata metadata = base_;
+  metadata.step = step;
+  metadata.time = simulation.time();
+  metadata.state_hash = state_hash(state);
+  char name[64];
+  std::snprintf(name, sizeof name, "step_%09lld.h5", static_cast<long long>(step));
+  const fs::path relative = fs::path("snapshots") / name;
+  XdmfSnapshot entry{step, metadata.time, relative.string(), {}};
+  entry.sets =
+      revsph::write_snapshot(directory_ / relative, metadata, state, simulation.derived_views());
+  series_.push_back(std::move(entry));
+  write_xdmf(xdmf(), simulation.info().dimension, series_);
+  last_step_ = step;
+}
+
+std::optional<fs::path> RunOutput::last_snapshot() const {
+  if (series_.empty()) {
+    return std::nullopt;
+  }
+  return directory_ / series_.back().file;
+}
+
+SnapshotMetadata run_metadata(const Simulation& simulation, const CaseFile& case_file,
+                              std::optional<double> reference_energy) {
+  const SimulationInfo& info = simulation.info();
+  SnapshotMetadata metadata;
+  metadata.model = info.model;
+  metadata.dimension = info.dimension;
+  metadata.arithmetic = info.arithmetic;
+  metadata.case_name = info.case_name;
+  metadata.case_source = case_file.source_name();
+  metadata.case_text = case_file.text();
+  metadata.overrides = case_file.overrides();
+  metadata.dt = info.dt;
+  metadata.reference_energy = reference_energy;
+  metadata.code_version = build_info::version;
+  metadata.git_commit = build_info::git_commit;
+  metadata.build_type = build_info::build_type;
+  metadata.build_flags = build_info::flags;
+  return metadata;
+}
+
+} // namespace revsph::cli

@@ -1,0 +1,55 @@
+#pragma once
+// The output directory of a run:
+//   energy.csv            energy terms every output.energy_every steps
+//   snapshots/step_N.h5   snapshots (core/snapshot_file.hpp), every output.snapshot_every steps,
+//                         at the start and at the end; each written atomically
+//   run.xdmf              the snapshot series for ParaView, rewritten after each snapshot
+//   summary.json          what ran and how it ended, written at the end (also after a failure)
+
+#include "core/case_file.hpp"
+#include "core/simulation.hpp"
+#include "core/snapshot_file.hpp"
+#include "core/xdmf.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace revsph::cli {
+
+class RunOutput {
+public:
+  // Refuses (CaseError on key "--out") a path that is a file, or a non-empty directory unless
+  // `force`; with `force`, removes the files a previous run left there. Nothing is created.
+  static void check_directory(const std::filesystem::path& directory, bool force,
+                              const std::string& case_source);
+
+  // Creates the directory. `base` carries what every snapshot records about the case and build.
+  RunOutput(std::filesystem::path directory, SnapshotMetadata base, std::int64_t snapshot_every);
+
+  bool snapshot_due(std::int64_t step) const;
+  // Writes the snapshot of the current state and rewrites run.xdmf. Throws SnapshotError.
+  void write_snapshot(Simulation& simulation);
+
+  const std::filesystem::path& directory() const { return directory_; }
+  std::filesystem::path energy_csv() const { return directory_ / "energy.csv"; }
+  std::filesystem::path summary_json() const { return directory_ / "summary.json"; }
+  std::filesystem::path xdmf() const { return directory_ / "run.xdmf"; }
+  std::optional<std::filesystem::path> last_snapshot() const;
+  std::size_t snapshot_count() const { return series_.size(); }
+
+private:
+  std::filesystem::path directory_;
+  SnapshotMetadata base_;
+  std::int64_t snapshot_every_;
+  std::optional<std::int64_t> last_step_;
+  std::vector<XdmfSnapshot> series_;
+};
+
+// Snapshot metadata common to every snapshot of a run (everything but step, time and hash).
+SnapshotMetadata run_metadata(const Simulation& simulation, const CaseFile& case_file,
+                              std::optional<double> reference_energy);
+
+} // namespace revsph::cli
