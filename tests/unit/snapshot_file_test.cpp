@@ -1,0 +1,183 @@
+// Snapshot files: exact round trip of any declared state, metadata, atomic writing, and clear
+// refusals of files that are not (or no longer) snapshots.
+
+#include "core/hdf5_handle.hpp"
+#include "core/snapshot_file.hpp"
+#include "temp_directory.hpp"
+#include "verify/snapshot_check.hpp"
+#include "verify/state_hash.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <limits>
+
+namespace {
+
+namespace fs = std::filesystem;
+using revsph::FieldSnapshot;
+using revsph::Parity;
+using revsph::RawKind;
+using revsph::SnapshotError;
+using revsph::SnapshotMetadata;
+using revsph::StateSnapshot;
+using revsph::testing::TempDirectory;
+
+StateSnapshot toy_state() {
+  StateSnapshot state;
+  FieldSnapshot position{
+      {"fluid", "position", "m", Parity::even, 3, revsph::fixedpoint::Scale(-40), true},
+      RawKind::fixed_point,
+      4,
+      {}};
+  for (int i = 0; i < 12; ++i) {
+    position.bits.push_back(i * 1000003 - 5);
+  }
+  position.bits[5] = std::numeric_limits<std::int64_t>::max();
+  position.bits[6] = std::numeric_limits<std::int64_t>::min() + 1;
+  FieldSnapshot entropy{
+      {"fluid", "entropy", "J/K", Parity::even, 1, revsph::fixedpoint::Scale(-20), true},
+      RawKind::ieee_double,
+      4,
+      {}};
+  for (const double value : {1.5, -0.0, 1e-300, -7.25}) {
+    entropy.bits.push_back(std::bit_cast<std::int64_t>(value));
+  }
+  FieldSnapshot flux{{"ghost", "flux", "W", Parity::odd, 2, revsph::fixedpoint::Scale(3), false},
+                     RawKind::fixed_point,
+                     0,
+                     {}};
+  state.fields = {position, entropy, flux};
+  return state;
+}
+
+SnapshotMetadata toy_metadata(const StateSnapshot& state) {
+  SnapshotMetadata metadata;
+  metadata.model = "toy";
+  metadata.dimension = 3;
+  metadata.arithmetic = revsph::Arithmetic::floating;
+  metadata.case_name = "toy case";
+  metadata.case_source = "toy.toml";
+  metadata.case_text = "model = \"toy\"\n# ünïcödé\n";
+  metadata.overrides = {"a.b=1", "c=[1, 2]"};
+  metadata.step = 123456789012;
+  metadata.time = 0.1 + 0.2;
+  metadata.dt = 1e-4;
+  metadata.reference_energy = -12.5;
+  metadata.state_hash = revsph::state_hash(state);
+  metadata.code_version = "1.2.3";
+  metadata.git_commit = "abc";
+  metadata.build_type = "Release";
+  metadata.build_flags = "-O2";
+  return metadata;
+}
+
+TEST(SnapshotFile, RoundTripsStateAndMetadataExactly) {
+  TempDirectory directory("revsph-snapshot-test");
+  const StateSnapshot state = toy_state();
+  const SnapshotMetadata metadata = toy_metadata(state);
+  const fs::path path = directory.path() / "toy.h5";
+  const std::vector<revsph::ParticleView> views = {
+      {"fluid", "temperature", "K", 1, {300.0, 301.0, 302.0, 303.0}}};
+  const auto sets = revsph::write_snapshot(path, metadata, state, views);
+  EXPECT_FALSE(fs::exists(path.string() + ".tmp")) << "renamed into place";
+  ASSERT_EQ(sets.size(), 2u);
+  EXPECT_EQ(sets[0].name, "fluid");
+  EXPECT_EQ(sets[0].count, 4u);
+  EXPECT_EQ(sets[0].fields.back().name, "kind");
+
+  const revsph::Snapshot read = revsph::read_checked_snapshot(path);
+  ASSERT_EQ(read.state.fields.size(), state.fields.size());
+  for (std::size_t f = 0; f < state.fields.size(); ++f) {
+    const FieldSnapshot& a = state.fields[f];
+    const FieldSnapshot& b = read.state.fields[f];
+    EXPECT_EQ(b.info.particle_set, a.info.particle_set);
+    EXPECT_EQ(b.info.name, a.info.name);
+    EXPECT_EQ(b.info.unit, a.info.unit);
+    EXPECT_EQ(b.info.parity, a.info.parity);
+    EXPECT_EQ(b.info.components, a.info.components);
+    EXPECT_EQ(b.info.scale.exponent(), a.info.scale.exponent());
+    EXPECT_EQ(b.info.evolved, a.info.evolved);
+    EXPECT_EQ(b.kind, a.kind);
+    EXPECT_EQ(b.count, a.count);
+    EXPECT_EQ(b.bits, a.bits);
+  }
+  EXPECT_EQ(revsph::state_hash(read.state), metadata.state_hash);
+  const SnapshotMetadata& m = read.metadata;
+  EXPECT_EQ(m.model, metadata.model);
+  EXPECT_EQ(m.dimension, metadata.dimension);
+  EXPECT_EQ(m.arithmetic, metadata.arithmetic);
+  EXPECT_EQ(m.case_name, metadata.case_name);
+  EXPECT_EQ(m.case_source, metadata.case_source);
+  EXPECT_EQ(m.case_text, metadata.case_text);
+  EXPECT_EQ(m.overrides, metadata.overrides);
+  EXPECT_EQ(m.step, metadata.step);
+  EXPECT_EQ(m.time, metadata.time);
+  EXPECT_EQ(m.dt, metadata.dt);
+  EXPECT_EQ(m.reference_energy, metadata.reference_energy);
+  EXPECT_EQ(m.code_version, metadata.code_version);
+  EXPECT_EQ(m.build_flags, metadata.build_flags);
+}
+
+TEST(SnapshotFile, RefusesMissingForeignAndTruncatedFiles) {
+  TempDirectory directory("revsph-snapshot-test");
+  auto message_of = [](const fs::path& path) {
+    try {
+      revsph::read_checked_snapshot(path);
+    } catch (const SnapshotError& error) {
+      return std::string(error.what());
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_NE(message_of(directory.path() / "none.h5").find("no such snapshot"), std::string::npos);
+
+  const fs::path text = directory.path() / "text.h5";
+  std::ofstream(text) << "model = \"wcsph\"\n";
+  EXPECT_NE(message_of(text).find("not an HDF5 file"), std::string::npos);
+
+  const StateSnapshot state = toy_state();
+  const fs::path good = directory.path() / "good.h5";
+  revsph::write_snapshot(good, toy_metadata(state), state, {});
+  const fs::path truncated = directory.path() / "truncated.h5";
+  fs::copy_file(good, truncated);
+  fs::resize_file(truncated, fs::file_size(good) / 2);
+  const std::string truncated_message = message_of(truncated);
+  EXPECT_NE(truncated_message.find(truncated.string()), std::string::npos) << truncated_message;
+  EXPECT_EQ(truncated_message.find("(accepted)"), std::string::npos);
+
+  // A snapshot whose state no longer matches its recorded hash is refused.
+  revsph::SnapshotMetadata wrong_hash = toy_metadata(state);
+  wrong_hash.state_hash = std::string(64, '0');
+  const fs::path damaged = directory.path() / "damaged.h5";
+  revsph::write_snapshot(damaged, wrong_hash, state, {});
+  EXPECT_NE(message_of(damaged).find("does not match the hash"), std::string::npos);
+}
+
+TEST(SnapshotFile, RefusesOtherFormatsAndVersions) {
+  TempDirectory directory("revsph-snapshot-test");
+  const StateSnapshot state = toy_state();
+  const fs::path path = directory.path() / "versioned.h5";
+  revsph::write_snapshot(path, toy_metadata(state), state, {});
+  {
+    revsph::hdf5::Handle file(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose, "open");
+    revsph::hdf5::write_int_attribute(file.id(), "format_version", 99);
+  }
+  try {
+    revsph::read_snapshot(path);
+    FAIL() << "a version-99 snapshot was accepted";
+  } catch (const SnapshotError& error) {
+    EXPECT_NE(std::string(error.what()).find("version 99"), std::string::npos) << error.what();
+  }
+  {
+    revsph::hdf5::Handle file(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose, "open");
+    revsph::hdf5::write_string_attribute(file.id(), "format", "something-else");
+  }
+  try {
+    revsph::read_snapshot(path);
+    FAIL() << "a foreign HDF5 file was accepted";
+  } catch (const SnapshotError& error) {
+    EXPECT_NE(std::string(error.what()).find("not a revsph snapshot"), std::string::npos);
+  }
+}
+
+} // namespace
