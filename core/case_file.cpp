@@ -31,6 +31,16 @@ std::string describe_type(const toml::node& node) {
   }
 }
 
+// The value of a number node. node.value<double>() is empty for an integer beyond 2^53 (not
+// exactly representable), so an integer is converted here, to the nearest double as a float
+// literal would be.
+double number_value(const toml::node& node) {
+  if (const auto* integer = node.as_integer()) {
+    return static_cast<double>(integer->get());
+  }
+  return node.as_floating_point()->get();
+}
+
 std::string format_number(double value) {
   std::ostringstream out;
   out << value;
@@ -137,7 +147,7 @@ double CaseFile::number(std::string_view key) const {
   if (!node.is_number()) {
     fail(key, "expected a number, got " + describe_type(node));
   }
-  const double value = *node.value<double>();
+  const double value = number_value(node);
   if (!std::isfinite(value)) {
     fail(key, "expected a finite number, got " + format_number(value));
   }
@@ -207,7 +217,7 @@ std::vector<double> CaseFile::numbers(std::string_view key, std::size_t size) co
     if (!element.is_number()) {
       fail(key, "expected an array of numbers, found " + describe_type(element) + " in it");
     }
-    const double value = *element.value<double>();
+    const double value = number_value(element);
     if (!std::isfinite(value)) {
       fail(key, "expected finite numbers, got " + format_number(value));
     }

@@ -48,7 +48,15 @@ std::unique_ptr<Simulation> create_simulation(const CaseFile& case_file,
     }
     case_file.fail("model", "unknown model \"" + model + "\" (available: " + known + ")");
   }
-  return entry->create(case_file, options);
+  try {
+    return entry->create(case_file, options);
+  } catch (const SimulationFault& fault) {
+    // The initial state itself is faulty (say a NaN force at t = 0): step 0.
+    if (fault.step() >= 0) {
+      throw;
+    }
+    throw SimulationFault(fault.fault(), 0);
+  }
 }
 
 } // namespace revsph

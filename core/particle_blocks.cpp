@@ -58,8 +58,24 @@ double lattice_cell_volume(Lattice lattice, double spacing) {
   return volume;
 }
 
+namespace {
+
 template <int D>
-std::vector<Vec<D>> lattice_points(Lattice lattice, const Box<D>& region, double spacing) {
+bool strictly_inside(const Box<D>& box, const Vec<D>& p) {
+  bool inside = true;
+  for (int k = 0; k < D; ++k) {
+    inside = inside && p[k] > box.min[k] && p[k] < box.max[k];
+  }
+  return inside;
+}
+
+// lattice_points, leaving out the points strictly inside `hollow` (if not null). A container's
+// hollow is skipped a run at a time rather than point by point, so that generating a container
+// costs its walls, not its whole box (which, for a large empty container, would not fit in
+// memory or time).
+template <int D>
+std::vector<Vec<D>> lattice_points_outside(Lattice lattice, const Box<D>& region, double spacing,
+                                           const Box<D>* hollow) {
   const Vec<D> period = lattice_periods<D>(lattice, spacing);
   std::array<long, D> counts{};
   for (int k = 0; k < D; ++k) {
@@ -72,25 +88,41 @@ std::vector<Vec<D>> lattice_points(Lattice lattice, const Box<D>& region, double
     lo[k] = region.min[k] + 0.5 * period[k] - relative_tolerance * spacing;
     hi[k] = region.max[k] - 0.5 * period[k] + relative_tolerance * spacing;
   }
+  auto point = [&](long column, long row, long layer) {
+    Vec<D> p{};
+    p[0] = region.min[0] + (0.5 + static_cast<double>(column)) * period[0];
+    p[1] = region.min[1] + (0.5 + static_cast<double>(row)) * period[1];
+    if constexpr (D == 3) {
+      p[2] = region.min[2] + (0.5 + static_cast<double>(layer)) * period[2];
+    }
+    if (lattice == Lattice::hexagonal) {
+      // Odd rows shift by half a spacing; in 3D odd layers (B of ABAB stacking) shift by
+      // (spacing / 2, row period / 3).
+      p[0] += (row % 2 == 1 ? 0.5 * spacing : 0.0);
+      if (D == 3 && layer % 2 == 1) {
+        p[0] += 0.5 * spacing;
+        p[1] += period[1] / 3.0;
+      }
+    }
+    return p;
+  };
   std::vector<Vec<D>> points;
   const long layers = D == 3 ? counts[D - 1] : 1;
   for (long layer = 0; layer < layers; ++layer) {
     for (long row = 0; row < counts[1]; ++row) {
       for (long column = 0; column < counts[0]; ++column) {
-        Vec<D> p{};
-        p[0] = region.min[0] + (0.5 + static_cast<double>(column)) * period[0];
-        p[1] = region.min[1] + (0.5 + static_cast<double>(row)) * period[1];
-        if constexpr (D == 3) {
-          p[2] = region.min[2] + (0.5 + static_cast<double>(layer)) * period[2];
-        }
-        if (lattice == Lattice::hexagonal) {
-          // Odd rows shift by half a spacing; in 3D odd layers (B of ABAB stacking) shift by
-          // (spacing / 2, row period / 3).
-          p[0] += (row % 2 == 1 ? 0.5 * spacing : 0.0);
-          if (D == 3 && layer % 2 == 1) {
-            p[0] += 0.5 * spacing;
-            p[1] += period[1] / 3.0;
+        const Vec<D> p = point(column, row, layer);
+        if (hollow != nullptr && strictly_inside<D>(*hollow, p)) {
+          // Along a row only p[0] changes, never decreasing with `column` (each rounding is
+          // monotonic), and the hollow is an interval of it: if the point at `last` is in the
+          // hollow too, so is every point in between. Jump to it.
+          const double last =
+              std::floor((hollow->max[0] - region.min[0]) / period[0]) - 2.0;
+          if (last > static_cast<double>(column) && last < static_cast<double>(counts[0]) &&
+              strictly_inside<D>(*hollow, point(static_cast<long>(last), row, layer))) {
+            column = static_cast<long>(last);
           }
+          continue;
         }
         bool inside = true;
         for (int k = 0; k < D; ++k) {
@@ -103,6 +135,13 @@ std::vector<Vec<D>> lattice_points(Lattice lattice, const Box<D>& region, double
     }
   }
   return points;
+}
+
+} // namespace
+
+template <int D>
+std::vector<Vec<D>> lattice_points(Lattice lattice, const Box<D>& region, double spacing) {
+  return lattice_points_outside<D>(lattice, region, spacing, nullptr);
 }
 
 template <int D>
@@ -247,15 +286,8 @@ ParticleBlock<D> generate_block(const CaseFile& case_file, const BlockSpec<D>& s
   if (spec.shape == Shape::box) {
     block.positions = lattice_points<D>(spec.lattice, spec.region, spec.spacing);
   } else {
-    for (const Vec<D>& p : lattice_points<D>(spec.lattice, spec.outer, spec.spacing)) {
-      bool inside_hollow = true;
-      for (int k = 0; k < D; ++k) {
-        inside_hollow = inside_hollow && p[k] > spec.region.min[k] && p[k] < spec.region.max[k];
-      }
-      if (!inside_hollow) {
-        block.positions.push_back(p);
-      }
-    }
+    block.positions =
+        lattice_points_outside<D>(spec.lattice, spec.outer, spec.spacing, &spec.region);
   }
   if (block.positions.empty()) {
     case_file.fail(spec.key, "the block holds no particles (is it thinner than the spacing?)");

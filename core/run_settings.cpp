@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 
 namespace revsph {
 
@@ -10,7 +11,13 @@ std::int64_t RunLength::steps_for(double dt) const {
     return *steps;
   }
   if (t_end) {
-    return static_cast<std::int64_t>(std::llround(*t_end / dt));
+    // Saturated: llround of a quotient beyond int64 is unspecified (LLONG_MIN on x86), which
+    // read as a negative run length ("already past that end").
+    const double quotient = *t_end / dt;
+    if (!(quotient < 9223372036854775808.0)) { // 2^63
+      return std::numeric_limits<std::int64_t>::max();
+    }
+    return static_cast<std::int64_t>(std::llround(quotient));
   }
   return 0;
 }

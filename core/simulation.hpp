@@ -115,8 +115,12 @@ public:
     revsph::restore_state(model_.state(), snapshot);
     model_.invalidate_derived();
   }
-  EnergyBudget energy() override { return model_.energy(); }
-  std::vector<ParticleView> derived_views() override { return model_.derived_views(); }
+  EnergyBudget energy() override {
+    return attributing_faults([&] { return model_.energy(); });
+  }
+  std::vector<ParticleView> derived_views() override {
+    return attributing_faults([&] { return model_.derived_views(); });
+  }
 
   std::vector<std::string> substep_names() const override {
     std::vector<std::string> names;
@@ -126,12 +130,26 @@ public:
     return names;
   }
   void apply_substep(std::size_t index, double dt) override {
-    M::palindrome()[index].apply(model_, dt);
+    attributing_faults([&] { M::palindrome()[index].apply(model_, dt); });
   }
 
   M& model() { return model_; }
 
 private:
+  // A fault found outside advance(), in quantities derived from the current state (say the
+  // forces of a restored snapshot), belongs to the next step: the first one to use them.
+  template <class Compute>
+  auto attributing_faults(Compute&& compute) {
+    try {
+      return compute();
+    } catch (const SimulationFault& fault) {
+      if (fault.step() >= 0) {
+        throw;
+      }
+      throw SimulationFault(fault.fault(), steps_taken_ + 1);
+    }
+  }
+
   M model_;
 };
 

@@ -134,6 +134,9 @@ void write_metadata(hid_t file, const SnapshotMetadata& m, const StateSnapshot& 
     write_double_attribute(file, "reference_energy", *m.reference_energy);
   }
   write_string_attribute(file, "state_hash", m.state_hash);
+  if (!m.derived_fields_error.empty()) {
+    write_string_attribute(file, "derived_fields_error", m.derived_fields_error);
+  }
   std::vector<std::string> order;
   for (const FieldSnapshot& field : state.fields) {
     order.push_back(field.info.particle_set + "/" + field.info.name);
@@ -166,6 +169,9 @@ SnapshotMetadata read_metadata(hid_t file) {
     m.reference_energy = read_double_attribute(file, "reference_energy");
   }
   m.state_hash = read_string_attribute(file, "state_hash");
+  if (has_attribute(file, "derived_fields_error")) {
+    m.derived_fields_error = read_string_attribute(file, "derived_fields_error");
+  }
   m.code_version = read_string_attribute(file, "code_version");
   m.git_commit = read_string_attribute(file, "git_commit");
   m.build_type = read_string_attribute(file, "build_type");

@@ -52,6 +52,9 @@ struct SnapshotMetadata {
   // that a restarted run reports its energy error against the original E(0).
   std::optional<double> reference_energy;
   std::string state_hash;
+  // Why the derived fields (density, forces, …) are missing, if they could not be computed for
+  // this state (a restored state whose forces are not finite); empty normally.
+  std::string derived_fields_error;
   std::string code_version;
   std::string git_commit;
   std::string build_type;

@@ -51,9 +51,10 @@ int run_command(const RunOptions& options) {
   RunOutput::check_directory(directory, options.force, loaded.case_file.source_name());
 
   print_header(loaded, steps);
+  // A restarted run measures energy against the original run's E(0); a new run's E(0) is its
+  // first energy record.
   const std::optional<double> reference_energy =
-      loaded.from_snapshot ? loaded.from_snapshot->metadata.reference_energy
-                           : std::optional<double>(simulation.energy().total());
+      loaded.from_snapshot ? loaded.from_snapshot->metadata.reference_energy : std::nullopt;
   RunOutput output(directory, run_metadata(simulation, loaded.case_file, reference_energy),
                    loaded.settings.snapshot_every);
   EnergyLog energy(output.energy_csv().string(), reference_energy);
@@ -83,12 +84,15 @@ int run_command(const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   int status = success;
   try {
+    if (!reference_energy) {
+      output.set_reference_energy(simulation.energy().total());
+    }
     output.write_snapshot(simulation);
     run_steps(simulation, steps, hooks);
     output.write_snapshot(simulation);
   } catch (const SimulationFault& fault) {
     // The state is left half-updated by the failed step: no snapshot of it; the last one
-    // written stays the last good state.
+    // written stays the last good state. (Faults carry their step: ModelSimulation.)
     progress.finish(simulation.steps_taken());
     summary.failure = fault.what();
     print_error(std::string("the run stopped: ") + fault.what());

@@ -31,7 +31,11 @@ public:
 
   bool snapshot_due(std::int64_t step) const;
   // Writes the snapshot of the current state and rewrites run.xdmf. Throws SnapshotError.
+  // If the model cannot compute its derived fields for this state, the snapshot holds the exact
+  // state without them and says why (attribute derived_fields_error).
   void write_snapshot(Simulation& simulation);
+  // E(0) of the run, recorded in every later snapshot.
+  void set_reference_energy(double total) { base_.reference_energy = total; }
 
   const std::filesystem::path& directory() const { return directory_; }
   std::filesystem::path energy_csv() const { return directory_ / "energy.csv"; }
