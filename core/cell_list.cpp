@@ -12,14 +12,27 @@ CellList<D>::CellList(const Box<D>& domain, double cell_size, std::size_t max_ce
   if (!(cell_size > 0.0) || !std::isfinite(cell_size)) {
     throw std::invalid_argument("cell list: the cell size must be positive and finite");
   }
+  for (int k = 0; k < D; ++k) {
+    if (!std::isfinite(domain.max[k] - domain.min[k])) {
+      throw std::invalid_argument("cell list: the domain's extent must be finite");
+    }
+  }
   for (;;) {
+    // Counted in double and converted only once they fit: a cell count beyond int (a huge
+    // domain) must enlarge the cells, not overflow the conversion (undefined behaviour).
     double cells = 1.0;
+    bool fits_int = true;
+    std::array<double, D> per_axis{};
     for (int k = 0; k < D; ++k) {
       const double extent = domain.max[k] - domain.min[k];
-      cells_per_axis_[k] = std::max(1, static_cast<int>(std::ceil(extent / cell_size_)));
-      cells *= cells_per_axis_[k];
+      per_axis[k] = std::max(1.0, std::ceil(extent / cell_size_));
+      fits_int = fits_int && per_axis[k] <= static_cast<double>(std::numeric_limits<int>::max());
+      cells *= per_axis[k];
     }
-    if (cells <= static_cast<double>(std::max<std::size_t>(max_cells, 1))) {
+    if (fits_int && cells <= static_cast<double>(std::max<std::size_t>(max_cells, 1))) {
+      for (int k = 0; k < D; ++k) {
+        cells_per_axis_[k] = static_cast<int>(per_axis[k]);
+      }
       break;
     }
     // Enlarging cells only adds candidates that the distance filter rejects.

@@ -116,8 +116,7 @@ std::vector<Vec<D>> lattice_points_outside(Lattice lattice, const Box<D>& region
           // Along a row only p[0] changes, never decreasing with `column` (each rounding is
           // monotonic), and the hollow is an interval of it: if the point at `last` is in the
           // hollow too, so is every point in between. Jump to it.
-          const double last =
-              std::floor((hollow->max[0] - region.min[0]) / period[0]) - 2.0;
+          const double last = std::floor((hollow->max[0] - region.min[0]) / period[0]) - 2.0;
           if (last > static_cast<double>(column) && last < static_cast<double>(counts[0]) &&
               strictly_inside<D>(*hollow, point(static_cast<long>(last), row, layer))) {
             column = static_cast<long>(last);
@@ -151,6 +150,10 @@ Box<D> read_domain(const CaseFile& case_file) {
   for (int k = 0; k < D; ++k) {
     if (!(domain.min[k] < domain.max[k])) {
       case_file.fail("domain.max", "must be greater than domain.min on every axis");
+    }
+    if (!std::isfinite(domain.max[k] - domain.min[k])) {
+      case_file.fail("domain.max", "domain.max - domain.min overflows on an axis: the domain "
+                                   "must have a finite size");
     }
   }
   return domain;

@@ -3,10 +3,22 @@
 #include "core/particle_blocks.hpp"
 
 #include <cmath>
+#include <sstream>
 
 namespace revsph::wcsph {
 
 namespace {
+
+// A quantity derived from valid inputs can still overflow to infinity or underflow to zero
+// (dr = 1e300 with support_radius_over_dr = 1e10, say): refused with the key that sets it.
+void require_positive_finite(const CaseFile& case_file, const char* key, const char* what,
+                             double value) {
+  if (!(value > 0.0) || !std::isfinite(value)) {
+    std::ostringstream reason;
+    reason << what << " is " << value << ": it must be positive and finite";
+    case_file.fail(key, reason.str());
+  }
+}
 
 fixedpoint::Scale scale_or(const CaseFile& case_file, const char* key, double magnitude,
                            int fraction_bits) {
@@ -17,6 +29,10 @@ fixedpoint::Scale scale_or(const CaseFile& case_file, const char* key, double ma
     }
     return fixedpoint::Scale(static_cast<int>(exponent));
   }
+  require_positive_finite(case_file, key,
+                          "the magnitude its default scale must cover (from [physics] and "
+                          "[discretisation])",
+                          magnitude);
   return fixedpoint::Scale::covering(magnitude, fraction_bits);
 }
 
@@ -47,6 +63,13 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   if (!(p.cell_size_factor >= 1.0 && p.cell_size_factor <= 100.0)) {
     case_file.fail("discretisation.cell_size_factor", "must be between 1 and 100");
   }
+  require_positive_finite(case_file, "discretisation.support_radius_over_dr",
+                          "the support radius h = dr * support_radius_over_dr", p.support_radius);
+  require_positive_finite(case_file, has_dt ? "discretisation.dt" : "discretisation.courant_number",
+                          "the time step dt", p.dt);
+  require_positive_finite(case_file, "discretisation.cell_size_factor",
+                          "the search cell size h * cell_size_factor",
+                          p.support_radius * p.cell_size_factor);
 
   p.wall_radius = p.dr * case_file.number_or("wall.radius_over_dr", 0.95);
   p.wall_energy_per_mass = case_file.number_or("wall.energy_per_mass", 0.0);
@@ -54,6 +77,9 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   if (!(p.wall_radius > 0.0)) {
     case_file.fail("wall.radius_over_dr", "must be > 0");
   }
+  require_positive_finite(case_file, "wall.radius_over_dr",
+                          "the wall search cell size dr * radius_over_dr * cell_size_factor",
+                          p.wall_radius * p.cell_size_factor);
   if (p.wall_energy_per_mass < 0.0) {
     case_file.fail("wall.energy_per_mass", "must be >= 0");
   }

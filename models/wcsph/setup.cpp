@@ -5,17 +5,24 @@
 #include "models/wcsph/model.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
 
 namespace revsph::wcsph {
 
 namespace {
 
 constexpr std::string_view particle_kinds[] = {"fluid", "wall"};
-// Memory per particle, generously: state 48 B, positions and derived arrays ~80 B, neighbour
-// lists 4 B per neighbour (~28 in 2D, ~113 in 3D at h = 3 dr) plus the cell lists. Measured
-// about 220 B per particle in 2D (tools/bench/results).
-constexpr double bytes_per_particle_2d = 400.0;
-constexpr double bytes_per_particle_3d = 900.0;
+// Memory per particle, generously: state, positions, derived arrays and cell lists ~250 B, plus
+// 4 B per neighbour in the lists and as much again while they are built. Measured about 220 B per
+// particle in 2D at h = 3 dr (~28 neighbours; tools/bench/results).
+double bytes_per_particle(int dimension, double support_radius_over_dr) {
+  const double r = support_radius_over_dr;
+  const double neighbours =
+      dimension == 2 ? std::numbers::pi * r * r : 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  return 250.0 + 8.0 * neighbours;
+}
 // Masses are constants of the setup; 52 bits keep their double view exact.
 constexpr int mass_fraction_bits = 52;
 
@@ -37,9 +44,10 @@ template <int D, class Arith>
 std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const SimulationOptions& options) {
   using Raw = typename Arith::Raw;
   const Parameters<D> parameters = read_parameters<D>(case_file);
-  const auto blocks = read_particle_blocks<D>(
-      case_file, parameters.dr, parameters.domain, particle_kinds,
-      {D == 2 ? bytes_per_particle_2d : bytes_per_particle_3d, options.memory_budget_bytes});
+  const auto blocks =
+      read_particle_blocks<D>(case_file, parameters.dr, parameters.domain, particle_kinds,
+                              {bytes_per_particle(D, parameters.support_radius / parameters.dr),
+                               options.memory_budget_bytes});
   std::size_t fluid_count = 0;
   std::size_t wall_count = 0;
   double largest_mass = 0.0;
@@ -53,6 +61,13 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   }
   if (fluid_count == 0) {
     case_file.fail("particles", "the case has no fluid particles");
+  }
+  // rest_density * lattice cell volume can overflow or underflow even when both are valid.
+  if (!(largest_mass > 0.0) || !std::isfinite(largest_mass)) {
+    std::ostringstream reason;
+    reason << "the particle mass rest_density * (lattice cell volume) is " << largest_mass
+           << ": it must be positive and finite";
+    case_file.fail("physics.rest_density", reason.str());
   }
 
   State<D, Raw> state;

@@ -1,0 +1,753 @@
+// Randomised robustness of case-file handling: thousands of mutants of the built-in cases go
+// through the command line's sequence (tools/revsph/common.cpp: parse, --set overrides,
+// read_run_settings, create_simulation, require_no_unknown_keys) and, when that succeeds, a few
+// steps. Every mutant must end in one of three ways:
+//
+//   - a valid run setup (and steps that either run or stop with a SimulationFault),
+//   - a CaseError (bad input, reported cleanly),
+//   - a SimulationFault (a setup whose state overflows or leaves the domain).
+//
+// Anything else — another exception type, std::bad_alloc, a crash, a hang — fails the test with
+// the seed, the mutant's number and its text. The mutations are byte edits (NUL, non-UTF-8,
+// quotes, brackets, '=', newlines), line edits, numbers replaced by extreme ones, values replaced
+// by other types, renamed keys, inserted keys and tables, truncation, random --set overrides, and
+// combinations of these. Cases are made cheap (a coarse dr: a few hundred particles) and every
+// setup is limited to a 64 MB memory budget, so absurd sizes are refused quickly.
+//
+// A valid setup must also have a non-negative run length. A mutant taking more than the
+// per-mutant limit (2 s of CPU time in a Release build) fails the test; one that hangs is caught
+// by a watchdog that prints it and aborts, and a crash or sanitizer report prints it too.
+//
+// Reproduce or extend a run with REVSPH_CASE_FUZZ_SEED=<seed> and REVSPH_CASE_FUZZ_MUTANTS=<n>
+// (per test); REVSPH_CASE_FUZZ_SLOW_MS=<ms> prints every mutant slower than that.
+
+#include "core/case_file.hpp"
+#include "core/fault.hpp"
+#include "core/model_registry.hpp"
+#include "core/run_settings.hpp"
+#include "core/simulation.hpp"
+#include "core/threads.hpp"
+
+#include "case_text.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <csignal>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <iomanip>
+#include <iostream>
+#include <mutex>
+#include <new>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <thread>
+#include <time.h>
+#include <typeinfo>
+#include <unistd.h>
+#include <vector>
+
+#if defined(__SANITIZE_ADDRESS__)
+#define REVSPH_FUZZ_SANITIZED 1
+#else
+#define REVSPH_FUZZ_SANITIZED 0
+#endif
+
+// Provided by every sanitizer runtime (ASan, UBSan, ...) and absent otherwise.
+extern "C" __attribute__((weak)) void __sanitizer_set_death_callback(void (*callback)(void));
+
+namespace revsph {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double thread_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+constexpr std::uint64_t default_seed = 20240611;
+constexpr std::size_t memory_budget_bytes = std::size_t{64} << 20;
+constexpr std::int64_t steps_per_setup = 3;
+// A mutant is one parse and at most a 64 MB setup plus a few steps: well below a second in a
+// Release build. Sanitized builds run several times slower. Measured as CPU time of the test's
+// thread (the simulation runs on it, with one OpenMP thread), so that a loaded machine does not
+// make a mutant look slow; a mutant that blocks instead is caught by the watchdog.
+constexpr double per_mutant_limit_seconds = REVSPH_FUZZ_SANITIZED ? 20.0 : 2.0;
+// A mutant still running after this long hangs: print it and abort (a failed test, not a
+// silently stuck one).
+constexpr double watchdog_seconds = REVSPH_FUZZ_SANITIZED ? 120.0 : 30.0;
+constexpr int max_reported_failures = 5;
+
+std::uint64_t env_or(const char* name, std::uint64_t fallback) {
+  const char* value = std::getenv(name);
+  if (value == nullptr || *value == '\0') {
+    return fallback;
+  }
+  return std::strtoull(value, nullptr, 0);
+}
+
+// The text with bytes that would garble a terminal written as \xNN (newlines kept).
+std::string printable(std::string_view text) {
+  std::ostringstream out;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n' || (byte >= 0x20 && byte < 0x7f)) {
+      out << c;
+    } else {
+      out << "\\x" << std::hex << std::setw(2) << std::setfill('0') << static_cast<int>(byte)
+          << std::dec;
+    }
+  }
+  return out.str();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Crash and hang reporting: the mutant being run, printed from a signal handler, a sanitizer's
+// death callback or the watchdog.
+
+std::mutex current_mutex;
+std::string current_report; // "seed ..., mutant ...:\n<text>"
+char crash_buffer[1 << 16];
+std::atomic<std::size_t> crash_length{0};
+
+void set_current(const std::string& report) {
+  const std::size_t length = std::min(report.size(), sizeof crash_buffer - 1);
+  crash_length.store(0);
+  std::memcpy(crash_buffer, report.data(), length);
+  crash_length.store(length);
+  const std::lock_guard<std::mutex> lock(current_mutex);
+  current_report = report;
+}
+
+void write_current_mutant() {
+  static const char header[] = "\n*** case_fuzz_test: the program died while running ";
+  ssize_t ignored = ::write(STDERR_FILENO, header, sizeof header - 1);
+  ignored = ::write(STDERR_FILENO, crash_buffer, crash_length.load());
+  ignored = ::write(STDERR_FILENO, "\n", 1);
+  (void)ignored;
+}
+
+extern "C" void on_fatal_signal(int signal_number) {
+  write_current_mutant();
+  std::signal(signal_number, SIG_DFL);
+  std::raise(signal_number);
+}
+
+void install_crash_reporting() {
+  static bool installed = false;
+  if (installed) {
+    return;
+  }
+  installed = true;
+  if (__sanitizer_set_death_callback != nullptr) {
+    // A sanitizer's report ends the program without a signal; this runs before it exits.
+    __sanitizer_set_death_callback(write_current_mutant);
+  }
+  if (!REVSPH_FUZZ_SANITIZED) { // AddressSanitizer handles (and reports) these itself
+    for (const int signal_number : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) {
+      std::signal(signal_number, on_fatal_signal);
+    }
+  }
+}
+
+// Aborts the process (after printing the current mutant) if one mutant runs longer than
+// watchdog_seconds.
+class Watchdog {
+public:
+  Watchdog() : thread_([this] { run(); }) {}
+  ~Watchdog() {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      stop_ = true;
+    }
+    wake_.notify_all();
+    thread_.join();
+  }
+  void start_mutant() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    ++generation_;
+    started_ = Clock::now();
+  }
+
+private:
+  void run() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    while (!stop_) {
+      const std::uint64_t generation = generation_;
+      const auto deadline = started_ + std::chrono::duration_cast<Clock::duration>(
+                                           std::chrono::duration<double>(watchdog_seconds));
+      wake_.wait_until(lock, deadline, [&] { return stop_ || generation_ != generation; });
+      if (!stop_ && generation_ == generation && generation != 0 && Clock::now() >= deadline) {
+        std::string report;
+        {
+          const std::lock_guard<std::mutex> current_lock(current_mutex);
+          report = current_report;
+        }
+        std::cerr << "\n*** case_fuzz_test: a mutant has run for more than " << watchdog_seconds
+                  << " s (a hang): " << report << std::endl;
+        std::abort();
+      }
+    }
+  }
+
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stop_ = false;
+  std::uint64_t generation_ = 0;
+  Clock::time_point started_ = Clock::now();
+  std::thread thread_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Mutations.
+
+// Keys a case may have, and some it may not.
+const std::vector<std::string>& key_names() {
+  // clang-format off
+  static const std::vector<std::string> names = {
+      "model", "dimension", "name", "rest_density", "sound_speed", "gravity",
+      "gravity_reference_height", "dr", "support_radius_over_dr", "courant_number", "dt",
+      "cell_size_factor", "radius_over_dr", "energy_per_mass", "epsilon", "min", "max", "kind",
+      "shape", "lattice", "spacing", "layers", "open_top", "t_end", "steps", "energy_every",
+      "snapshot_every", "progress_interval", "position_exponent", "velocity_exponent",
+      "density_exponent", "acceleration_exponent", "particles", "physics", "domain", "wall", "run",
+      "output", "fixed_point", "discretisation", "x", "dr2", "DR", "\"quoted key\"",
+      "'literal key'", "\"\"", "a.b", "physics.dr", "domain.min", "particles.kind", "min.x",
+      "\"dr\"", "d r", "1", "-", "_"};
+  // clang-format on
+  return names;
+}
+
+const std::vector<std::string>& table_headers() {
+  // clang-format off
+  static const std::vector<std::string> headers = {
+      "[physics]", "[discretisation]", "[wall]", "[domain]", "[run]", "[output]", "[fixed_point]",
+      "[[particles]]", "[particles]", "[[physics]]", "[domain.min]", "[particles.0]",
+      "[[particles.kind]]", "[]", "[[]]", "[ physics ]", "[\"physics\"]", "[run.steps]",
+      "[[domain]]", "[x]", "[physics.dr]"};
+  // clang-format on
+  return headers;
+}
+
+// Bytes that matter to a TOML parser or to UTF-8 handling.
+// clang-format off
+constexpr std::array<char, 34> special_bytes = {
+    '\0', '\n', '\r', '\t', ' ', '"', '\'', '[', ']', '{', '}', '=', '#', '.', ',', '\\', '-', '+',
+    '_', 'e', 'E', '0', '1', '9', ':', 'T', 'Z', static_cast<char>(0x80), static_cast<char>(0xc3),
+    static_cast<char>(0xe2), static_cast<char>(0xf0), static_cast<char>(0xff),
+    static_cast<char>(0xfe), static_cast<char>(0xc0)};
+// clang-format on
+
+class Mutator {
+public:
+  explicit Mutator(std::uint64_t seed) : random_(seed) {}
+
+  std::size_t below(std::size_t n) { return n == 0 ? 0 : random_() % n; }
+  bool chance(double p) { return std::uniform_real_distribution<double>(0.0, 1.0)(random_) < p; }
+  template <class T>
+  const T& pick(const std::vector<T>& items) {
+    return items[below(items.size())];
+  }
+
+  char random_byte() {
+    if (chance(0.6)) {
+      return special_bytes[below(special_bytes.size())];
+    }
+    return static_cast<char>(below(256));
+  }
+
+  std::string random_number() {
+    // clang-format off
+    static const std::vector<std::string> extremes = {
+        "0", "-0", "0.0", "-0.0", "+0.0", "1", "-1", "2", "3", "4", "-1.0", "0.5", "1e308",
+        "-1e308", "1.7976931348623157e308", "1e309", "-1e309", "1e-300", "-1e-300", "4.9e-324",
+        "1e-320", "2.2250738585072014e-308", "1e-400", "nan", "+nan", "-nan", "inf", "+inf",
+        "-inf", "9223372036854775807", "-9223372036854775808", "9223372036854775808",
+        "18446744073709551616", "2147483647", "2147483648", "-2147483649", "4294967296", "1000",
+        "1001", "-1000", "-1001", "1e3", "1.0e3", "1e10", "1e20", "1e-10", "0x7fffffffffffffff",
+        "0xff", "0o777", "0b101", "1_000", "1__0", "_1", "1.", ".5", "1e", "1e+", "--1", "+-1",
+        "0001", "00.5", "1.5e3.2", "1,5", "6.02214076e23", "1E2", "1e0", "0e0", "0e-0", "-0e0",
+        "12345678901234567890", "1e100", "-1e100", "1e-100", "1e150", "1e155", "1e200", "-1e200",
+        "1e-200", "1e-160", "1e-310"};
+    // clang-format on
+    switch (below(6)) {
+    case 0:
+    case 1:
+      return pick(extremes);
+    case 2: { // log-uniform double of either sign
+      const double magnitude =
+          std::pow(10.0, std::uniform_real_distribution<double>(-12, 12)(random_));
+      std::ostringstream out;
+      out << std::setprecision(static_cast<int>(1 + below(17)))
+          << (chance(0.2) ? -1 : 1) * magnitude;
+      std::string text = out.str();
+      if (text.find_first_of(".eEn") == std::string::npos && chance(0.5)) {
+        text += ".0";
+      }
+      return text;
+    }
+    case 3: { // integer of a random size
+      const int bits = static_cast<int>(below(63));
+      const std::int64_t value = static_cast<std::int64_t>(random_() >> (63 - bits));
+      return std::to_string(chance(0.2) ? -value : value);
+    }
+    case 4: { // very long digit strings
+      const std::size_t length = 20 + below(600);
+      std::string digits(length, '0');
+      for (char& d : digits) {
+        d = static_cast<char>('0' + below(10));
+      }
+      switch (below(3)) {
+      case 0:
+        digits[0] = '1';
+        return digits;
+      case 1:
+        return digits.insert(0, "0.");
+      default:
+        return digits.insert(0, "1.") + "e" + std::to_string(static_cast<int>(below(700)) - 350);
+      }
+    }
+    default: { // small values near the base case's scale, appended piecewise (GCC 12 warns
+               // falsely, -Wrestrict, about "e" + std::string)
+      std::string text = std::to_string(static_cast<int>(below(7)) - 1);
+      if (chance(0.5)) {
+        text += ".0";
+      }
+      if (chance(0.3)) {
+        text += 'e';
+        text += std::to_string(static_cast<int>(below(9)) - 4);
+      }
+      return text;
+    }
+    }
+  }
+
+  std::string random_value() {
+    // clang-format off
+    static const std::vector<std::string> strings = {
+        "\"fluid\"", "\"wall\"", "\"box\"", "\"container\"", "\"hexagonal\"", "\"square\"",
+        "\"wcsph\"", "\"\"", "\"\\u0000\"", "\"\\uD800\"", "'literal'", "\"\"\"multi\nline\"\"\"",
+        "'''raw\n'''", "\"\xff\xfe\"", "\"\xc3\x28\"", "\"fluid\\n\"", "\"a\\tb\"", "\"FLUID\"",
+        "\"dambreak-small\"", "\"../../etc/passwd\"", "\"\\\"\"", "\"unterminated", "true",
+        "false", "TRUE", "yes", "1979-05-27T07:32:00Z", "1979-05-27", "07:32:00", "{}",
+        "{ a = 1 }", "{ min = [0.0, 0.0] }", "{ kind = \"fluid\" }", "[]", "[[]]", "[{}]",
+        "[\"a\", \"b\"]", "[1, \"a\"]", "[true, false]", "[[1.0, 2.0], [3.0, 4.0]]", "[1.0,]",
+        "[,]", "[1.0 2.0]", "[", "]", "=", ""};
+    // clang-format on
+    switch (below(5)) {
+    case 0:
+    case 1:
+      return random_number();
+    case 2:
+      return pick(strings);
+    default: { // an array of 0 to 4 numbers (right and wrong lengths)
+      std::string array = "[";
+      const std::size_t length = below(5);
+      for (std::size_t i = 0; i < length; ++i) {
+        array += (i ? ", " : "") + random_number();
+      }
+      return array + (chance(0.1) ? ",]" : "]");
+    }
+    }
+  }
+
+  // One mutation of `text`.
+  void mutate(std::string& text) {
+    switch (below(14)) {
+    case 0: // delete characters
+      if (!text.empty()) {
+        const std::size_t at = below(text.size());
+        text.erase(at, 1 + below(std::min<std::size_t>(8, text.size() - at)));
+      }
+      break;
+    case 1: // insert a byte (or a few)
+      for (std::size_t n = 1 + below(3); n > 0; --n) {
+        text.insert(text.begin() + static_cast<std::ptrdiff_t>(below(text.size() + 1)),
+                    random_byte());
+      }
+      break;
+    case 2: // replace a byte
+      if (!text.empty()) {
+        text[below(text.size())] = random_byte();
+      }
+      break;
+    case 3:
+    case 4:
+    case 5: // replace a number
+      replace_number(text);
+      break;
+    case 6:
+    case 7: // replace a value by another of any type
+      replace_value(text);
+      break;
+    case 8: { // delete, duplicate or swap lines
+      std::vector<std::string> lines = split_lines(text);
+      if (lines.empty()) {
+        break;
+      }
+      const std::size_t a = below(lines.size());
+      const std::size_t b = below(lines.size());
+      switch (below(3)) {
+      case 0:
+        lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(a));
+        break;
+      case 1:
+        lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(b), lines[a]);
+        break;
+      default:
+        std::swap(lines[a], lines[b]);
+      }
+      text = join_lines(lines);
+      break;
+    }
+    case 9: // rename a key
+      rename_key(text);
+      break;
+    case 10:
+    case 11: { // insert a key (known or not) or a table header
+      std::vector<std::string> lines = split_lines(text);
+      const std::string line =
+          chance(0.25) ? pick(table_headers()) : pick(key_names()) + " = " + random_value();
+      lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(below(lines.size() + 1)), line);
+      text = join_lines(lines);
+      break;
+    }
+    case 12: // truncate
+      text.resize(below(text.size() + 1));
+      break;
+    default: { // change a table header
+      std::vector<std::string> lines = split_lines(text);
+      std::vector<std::size_t> headers;
+      for (std::size_t i = 0; i < lines.size(); ++i) {
+        if (!lines[i].empty() && lines[i][0] == '[') {
+          headers.push_back(i);
+        }
+      }
+      if (!headers.empty()) {
+        lines[pick(headers)] = pick(table_headers());
+        text = join_lines(lines);
+      }
+    }
+    }
+  }
+
+  // A --set override: a key of the case (or not) and a value.
+  std::pair<std::string, std::string> random_override() {
+    // clang-format off
+    static const std::vector<std::string> keys = {
+        "discretisation.dr", "discretisation.dt", "discretisation.courant_number",
+        "discretisation.support_radius_over_dr", "discretisation.cell_size_factor",
+        "physics.sound_speed", "physics.rest_density", "physics.gravity", "dimension", "model",
+        "name", "domain.min", "domain.max", "particles[0].min", "particles[1].max",
+        "particles[0].kind", "particles[1].shape", "particles[1].layers", "particles[0].lattice",
+        "particles[0].spacing", "particles[2].min", "particles[99999999999999999999].min",
+        "particles[-1].min", "particles[x].min", "particles[].min", "particles[0]",
+        "particles[0].min[0]", "particles.kind", "run.steps", "run.t_end", "run",
+        "output.energy_every", "fixed_point.position_exponent", "fixed_point.velocity_exponent",
+        "fixed_point.density_exponent", "fixed_point.acceleration_exponent", "a..b", ".a", "a.",
+        "", "physics.rest_density.x", "domain.min.x", "wall", "wall.epsilon", "x.y.z"};
+    // clang-format on
+    std::string value = chance(0.2) ? std::string(1, random_byte()) : random_value();
+    return {pick(keys), value};
+  }
+
+private:
+  static std::vector<std::string> split_lines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+      const std::size_t end = text.find('\n', start);
+      if (end == std::string::npos) {
+        lines.push_back(text.substr(start));
+        break;
+      }
+      lines.push_back(text.substr(start, end - start));
+      start = end + 1;
+    }
+    return lines;
+  }
+  static std::string join_lines(const std::vector<std::string>& lines) {
+    std::string text;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      text += (i ? "\n" : "") + lines[i];
+    }
+    return text;
+  }
+
+  static bool number_char(char c) {
+    return (c >= '0' && c <= '9') || c == '.' || c == 'e' || c == 'E' || c == '+' || c == '-' ||
+           c == '_';
+  }
+
+  // Replaces a number token (a digit with its neighbouring number characters).
+  void replace_number(std::string& text) {
+    std::vector<std::pair<std::size_t, std::size_t>> numbers;
+    for (std::size_t i = 0; i < text.size();) {
+      if (text[i] >= '0' && text[i] <= '9') {
+        std::size_t begin = i;
+        while (begin > 0 && number_char(text[begin - 1]) && text[begin - 1] != '_') {
+          --begin;
+        }
+        std::size_t end = i;
+        while (end < text.size() && number_char(text[end])) {
+          ++end;
+        }
+        numbers.emplace_back(begin, end);
+        i = end;
+      } else {
+        ++i;
+      }
+    }
+    if (numbers.empty()) {
+      return;
+    }
+    const auto [begin, end] = numbers[below(numbers.size())];
+    text.replace(begin, end - begin, random_number());
+  }
+
+  // Replaces what follows the '=' of a random "key = value" line (up to a comment).
+  void replace_value(std::string& text) {
+    std::vector<std::size_t> equals;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      if (text[i] == '=') {
+        equals.push_back(i);
+      }
+    }
+    if (equals.empty()) {
+      return;
+    }
+    const std::size_t at = equals[below(equals.size())] + 1;
+    std::size_t end = text.find_first_of("#\n", at);
+    end = end == std::string::npos ? text.size() : end;
+    std::string value = " ";
+    value += random_value();
+    value += ' ';
+    text.replace(at, end - at, value);
+  }
+
+  // Replaces the key of a random "key = value" line.
+  void rename_key(std::string& text) {
+    std::vector<std::size_t> line_starts;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      if ((i == 0 || text[i - 1] == '\n') && text.find('=', i) < text.find('\n', i)) {
+        line_starts.push_back(i);
+      }
+    }
+    if (line_starts.empty()) {
+      return;
+    }
+    const std::size_t start = line_starts[below(line_starts.size())];
+    const std::size_t equals = text.find('=', start);
+    std::string key = pick(key_names());
+    if (chance(0.3)) { // or the old key, slightly wrong
+      key = text.substr(start, equals - start);
+      while (!key.empty() && key.back() == ' ') {
+        key.pop_back();
+      }
+      key += chance(0.5) ? "s" : "_";
+    }
+    text.replace(start, equals - start, key + " ");
+  }
+
+  std::mt19937_64 random_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Running a mutant.
+
+enum class Outcome { ran, faulted_in_setup, faulted_in_steps, case_error };
+
+struct Overrides {
+  std::vector<std::pair<std::string, std::string>> items;
+};
+
+// What the command line does with a case (tools/revsph/common.cpp), then a few steps.
+Outcome run_mutant(const std::string& text, const Overrides& overrides, Arithmetic arithmetic) {
+  std::unique_ptr<Simulation> simulation;
+  RunSettings settings;
+  try {
+    CaseFile case_file = CaseFile::parse(text, "mutant.toml");
+    for (const auto& [key, value] : overrides.items) {
+      case_file.set(key, value);
+    }
+    settings = read_run_settings(case_file);
+    SimulationOptions options;
+    options.arithmetic = arithmetic;
+    options.memory_budget_bytes = memory_budget_bytes;
+    simulation = create_simulation(case_file, options);
+    case_file.require_no_unknown_keys();
+  } catch (const CaseError&) {
+    return Outcome::case_error;
+  } catch (const SimulationFault&) {
+    return Outcome::faulted_in_setup;
+  }
+  // A valid [run] length is never negative (what `revsph run` would take).
+  if (settings.length.given() && settings.length.steps_for(simulation->info().dt) < 0) {
+    throw std::logic_error("a valid case has a negative run length");
+  }
+  try {
+    simulation->advance(steps_per_setup);
+    simulation->energy();
+  } catch (const SimulationFault&) {
+    return Outcome::faulted_in_steps;
+  }
+  return Outcome::ran;
+}
+
+std::string describe_current_exception() {
+  try {
+    throw;
+  } catch (const std::bad_alloc& error) {
+    return std::string("std::bad_alloc: ") + error.what();
+  } catch (const std::exception& error) {
+    return std::string("an exception of type ") + typeid(error).name() + ": " + error.what();
+  } catch (...) {
+    return "an exception of unknown type";
+  }
+}
+
+// The case text without its comments (the built-in cases have no '#' inside strings).
+std::string without_comments(const std::string& text) {
+  std::string result;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    line = line.substr(0, line.find('#'));
+    while (!line.empty() && line.back() == ' ') {
+      line.pop_back();
+    }
+    if (!line.empty()) {
+      result += line + "\n";
+    }
+  }
+  return result;
+}
+
+struct FuzzSettings {
+  std::string builtin_case;
+  std::string coarse_from; // a line of the built-in case ...
+  std::string coarse_to;   // ... replaced to make it cheap
+  std::uint64_t default_mutants = 0;
+  std::uint64_t seed_offset = 0; // a different stream per test
+};
+
+void fuzz(const FuzzSettings& settings) {
+  install_crash_reporting();
+  const std::uint64_t seed = env_or("REVSPH_CASE_FUZZ_SEED", default_seed) + settings.seed_offset;
+  const std::uint64_t mutant_count = env_or("REVSPH_CASE_FUZZ_MUTANTS", settings.default_mutants);
+  // Diagnostics: print every mutant slower than this many milliseconds.
+  const std::uint64_t slow_report_ms = env_or("REVSPH_CASE_FUZZ_SLOW_MS", 0);
+  SCOPED_TRACE("seed " + std::to_string(seed) +
+               " (REVSPH_CASE_FUZZ_SEED=" + std::to_string(seed - settings.seed_offset) + ")");
+
+  // One thread: the cases are tiny, and OpenMP barriers on a loaded machine (ctest -j, other
+  // builds) would make the per-mutant times meaningless.
+  const int threads = thread_count();
+  set_thread_count(1);
+  struct RestoreThreads {
+    int threads;
+    ~RestoreThreads() { set_thread_count(threads); }
+  } restore{threads};
+
+  const std::string base = testing::replaced_once(testing::builtin_case_text(settings.builtin_case),
+                                                  settings.coarse_from, settings.coarse_to);
+  // Most mutants start from the case without its comments, so that edits land on what is read.
+  const std::string base_without_comments = without_comments(base);
+  // The unmutated coarse case must be a valid, cheap setup, or the mutants test little.
+  ASSERT_EQ(run_mutant(base, {}, Arithmetic::fixed), Outcome::ran);
+  ASSERT_EQ(run_mutant(base_without_comments, {}, Arithmetic::fixed), Outcome::ran);
+
+  Mutator mutator(seed);
+  Watchdog watchdog;
+  std::array<std::uint64_t, 4> outcomes{};
+  int failures = 0;
+  double slowest = 0.0; // CPU seconds
+  double slowest_wall = 0.0;
+  std::uint64_t slowest_mutant = 0;
+  const auto started = Clock::now();
+  std::uint64_t done = 0;
+  for (std::uint64_t m = 0; m < mutant_count && failures < max_reported_failures; ++m, ++done) {
+    std::string text = mutator.chance(0.8) ? base_without_comments : base;
+    for (std::size_t n = 1 + (mutator.chance(0.4) ? mutator.below(6) : 0); n > 0; --n) {
+      mutator.mutate(text);
+    }
+    Overrides overrides;
+    if (mutator.chance(0.1)) {
+      for (std::size_t n = 1 + mutator.below(2); n > 0; --n) {
+        overrides.items.push_back(mutator.random_override());
+      }
+    }
+    const Arithmetic arithmetic = mutator.chance(0.2) ? Arithmetic::floating : Arithmetic::fixed;
+
+    std::ostringstream report;
+    report << "seed " << seed << ", mutant " << m << " (" << to_string(arithmetic) << " arithmetic";
+    for (const auto& [key, value] : overrides.items) {
+      report << ", --set '" << printable(key) << "=" << printable(value) << "'";
+    }
+    report << "), case text:\n" << printable(text) << "\n--- end of case text";
+    set_current(report.str());
+    watchdog.start_mutant();
+
+    const auto mutant_started = Clock::now();
+    const double cpu_started = thread_cpu_seconds();
+    try {
+      ++outcomes[static_cast<std::size_t>(run_mutant(text, overrides, arithmetic))];
+    } catch (...) {
+      ++failures;
+      ADD_FAILURE() << "mutant ended with " << describe_current_exception()
+                    << " (allowed: success, revsph::CaseError, revsph::SimulationFault); "
+                    << report.str();
+    }
+    const double seconds = thread_cpu_seconds() - cpu_started;
+    const double wall = std::chrono::duration<double>(Clock::now() - mutant_started).count();
+    if (seconds > slowest) {
+      slowest = seconds;
+      slowest_wall = wall;
+      slowest_mutant = m;
+    }
+    if (slow_report_ms > 0 && seconds * 1000.0 > static_cast<double>(slow_report_ms)) {
+      std::cout << "slow mutant: " << seconds * 1000.0 << " ms CPU, " << report.str() << "\n";
+    }
+    if (seconds > per_mutant_limit_seconds) {
+      ++failures;
+      ADD_FAILURE() << "mutant took " << seconds << " s of CPU time (limit "
+                    << per_mutant_limit_seconds << " s); " << report.str();
+    }
+  }
+  const double total = std::chrono::duration<double>(Clock::now() - started).count();
+  std::cout << settings.builtin_case << ": " << done << " mutants (seed " << seed << ") in "
+            << total << " s: " << outcomes[0] << " ran, " << outcomes[3] << " CaseError, "
+            << outcomes[1] << " SimulationFault in setup, " << outcomes[2]
+            << " SimulationFault while stepping; slowest mutant " << slowest_mutant << ": "
+            << slowest * 1000.0 << " ms CPU (" << slowest_wall * 1000.0 << " ms wall)\n";
+  // The mutants must reach beyond the parser: a fair share builds and steps a simulation.
+  if (failures == 0 && mutant_count >= 1000) {
+    EXPECT_GT(outcomes[0] + outcomes[1] + outcomes[2], mutant_count / 20);
+  }
+}
+
+TEST(CaseFuzz, MutantsOfDambreakSmall2D) {
+  // dr 0.1: 200 fluid and about 150 wall particles.
+  fuzz({"dambreak-small", "\ndr = 0.02", "\ndr = 0.1", 12000, 0});
+}
+
+TEST(CaseFuzz, MutantsOfDambreakSmall3D) {
+  // dr 0.125: 16 fluid and about 300 wall particles.
+  fuzz({"dambreak-3d-small", "dr = 0.025", "dr = 0.125", 8000, 1});
+}
+
+} // namespace
+} // namespace revsph
