@@ -17,20 +17,19 @@ Usage: fault_test.py REVSPH_BINARY [unittest options]   (or REVSPH=... in the en
 """
 
 import glob
-import hashlib
 import json
 import os
 import re
 import shutil
-import struct
 import subprocess
-import sys
-import tempfile
 import tomllib
 import unittest
 
 import h5py
 import numpy as np
+
+from revsph_testing import (environment, python_state_hash, run_unittests, snapshot_step,
+                            text_attr)
 
 REVSPH = None
 WORK = None
@@ -45,50 +44,9 @@ INT64_MIN, INT64_MAX = -(2 ** 63), 2 ** 63 - 1
 # ----------------------------------------------------------------------------------------------
 # helpers
 
-def environment():
-    # Waiting OpenMP threads sleep instead of spinning: runs keep their pace on a loaded machine.
-    env = dict(os.environ)
-    env.setdefault("OMP_WAIT_POLICY", "PASSIVE")
-    return env
-
-
 def run_revsph(*args, timeout=240):
     return subprocess.run([REVSPH, *[str(a) for a in args]], capture_output=True, text=True,
                           timeout=timeout, env=environment())
-
-
-def text_attr(value):
-    return value.decode("utf-8") if isinstance(value, bytes) else str(value)
-
-
-def python_state_hash(h5):
-    """verify/state_hash.cpp, byte for byte (see xdmf_reader_test.py)."""
-    sha = hashlib.sha256()
-
-    def add_integer(value):
-        sha.update(struct.pack("<q", int(value)))
-
-    def add_string(text):
-        data = text.encode("utf-8")
-        add_integer(len(data))
-        sha.update(data)
-
-    for entry in h5.attrs["field_order"]:
-        set_and_name = text_attr(entry)
-        particle_set, name = set_and_name.split("/", 1)
-        dataset = h5["/state/" + set_and_name]
-        components = int(dataset.attrs["components"])
-        raw_kind = text_attr(dataset.attrs["raw_kind"])
-        rows = np.asarray(dataset[()])
-        count = rows.shape[0]
-        add_string(particle_set)
-        add_string(name)
-        add_integer(components)
-        add_integer(count)
-        add_integer(int(dataset.attrs["scale_exponent"]))
-        add_integer(0 if raw_kind == "fixed_point" else 1)
-        sha.update(np.ascontiguousarray(rows.reshape(count, components).T, dtype="<i8").tobytes())
-    return sha.hexdigest()
 
 
 def toml_value(value):
@@ -147,12 +105,6 @@ def free_fall_case(name, domain_min_y, velocity_exponent=None, extra_block=None)
     if velocity_exponent is not None:
         case["fixed_point"] = {"velocity_exponent": velocity_exponent}
     return case
-
-
-def snapshot_step(path):
-    match = re.fullmatch(r"step_(\d{9})\.h5", os.path.basename(path))
-    assert match, path
-    return int(match.group(1))
 
 
 def read_state(path):
@@ -500,20 +452,7 @@ class FaultTest(unittest.TestCase):
 
 
 def main():
-    global REVSPH, WORK
-    argv = sys.argv[1:]
-    if argv and not argv[0].startswith("-"):
-        REVSPH = os.path.abspath(argv.pop(0))
-    else:
-        REVSPH = os.environ.get("REVSPH")
-    if not REVSPH or not os.access(REVSPH, os.X_OK):
-        sys.exit("usage: fault_test.py REVSPH_BINARY (or set REVSPH)")
-    WORK = tempfile.mkdtemp(prefix="revsph_fault_")
-    try:
-        program = unittest.main(argv=[sys.argv[0]] + argv, exit=False, verbosity=2)
-    finally:
-        shutil.rmtree(WORK, ignore_errors=True)
-    sys.exit(0 if program.result.wasSuccessful() else 1)
+    run_unittests(globals(), "revsph_fault_")
 
 
 if __name__ == "__main__":

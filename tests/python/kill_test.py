@@ -26,19 +26,18 @@ import csv
 import glob
 import os
 import random
-import re
 import shutil
 import signal
 import statistics
 import subprocess
-import sys
-import tempfile
 import time
 import unittest
 import xml.etree.ElementTree as ET
 
 import h5py
 import numpy as np
+
+from revsph_testing import environment, run_unittests, snapshot_step, text_attr
 
 REVSPH = None
 WORK = None
@@ -51,27 +50,11 @@ OVERRIDES = ["discretisation.dr=0.04", f"output.snapshot_every={SNAPSHOT_EVERY}"
              "output.energy_every=2"]
 
 
-def text_attr(value):
-    return value.decode("utf-8") if isinstance(value, bytes) else str(value)
-
-
-def environment():
-    # Waiting OpenMP threads sleep instead of spinning: runs keep their pace on a loaded machine.
-    env = dict(os.environ)
-    env.setdefault("OMP_WAIT_POLICY", "PASSIVE")
-    return env
-
-
 def run_command(out):
     args = [REVSPH, "run", "dambreak-small", "--out", out, "--steps", str(STEPS)]
     for override in OVERRIDES:
         args += ["--set", override]
     return args
-
-
-def snapshot_step(path):
-    match = re.fullmatch(r"step_(\d{9})\.h5", os.path.basename(path))
-    return int(match.group(1)) if match else None
 
 
 class SnapshotProblem(Exception):
@@ -322,20 +305,7 @@ class KillTest(unittest.TestCase):
 
 
 def main():
-    global REVSPH, WORK
-    argv = sys.argv[1:]
-    if argv and not argv[0].startswith("-"):
-        REVSPH = os.path.abspath(argv.pop(0))
-    else:
-        REVSPH = os.environ.get("REVSPH")
-    if not REVSPH or not os.access(REVSPH, os.X_OK):
-        sys.exit("usage: kill_test.py REVSPH_BINARY (or set REVSPH)")
-    WORK = tempfile.mkdtemp(prefix="revsph_kill_")
-    try:
-        program = unittest.main(argv=[sys.argv[0]] + argv, exit=False, verbosity=2)
-    finally:
-        shutil.rmtree(WORK, ignore_errors=True)
-    sys.exit(0 if program.result.wasSuccessful() else 1)
+    run_unittests(globals(), "revsph_kill_")
 
 
 if __name__ == "__main__":

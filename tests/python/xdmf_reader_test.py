@@ -13,20 +13,17 @@ Usage: xdmf_reader_test.py REVSPH_BINARY [unittest options]   (or REVSPH=... in 
 
 import csv
 import glob
-import hashlib
 import json
 import os
 import re
-import shutil
-import struct
 import subprocess
-import sys
-import tempfile
 import unittest
 import xml.etree.ElementTree as ET
 
 import h5py
 import numpy as np
+
+from revsph_testing import python_state_hash, run_unittests, text_attr
 
 REVSPH = None
 WORK = None
@@ -36,45 +33,6 @@ SNAPSHOT_EVERY = 100
 ENERGY_EVERY = 50
 OVERRIDES = ["discretisation.dr=0.04", f"output.snapshot_every={SNAPSHOT_EVERY}",
              f"output.energy_every={ENERGY_EVERY}"]
-
-
-def text_attr(value):
-    return value.decode("utf-8") if isinstance(value, bytes) else str(value)
-
-
-def python_state_hash(h5):
-    """verify/state_hash.cpp, byte for byte: for each field of field_order, length-prefixed set
-    name and variable name, then components, count, scale exponent, raw kind (0 fixed point,
-    1 IEEE double), all as int64 little endian, then the raw int64 values component-major."""
-    sha = hashlib.sha256()
-
-    def add_integer(value):
-        sha.update(struct.pack("<q", int(value)))
-
-    def add_string(text):
-        data = text.encode("utf-8")
-        add_integer(len(data))
-        sha.update(data)
-
-    for entry in h5.attrs["field_order"]:
-        set_and_name = text_attr(entry)
-        particle_set, name = set_and_name.split("/", 1)
-        dataset = h5["/state/" + set_and_name]
-        components = int(dataset.attrs["components"])
-        raw_kind = text_attr(dataset.attrs["raw_kind"])
-        assert raw_kind in ("fixed_point", "ieee_double"), raw_kind
-        rows = np.asarray(dataset[()])
-        assert rows.dtype == np.int64, rows.dtype
-        count = rows.shape[0]
-        add_string(particle_set)
-        add_string(name)
-        add_integer(components)
-        add_integer(count)
-        add_integer(int(dataset.attrs["scale_exponent"]))
-        add_integer(0 if raw_kind == "fixed_point" else 1)
-        component_major = np.ascontiguousarray(rows.reshape(count, components).T, dtype="<i8")
-        sha.update(component_major.tobytes())
-    return sha.hexdigest()
 
 
 def run_revsph(*args, timeout=240):
@@ -291,20 +249,7 @@ class XdmfReaderTest(unittest.TestCase):
 
 
 def main():
-    global REVSPH, WORK
-    argv = sys.argv[1:]
-    if argv and not argv[0].startswith("-"):
-        REVSPH = os.path.abspath(argv.pop(0))
-    else:
-        REVSPH = os.environ.get("REVSPH")
-    if not REVSPH or not os.access(REVSPH, os.X_OK):
-        sys.exit("usage: xdmf_reader_test.py REVSPH_BINARY (or set REVSPH)")
-    WORK = tempfile.mkdtemp(prefix="revsph_xdmf_")
-    try:
-        program = unittest.main(argv=[sys.argv[0]] + argv, exit=False, verbosity=2)
-    finally:
-        shutil.rmtree(WORK, ignore_errors=True)
-    sys.exit(0 if program.result.wasSuccessful() else 1)
+    run_unittests(globals(), "revsph_xdmf_")
 
 
 if __name__ == "__main__":
