@@ -21,6 +21,8 @@ public:
   void record(std::int64_t step, double time, const EnergyBudget& budget);
 
   bool empty() const { return !recorded_; }
+  // E(0) for the relative error, if not the first record's total (a later half of a run).
+  void set_reference_total(double total) { initial_total_ = total; }
   double initial_total() const { return initial_total_.value_or(0.0); }
   double last_relative_error() const { return last_relative_error_; }
   double max_relative_error() const { return max_relative_error_; }

@@ -13,23 +13,32 @@ VerifyReport verify_reversibility(Simulation& simulation, const VerifyOptions& o
   const StateSnapshot initial = simulation.capture_state();
   report.initial_hash = state_hash(initial);
 
-  auto run_phase = [&](VerifyPhase phase, ProgressReporter* progress) {
-    RunHooks hooks;
-    hooks.energy_log = options.energy_log;
-    hooks.energy_every = options.energy_every;
-    hooks.progress = progress;
-    if (options.after_step) {
-      hooks.after_step = [&](Simulation& s, std::int64_t step) {
-        options.after_step(s, phase, step);
-      };
+  auto run_phase = [&](VerifyPhase phase, const PhaseHooks& phase_hooks) {
+    if (phase_hooks.at_start) {
+      phase_hooks.at_start(simulation);
     }
+    RunHooks hooks;
+    hooks.energy_log = phase_hooks.energy_log;
+    hooks.energy_every = options.energy_every;
+    hooks.progress = phase_hooks.progress;
+    hooks.after_step = [&](Simulation& s, std::int64_t step) {
+      if (phase_hooks.after_step) {
+        phase_hooks.after_step(s);
+      }
+      if (options.after_step) {
+        options.after_step(s, phase, step);
+      }
+    };
     run_steps(simulation, options.steps, hooks);
+    if (phase_hooks.at_end) {
+      phase_hooks.at_end(simulation);
+    }
   };
 
-  run_phase(VerifyPhase::forward, options.forward_progress);
+  run_phase(VerifyPhase::forward, options.forward);
   report.turning_point_hash = state_hash(simulation.capture_state());
   simulation.reverse_time();
-  run_phase(VerifyPhase::backward, options.backward_progress);
+  run_phase(VerifyPhase::backward, options.backward);
   simulation.reverse_time();
   if (options.before_compare) {
     options.before_compare(simulation);

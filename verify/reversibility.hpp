@@ -15,13 +15,23 @@ namespace revsph {
 
 enum class VerifyPhase { forward, backward };
 
+// What to do during one half of the experiment (all optional).
+struct PhaseHooks {
+  ProgressReporter* progress = nullptr;
+  EnergyLog* energy_log = nullptr;
+  // At the start of the phase (for the backward half: after the time reversal) and at its end
+  // (before the next reversal): e.g. write snapshots.
+  std::function<void(Simulation&)> at_start;
+  std::function<void(Simulation&)> at_end;
+  // After every step of the phase.
+  std::function<void(Simulation&)> after_step;
+};
+
 struct VerifyOptions {
   std::int64_t steps = 0; // each way
-  // Optional: progress lines and energy records for both halves.
-  ProgressReporter* forward_progress = nullptr;
-  ProgressReporter* backward_progress = nullptr;
-  EnergyLog* energy_log = nullptr;
   std::int64_t energy_every = 100;
+  PhaseHooks forward;
+  PhaseHooks backward;
   // Test hooks: after each step of a phase (step counted from 1 within the phase), and just
   // before the final comparison. They may change the state through Simulation::restore_state.
   std::function<void(Simulation&, VerifyPhase, std::int64_t)> after_step;

@@ -22,6 +22,8 @@ struct VerifyCommandOptions {
   std::optional<std::int64_t> steps;
   std::optional<double> t_end;
   bool check_substeps = false;
+  std::string out_dir; // empty: no output files
+  bool force = false;
 };
 
 struct HashOptions {

@@ -90,6 +90,10 @@ int main(int argc, char** argv) {
   add_length_options(*verify_app, verify.steps, verify.t_end);
   verify_app->add_flag("--substeps", verify.check_substeps,
                        "also check each sub-step (kick, drift, …) on its own");
+  verify_app->add_option("--out", verify.out_dir,
+                         "keep the experiment: OUT/forward/ and OUT/backward/ (energy.csv, "
+                         "snapshots, run.xdmf) and OUT/summary.json");
+  verify_app->add_flag("--force", verify.force, "overwrite the files of a previous run in --out");
 
   HashOptions hash;
   auto* hash_app = app.add_subcommand(
