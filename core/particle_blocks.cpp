@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <sstream>
 
 namespace revsph {
@@ -138,8 +139,40 @@ std::vector<Vec<D>> lattice_points_outside(Lattice lattice, const Box<D>& region
 
 } // namespace
 
+// A Vogel (sunflower) spiral about the region's centre: point k at radius spacing sqrt((k + 1/2)
+// / pi) and angle k times the golden angle, so that every point stands for an area spacing^2
+// and the arrangement has no lattice directions. Points at least half a spacing inside the
+// region are kept.
+std::vector<Vec<2>> vogel_points(const Box<2>& region, double spacing) {
+  const double golden_angle = std::numbers::pi * (3.0 - std::sqrt(5.0));
+  const Vec<2> centre{0.5 * (region.min[0] + region.max[0]), 0.5 * (region.min[1] + region.max[1])};
+  const double reach = std::hypot(region.max[0] - centre[0], region.max[1] - centre[1]);
+  const double margin = 0.5 * spacing * (1.0 - relative_tolerance);
+  std::vector<Vec<2>> points;
+  for (long k = 0;; ++k) {
+    const double radius = spacing * std::sqrt((static_cast<double>(k) + 0.5) / std::numbers::pi);
+    if (radius > reach) {
+      break;
+    }
+    const double angle = static_cast<double>(k) * golden_angle;
+    const Vec<2> p{centre[0] + radius * std::cos(angle), centre[1] + radius * std::sin(angle)};
+    if (p[0] >= region.min[0] + margin && p[0] <= region.max[0] - margin &&
+        p[1] >= region.min[1] + margin && p[1] <= region.max[1] - margin) {
+      points.push_back(p);
+    }
+  }
+  return points;
+}
+
 template <int D>
 std::vector<Vec<D>> lattice_points(Lattice lattice, const Box<D>& region, double spacing) {
+  if (lattice == Lattice::vogel) {
+    if constexpr (D == 2) {
+      return vogel_points(region, spacing);
+    } else {
+      throw std::invalid_argument("the Vogel spiral lattice is two-dimensional");
+    }
+  }
   return lattice_points_outside<D>(lattice, region, spacing, nullptr);
 }
 
@@ -204,9 +237,14 @@ BlockSpec<D> read_block(const CaseFile& case_file, std::size_t index, double def
   const std::string lattice_name = case_file.string_or(field("lattice"), "square");
   if (lattice_name == "hexagonal") {
     spec.lattice = Lattice::hexagonal;
+  } else if (lattice_name == "vogel") {
+    spec.lattice = Lattice::vogel;
+    if (D != 2) {
+      case_file.fail(field("lattice"), "the \"vogel\" spiral lattice is two-dimensional");
+    }
   } else if (lattice_name != "square") {
     case_file.fail(field("lattice"),
-                   "expected \"square\" or \"hexagonal\", got \"" + lattice_name + "\"");
+                   "expected \"square\", \"hexagonal\" or \"vogel\", got \"" + lattice_name + "\"");
   }
   spec.spacing = default_spacing;
   if (case_file.has(field("spacing"))) {
@@ -223,6 +261,9 @@ BlockSpec<D> read_block(const CaseFile& case_file, std::size_t index, double def
   const std::string shape = case_file.string_or(field("shape"), "box");
   if (shape == "container") {
     spec.shape = Shape::container;
+    if (spec.lattice == Lattice::vogel) {
+      case_file.fail(field("lattice"), "a container's walls are on a square or hexagonal lattice");
+    }
     const std::int64_t layers = case_file.integer_or(field("layers"), 1);
     if (layers < 1 || layers > 1000) {
       case_file.fail(field("layers"),

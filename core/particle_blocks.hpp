@@ -6,9 +6,11 @@
 //   shape   = "box"              "box": the region [min, max] filled;
 //                                "container": `layers` lattice layers around the box [min, max]
 //                                (its walls), with `open_top = true` leaving the top open
-//   lattice = "square"           "square" or "hexagonal" (2D: triangular; 3D: hexagonal close
-//   packed) min, max                     corners of the region (m) spacing lattice spacing (m),
-//   default the case's dr
+//   lattice = "square"           "square", "hexagonal" (2D: triangular; 3D: hexagonal close
+//                                packed) or "vogel" (2D: a Vogel spiral about the region's
+//                                centre, one particle per spacing^2, no lattice directions)
+//   min, max                     corners of the region (m)
+//   spacing                      lattice spacing (m), default the case's dr
 //
 // Particles sit at lattice points at least half a lattice period inside the region, so that
 // blocks placed side by side, and a container around a block, continue one lattice.
@@ -23,7 +25,7 @@
 
 namespace revsph {
 
-enum class Lattice { square, hexagonal };
+enum class Lattice { square, hexagonal, vogel };
 
 template <int D>
 struct ParticleBlock {

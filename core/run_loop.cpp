@@ -20,6 +20,10 @@ void run_steps(Simulation& simulation, std::int64_t steps, const RunHooks& hooks
     if (hooks.energy_log != nullptr) {
       hooks.energy_log->record(simulation.steps_taken(), simulation.time(), simulation.energy());
     }
+    if (hooks.diagnostics_log != nullptr) {
+      hooks.diagnostics_log->record(simulation.steps_taken(), simulation.time(),
+                                    simulation.diagnostics());
+    }
   };
   if (hooks.energy_log != nullptr && hooks.energy_log->empty()) {
     record_energy();

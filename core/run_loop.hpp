@@ -2,6 +2,7 @@
 // Advancing a simulation with energy output and progress: the loop behind `revsph run` and
 // both halves of `revsph verify`.
 
+#include "core/diagnostics_log.hpp"
 #include "core/energy_log.hpp"
 #include "core/progress.hpp"
 #include "core/simulation.hpp"
@@ -13,6 +14,7 @@ namespace revsph {
 
 struct RunHooks {
   EnergyLog* energy_log = nullptr; // records every `energy_every` steps (and at both ends)
+  DiagnosticsLog* diagnostics_log = nullptr; // same cadence
   std::int64_t energy_every = 100;
   ProgressReporter* progress = nullptr;
   // Called after every step with the number of steps taken so far in this call.

@@ -33,6 +33,9 @@ struct SimulationInfo {
   Arithmetic arithmetic = Arithmetic::fixed;
   double dt = 0.0;
   std::vector<ParticleCount> particles;
+  // Dissipative operations outside the reversible step (an active filter, say): with any of
+  // them the case cannot return bit for bit, and the verifier says so.
+  std::vector<std::string> irreversible_terms;
 
   std::size_t moving_particle_count() const {
     std::size_t n = 0;
@@ -61,6 +64,19 @@ concept Model = requires(M& model, const M& const_model) {
   model.reverse_time();
 };
 
+// Optional: quantities reported with the energies every output (an error norm against an
+// analytic solution, say), as named values.
+template <class M>
+concept HasDiagnostics = requires(M& model) {
+  { model.diagnostics() } -> std::same_as<std::vector<EnergyTerm>>;
+};
+
+// Optional: an irreversible operation after each full step (listed in irreversible_terms).
+template <class M>
+concept HasIrreversibleStep = requires(M& model, std::int64_t step) {
+  model.after_step(step);
+};
+
 class Simulation {
 public:
   virtual ~Simulation() = default;
@@ -74,6 +90,8 @@ public:
   virtual void restore_state(const StateSnapshot& snapshot) = 0;
   virtual EnergyBudget energy() = 0;
   virtual std::vector<ParticleView> derived_views() = 0;
+  // Empty unless the model reports diagnostics.
+  virtual std::vector<EnergyTerm> diagnostics() = 0;
 
   // Single sub-steps, to check each one's reversibility on its own.
   virtual std::vector<std::string> substep_names() const = 0;
@@ -102,6 +120,9 @@ public:
     for (std::int64_t s = 0; s < steps; ++s) {
       try {
         apply_step<M>(model_, M::palindrome(), dt);
+        if constexpr (HasIrreversibleStep<M>) {
+          model_.after_step(steps_taken_ + 1);
+        }
       } catch (const SimulationFault& fault) {
         throw SimulationFault(fault.fault(), steps_taken_ + 1);
       }
@@ -120,6 +141,13 @@ public:
   }
   std::vector<ParticleView> derived_views() override {
     return attributing_faults([&] { return model_.derived_views(); });
+  }
+  std::vector<EnergyTerm> diagnostics() override {
+    if constexpr (HasDiagnostics<M>) {
+      return attributing_faults([&] { return model_.diagnostics(); });
+    } else {
+      return {};
+    }
   }
 
   std::vector<std::string> substep_names() const override {

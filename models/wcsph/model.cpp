@@ -3,8 +3,10 @@
 #include "core/verlet.hpp"
 #include "models/wcsph/equations.hpp"
 #include "models/wcsph/forces.hpp"
+#include "models/wcsph/gresho.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace revsph::wcsph {
 
@@ -15,13 +17,15 @@ std::size_t cell_budget(std::size_t particles) {
   return 4 * particles + 4096;
 }
 
+// Real coordinates of a field, written into `out` from index `first` on.
 template <class Arith, int D>
-void real_coordinates(const StateField<typename Arith::Raw>& field, CoordinateArrays<D>& out) {
+void real_coordinates(const StateField<typename Arith::Raw>& field, CoordinateArrays<D>& out,
+                      std::size_t first) {
   for (int k = 0; k < D; ++k) {
     const auto raw = field.component(k);
-    out[k].resize(raw.size());
+    out[k].resize(std::max(out[k].size(), first + raw.size()));
     for (std::size_t i = 0; i < raw.size(); ++i) {
-      out[k][i] = Arith::real(raw[i], field.info().scale);
+      out[k][first + i] = Arith::real(raw[i], field.info().scale);
     }
   }
 }
@@ -32,24 +36,36 @@ template <int D, class Arith>
 Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, Raw> state)
     : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
       kernel_(parameters_.support_radius),
-      fluid_cells_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
-                   cell_budget(state_.position.count())),
+      carrier_cells_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
+                     cell_budget(state_.position.count() + state_.dummy_position.count())),
       wall_cells_(parameters_.domain,
                   std::max(parameters_.support_radius, parameters_.wall_radius) *
                       parameters_.cell_size_factor,
                   cell_budget(state_.wall_position.count())) {
-  // Eq. (5): with C_a = 0 the density is the plain kernel sum; C_a = rho0 - that sum makes
-  // rho_a(0) = rho0 for every particle.
+  if (parameters_.anti_clump_pressure > 0.0) {
+    anti_clump_kernel_.emplace(0.5 * parameters_.dr); // App. A: support dr / 2
+  }
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::initialise_density_constants(std::span<const double> target_density) {
+  // With C_a = 0 the density is the plain kernel sum; C_a = target - that sum.
   std::fill(state_.density_constant.all().begin(), state_.density_constant.all().end(), Raw{});
+  std::fill(state_.dummy_density_constant.all().begin(), state_.dummy_density_constant.all().end(),
+            Raw{});
+  invalidate_derived();
   update_derived();
-  auto constant = state_.density_constant.component(0);
-  const auto& scale = state_.density_constant.info().scale;
-  for (std::size_t a = 0; a < constant.size(); ++a) {
-    if (!Arith::try_from_real(parameters_.rest_density - density_[a], scale, constant[a])) {
-      throw SimulationFault({"fluid", a, "density_constant", "does not fit its scale"}, 0);
+  const std::size_t fluid = fluid_count();
+  for (std::size_t a = 0; a < density_.size(); ++a) {
+    auto& field = a < fluid ? state_.density_constant : state_.dummy_density_constant;
+    const std::size_t i = a < fluid ? a : a - fluid;
+    if (!Arith::try_from_real(target_density[a] - density_[a], field.info().scale,
+                              field.at(0, i))) {
+      throw SimulationFault(
+          {a < fluid ? "fluid" : "dummy", i, "density_constant", "does not fit its scale"}, 0);
     }
   }
-  derived_valid_ = false;
+  invalidate_derived();
 }
 
 template <int D, class Arith>
@@ -82,29 +98,65 @@ void Model<D, Arith>::reverse_time() {
 }
 
 template <int D, class Arith>
+void Model<D, Arith>::update_constants() {
+  if (constants_valid_) {
+    return;
+  }
+  wall_position_ = {};
+  real_coordinates<Arith, D>(state_.wall_position, wall_position_, 0);
+  try {
+    wall_cells_.build(view_of<D>(wall_position_));
+  } catch (const PointOutsideDomain& outside) {
+    throw SimulationFault({"wall", outside.index(), "position", outside.what()}, -1);
+  }
+  const std::size_t fluid = fluid_count();
+  const std::size_t dummies = state_.dummy_position.count();
+  mass_.resize(fluid + dummies);
+  density_constant_.resize(fluid + dummies);
+  for (std::size_t a = 0; a < fluid; ++a) {
+    mass_[a] = Arith::real(state_.mass.at(0, a), state_.mass.info().scale);
+    density_constant_[a] = state_.density_constant.at(0, a);
+  }
+  for (std::size_t d = 0; d < dummies; ++d) {
+    mass_[fluid + d] = Arith::real(state_.dummy_mass.at(0, d), state_.dummy_mass.info().scale);
+    density_constant_[fluid + d] = state_.dummy_density_constant.at(0, d);
+  }
+  // Dummy positions follow the fluid's in the carrier array and never change.
+  real_coordinates<Arith, D>(state_.dummy_position, position_, fluid);
+  constants_valid_ = true;
+}
+
+template <int D, class Arith>
 void Model<D, Arith>::update_derived() {
   if (derived_valid_) {
     return;
   }
-  update_walls();
-  real_coordinates<Arith, D>(state_.position, position_);
+  update_constants();
+  real_coordinates<Arith, D>(state_.position, position_, 0);
+  const std::size_t fluid = fluid_count();
   const CoordinateView<D> x = view_of<D>(position_);
   const CoordinateView<D> wall_x = view_of<D>(wall_position_);
   try {
-    fluid_cells_.build(x);
+    carrier_cells_.build(x);
   } catch (const PointOutsideDomain& outside) {
-    throw SimulationFault(
-        {"fluid", outside.index(), "position", "left the domain: " + std::string(outside.what())},
-        -1);
+    const std::size_t a = outside.index();
+    throw SimulationFault({carrier_set(a, fluid), index_in_set(a, fluid), "position",
+                           "left the domain: " + std::string(outside.what())},
+                          -1);
   }
-  find_neighbours<D>(fluid_cells_, x, x, parameters_.support_radius, SelfPairs::excluded,
-                     fluid_neighbours_);
-  find_neighbours<D>(wall_cells_, wall_x, x, parameters_.wall_radius, SelfPairs::included,
+  find_neighbours<D>(carrier_cells_, x, x, parameters_.support_radius, SelfPairs::excluded,
+                     carrier_neighbours_);
+  // Only fluid particles feel the wall; the queries are the fluid part of the carriers.
+  CoordinateView<D> fluid_x;
+  for (int k = 0; k < D; ++k) {
+    fluid_x[k] = x[k].first(fluid);
+  }
+  find_neighbours<D>(wall_cells_, wall_x, fluid_x, parameters_.wall_radius, SelfPairs::included,
                      wall_neighbours_);
 
   FaultRecorder faults;
-  compute_density<D, Arith>(kernel_, x, mass_, state_.density_constant, fluid_neighbours_,
-                            parameters_.density_scale, density_, faults);
+  compute_density<D, Arith>(kernel_, x, mass_, density_constant_, carrier_neighbours_,
+                            parameters_.density_scale, fluid, density_, faults);
   faults.throw_if_any();
   pressure_over_density_squared_.resize(density_.size());
   for (std::size_t a = 0; a < density_.size(); ++a) {
@@ -112,46 +164,94 @@ void Model<D, Arith>::update_derived() {
     pressure_over_density_squared_[a] =
         tait_pressure(rho, parameters_.rest_density, parameters_.sound_speed) / (rho * rho);
   }
-  compute_acceleration<D, Arith>(kernel_, x, wall_x, mass_, pressure_over_density_squared_,
-                                 fluid_neighbours_, wall_neighbours_, parameters_.gravity,
-                                 parameters_.wall_potential(), parameters_.acceleration_scale,
-                                 acceleration_, faults);
+  if (anti_clump_kernel_) {
+    inverse_density_squared_.resize(density_.size());
+    for (std::size_t a = 0; a < density_.size(); ++a) {
+      inverse_density_squared_[a] = 1.0 / (density_[a] * density_[a]);
+    }
+  }
+  compute_acceleration<D, Arith>(
+      kernel_, x, wall_x, mass_, pressure_over_density_squared_, inverse_density_squared_,
+      carrier_neighbours_, wall_neighbours_, fluid, parameters_.gravity,
+      parameters_.wall_potential(), anti_clump_kernel_ ? &*anti_clump_kernel_ : nullptr,
+      parameters_.anti_clump_pressure, parameters_.acceleration_scale, acceleration_, faults);
   faults.throw_if_any();
   derived_valid_ = true;
 }
 
 template <int D, class Arith>
-void Model<D, Arith>::update_walls() {
-  if (walls_valid_) {
+const std::vector<double>& Model<D, Arith>::density() {
+  update_derived();
+  return density_;
+}
+
+template <int D, class Arith>
+const std::array<std::vector<double>, D>& Model<D, Arith>::acceleration() {
+  update_derived();
+  return acceleration_;
+}
+
+template <int D, class Arith>
+const NeighbourList& Model<D, Arith>::fluid_neighbours() {
+  update_derived();
+  return carrier_neighbours_;
+}
+
+template <int D, class Arith>
+std::array<std::vector<double>, D> Model<D, Arith>::real_velocity() const {
+  std::array<std::vector<double>, D> velocity;
+  const auto& scale = state_.velocity.info().scale;
+  for (int k = 0; k < D; ++k) {
+    velocity[k].resize(fluid_count());
+    for (std::size_t a = 0; a < fluid_count(); ++a) {
+      velocity[k][a] = Arith::real(state_.velocity.at(k, a), scale);
+    }
+  }
+  return velocity;
+}
+
+template <int D, class Arith>
+std::array<std::vector<double>, D> Model<D, Arith>::filtered_velocity() {
+  update_derived();
+  std::array<std::vector<double>, D> filtered;
+  shepard_filter<D>(kernel_, view_of<D>(position_), mass_, density_, real_velocity(),
+                    carrier_neighbours_, fluid_count(), filtered);
+  return filtered;
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::after_step(std::int64_t step) {
+  if (!parameters_.shepard_active || step % parameters_.shepard_every != 0) {
     return;
   }
-  real_coordinates<Arith, D>(state_.wall_position, wall_position_);
-  try {
-    wall_cells_.build(view_of<D>(wall_position_));
-  } catch (const PointOutsideDomain& outside) {
-    throw SimulationFault({"wall", outside.index(), "position", outside.what()}, -1);
+  // App. A active filter: u := u~. Dissipative, so outside the reversible palindrome.
+  const std::array<std::vector<double>, D> filtered = filtered_velocity();
+  const auto& scale = state_.velocity.info().scale;
+  for (int k = 0; k < D; ++k) {
+    for (std::size_t a = 0; a < fluid_count(); ++a) {
+      if (!Arith::try_from_real(filtered[k][a], scale, state_.velocity.at(k, a))) {
+        throw SimulationFault({"fluid", a, "velocity", "the filtered velocity overflows"}, -1);
+      }
+    }
   }
-  mass_.resize(state_.mass.count());
-  for (std::size_t a = 0; a < mass_.size(); ++a) {
-    mass_[a] = Arith::real(state_.mass.at(0, a), state_.mass.info().scale);
-  }
-  walls_valid_ = true;
 }
 
 template <int D, class Arith>
 typename Model<D, Arith>::ParticleEnergies Model<D, Arith>::particle_energies() {
   update_derived();
   const WallPotential wall = parameters_.wall_potential();
-  const auto& velocity_scale = state_.velocity.info().scale;
-  const std::size_t n = mass_.size();
-  ParticleEnergies energies{std::vector<double>(n), std::vector<double>(n), std::vector<double>(n),
-                            std::vector<double>(n)};
+  const std::array<std::vector<double>, D> velocity = real_velocity();
+  const std::size_t n = fluid_count();
+  ParticleEnergies energies{std::vector<double>(n),
+                            std::vector<double>(n),
+                            std::vector<double>(n),
+                            std::vector<double>(n),
+                            {}};
   for (std::size_t a = 0; a < n; ++a) {
     const double m = mass_[a];
     double v_squared = 0.0;
     for (int k = 0; k < D; ++k) {
-      const double v = Arith::real(state_.velocity.at(k, a), velocity_scale);
-      v_squared += v * v;
+      v_squared += velocity[k][a] * velocity[k][a];
     }
     energies.kinetic[a] = 0.5 * m * v_squared;
     energies.gravitational[a] =
@@ -170,6 +270,12 @@ typename Model<D, Arith>::ParticleEnergies Model<D, Arith>::particle_energies() 
     }
     energies.wall[a] = wall_energy;
   }
+  // Dummy particles store compressional energy too (their density follows the fluid).
+  for (std::size_t d = n; d < density_.size(); ++d) {
+    energies.dummy_compressional.push_back(
+        mass_[d] * compressional_energy_per_mass(density_[d], parameters_.rest_density,
+                                                 parameters_.sound_speed));
+  }
   return energies;
 }
 
@@ -184,49 +290,76 @@ EnergyBudget Model<D, Arith>::energy() {
     }
     return sum;
   };
-  return EnergyBudget{{{"kinetic", total(energies.kinetic)},
-                       {"gravitational", total(energies.gravitational)},
-                       {"compressional", total(energies.compressional)},
-                       {"wall", total(energies.wall)}}};
+  return EnergyBudget{
+      {{"kinetic", total(energies.kinetic)},
+       {"gravitational", total(energies.gravitational)},
+       {"compressional", total(energies.compressional) + total(energies.dummy_compressional)},
+       {"wall", total(energies.wall)}}};
 }
 
 template <int D, class Arith>
 std::vector<ParticleView> Model<D, Arith>::derived_views() {
   ParticleEnergies energies = particle_energies();
+  const std::size_t fluid = fluid_count();
   std::vector<double> pressure(density_.size());
   for (std::size_t a = 0; a < pressure.size(); ++a) {
     pressure[a] = tait_pressure(density_[a], parameters_.rest_density, parameters_.sound_speed);
   }
-  std::vector<double> acceleration;
-  for (int k = 0; k < D; ++k) {
-    acceleration.insert(acceleration.end(), acceleration_[k].begin(), acceleration_[k].end());
-  }
+  auto component_major = [](const std::array<std::vector<double>, D>& vectors) {
+    std::vector<double> values;
+    for (int k = 0; k < D; ++k) {
+      values.insert(values.end(), vectors[k].begin(), vectors[k].end());
+    }
+    return values;
+  };
   const std::string energy_unit = D == 2 ? "J/m" : "J";
-  return {{"fluid", "density", "kg/m^3", 1, density_},
-          {"fluid", "pressure", "Pa", 1, std::move(pressure)},
-          {"fluid", "acceleration", "m/s^2", D, std::move(acceleration)},
-          {"fluid", "kinetic_energy", energy_unit, 1, std::move(energies.kinetic)},
-          {"fluid", "gravitational_energy", energy_unit, 1, std::move(energies.gravitational)},
-          {"fluid", "compressional_energy", energy_unit, 1, std::move(energies.compressional)},
-          {"fluid", "wall_energy", energy_unit, 1, std::move(energies.wall)}};
+  std::vector<ParticleView> views{
+      {"fluid", "density", "kg/m^3", 1, {density_.begin(), density_.begin() + fluid}},
+      {"fluid", "pressure", "Pa", 1, {pressure.begin(), pressure.begin() + fluid}},
+      {"fluid", "acceleration", "m/s^2", D, component_major(acceleration_)},
+      {"fluid", "kinetic_energy", energy_unit, 1, std::move(energies.kinetic)},
+      {"fluid", "gravitational_energy", energy_unit, 1, std::move(energies.gravitational)},
+      {"fluid", "compressional_energy", energy_unit, 1, std::move(energies.compressional)},
+      {"fluid", "wall_energy", energy_unit, 1, std::move(energies.wall)}};
+  if (parameters_.shepard_every > 0) {
+    views.push_back({"fluid", "filtered_velocity", "m/s", D, component_major(filtered_velocity())});
+  }
+  if (density_.size() > fluid) {
+    views.push_back({"dummy", "density", "kg/m^3", 1, {density_.begin() + fluid, density_.end()}});
+    views.push_back({"dummy", "pressure", "Pa", 1, {pressure.begin() + fluid, pressure.end()}});
+    views.push_back(
+        {"dummy", "compressional_energy", energy_unit, 1, std::move(energies.dummy_compressional)});
+  }
+  return views;
 }
 
 template <int D, class Arith>
-const std::vector<double>& Model<D, Arith>::density() {
+std::vector<EnergyTerm> Model<D, Arith>::diagnostics() {
+  if (parameters_.initial_field != InitialField::gresho_vortex) {
+    return {};
+  }
+  // Paper 1 eq. (11) at this instant: sqrt(75 / (4 pi) sum_a V_a |u_a - u0(r_a)|^2), for the
+  // velocity and for its Shepard-filtered field; the error of a run is the maximum over time.
   update_derived();
-  return density_;
-}
-
-template <int D, class Arith>
-const std::array<std::vector<double>, D>& Model<D, Arith>::acceleration() {
-  update_derived();
-  return acceleration_;
-}
-
-template <int D, class Arith>
-const NeighbourList& Model<D, Arith>::fluid_neighbours() {
-  update_derived();
-  return fluid_neighbours_;
+  const std::array<std::vector<double>, D> velocity = real_velocity();
+  const std::array<std::vector<double>, D> filtered = filtered_velocity();
+  double raw_sum = 0.0;
+  double filtered_sum = 0.0;
+  for (std::size_t a = 0; a < fluid_count(); ++a) {
+    const double dx = position_[0][a] - parameters_.centre[0];
+    const double dy = position_[1][a] - parameters_.centre[1];
+    const double r = std::hypot(dx, dy);
+    const double u_theta = gresho::azimuthal_velocity(r);
+    const double exact_x = r > 0.0 ? -u_theta * dy / r : 0.0;
+    const double exact_y = r > 0.0 ? u_theta * dx / r : 0.0;
+    const double volume = mass_[a] / density_[a];
+    raw_sum += volume * ((velocity[0][a] - exact_x) * (velocity[0][a] - exact_x) +
+                         (velocity[1][a] - exact_y) * (velocity[1][a] - exact_y));
+    filtered_sum += volume * ((filtered[0][a] - exact_x) * (filtered[0][a] - exact_x) +
+                              (filtered[1][a] - exact_y) * (filtered[1][a] - exact_y));
+  }
+  return {{"velocity_error", std::sqrt(raw_sum / gresho::velocity_norm_squared)},
+          {"filtered_velocity_error", std::sqrt(filtered_sum / gresho::velocity_norm_squared)}};
 }
 
 template class Model<2, FixedArithmetic>;

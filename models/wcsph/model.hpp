@@ -1,19 +1,22 @@
 #pragma once
-// Symplectic WCSPH in fixed point (FixPA) or floating point (FloPA), paper 1 §2–4:
+// Symplectic WCSPH in fixed point (FixPA) or floating point (FloPA), paper 1 §2–4 and App. A:
 // velocity Verlet kick(dt/2) drift(dt) kick(dt/2), the acceleration a deterministic function of
 // the positions (closed-form density eq. 5, Tait pressure eq. 2, pressure force eq. 1b, gravity,
-// conservative wall eq. 7).
+// conservative wall eq. 7, dummy-particle walls and the anti-clump force of App. A). The active
+// Shepard filter of App. A is the one irreversible option (after_step).
 
 #include "core/cell_list.hpp"
 #include "core/energy.hpp"
 #include "core/kernel_wendland.hpp"
 #include "core/neighbour_list.hpp"
+#include "core/particle_view.hpp"
 #include "core/simulation.hpp"
 #include "core/step_composition.hpp"
 #include "models/wcsph/parameters.hpp"
 #include "models/wcsph/state.hpp"
 
 #include <array>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -24,10 +27,14 @@ class Model {
 public:
   using Raw = typename Arith::Raw;
 
-  // `state` holds positions, velocities, masses and wall positions with their scales set;
-  // `density_constant` is computed here from the initial positions (eq. 5: C_a = rho0 -
-  // rho_a(t = 0)). A state restored later (Simulation::restore_state) brings its own C_a.
+  // `state` holds positions, velocities, masses, wall and dummy positions with their scales
+  // set. The density constants are set by initialise_density_constants (eq. 5), or come with a
+  // state restored from a snapshot.
   Model(Parameters<D> parameters, SimulationInfo info, State<D, Raw> state);
+
+  // Eq. (5): C_a = target_a - sum_b m_b w(r_ab) for every fluid particle then every dummy
+  // particle, so that rho_a(0) = target_a (rho0 at rest; the Gresho pressure's density, say).
+  void initialise_density_constants(std::span<const double> target_density);
 
   static std::span<const Substep<Model>> palindrome();
 
@@ -35,19 +42,25 @@ public:
   const SimulationInfo& info() const { return info_; }
   const Parameters<D>& parameters() const { return parameters_; }
   EnergyBudget energy();
-  // Density, pressure, acceleration and each energy term per fluid particle.
+  // Density, pressure, acceleration, each energy term per fluid particle (and the filtered
+  // velocity with a Shepard filter); density and pressure of the dummy particles.
   std::vector<ParticleView> derived_views();
+  // With the Gresho vortex: the error norm of eq. (11) at this instant, of the velocity and of
+  // its Shepard-filtered field (the paper's "passive filter").
+  std::vector<EnergyTerm> diagnostics();
   void invalidate_derived() {
     derived_valid_ = false;
-    walls_valid_ = false;
+    constants_valid_ = false;
   }
   void reverse_time();
+  // The active Shepard filter every shepard_every steps (irreversible; listed in info()).
+  void after_step(std::int64_t step);
 
   // Sub-steps (paper 1 §4, steps 1–3).
   void kick(double dt);
   void drift(double dt);
 
-  // Derived quantities at the current positions (for diagnostics and tests).
+  // Derived quantities at the current positions, fluid particles first, then dummies.
   const std::vector<double>& density();
   const std::array<std::vector<double>, D>& acceleration();
   const NeighbourList& fluid_neighbours();
@@ -57,29 +70,37 @@ private:
   static void drift_substep(Model& model, double dt) { model.drift(dt); }
   struct ParticleEnergies {
     std::vector<double> kinetic, gravitational, compressional, wall;
+    std::vector<double> dummy_compressional;
   };
+  std::size_t fluid_count() const { return state_.position.count(); }
   void update_derived();
-  void update_walls();
+  void update_constants();
   ParticleEnergies particle_energies();
+  std::array<std::vector<double>, D> real_velocity() const;
+  std::array<std::vector<double>, D> filtered_velocity();
 
   Parameters<D> parameters_;
   SimulationInfo info_;
   State<D, Raw> state_;
   WendlandQuintic<D> kernel_;
+  std::optional<WendlandQuintic<D>> anti_clump_kernel_;
 
+  // Constant parts (wall and dummy positions, masses, density constants), converted once.
+  bool constants_valid_ = false;
+  CoordinateArrays<D> wall_position_;
+  std::vector<double> mass_;          // carriers: fluid then dummies
+  std::vector<Raw> density_constant_; // carriers
   // Derived from the state, recomputed after every drift.
   bool derived_valid_ = false;
-  bool walls_valid_ = false; // wall positions and masses are constant: converted once
-  CoordinateArrays<D> position_;
-  CoordinateArrays<D> wall_position_;
-  std::vector<double> mass_;
-  CellList<D> fluid_cells_;
+  CoordinateArrays<D> position_; // carriers
+  CellList<D> carrier_cells_;
   CellList<D> wall_cells_;
-  NeighbourList fluid_neighbours_;
+  NeighbourList carrier_neighbours_;
   NeighbourList wall_neighbours_;
-  std::vector<double> density_;
-  std::vector<double> pressure_over_density_squared_;
-  std::array<std::vector<double>, D> acceleration_;
+  std::vector<double> density_;                       // carriers
+  std::vector<double> pressure_over_density_squared_; // carriers
+  std::vector<double> inverse_density_squared_;       // carriers, with the anti-clump force
+  std::array<std::vector<double>, D> acceleration_;   // fluid
 };
 
 extern template class Model<2, FixedArithmetic>;

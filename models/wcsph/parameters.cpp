@@ -87,6 +87,37 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
     case_file.fail("wall.epsilon", "must be >= 0");
   }
 
+  p.anti_clump_pressure = case_file.number_or("physics.anti_clump_pressure", 0.0);
+  if (p.anti_clump_pressure < 0.0) {
+    case_file.fail("physics.anti_clump_pressure", "must be >= 0");
+  }
+  p.shepard_every = case_file.integer_or("filter.shepard_every", 0);
+  if (p.shepard_every < 0) {
+    case_file.fail("filter.shepard_every", "must be >= 0 (0: no filter)");
+  }
+  const std::string filter_mode = case_file.string_or("filter.mode", "passive");
+  if (filter_mode != "passive" && filter_mode != "active") {
+    case_file.fail("filter.mode",
+                   "expected \"passive\" or \"active\", got \"" + filter_mode + "\"");
+  }
+  p.shepard_active = filter_mode == "active";
+  if (p.shepard_active && p.shepard_every == 0) {
+    case_file.fail("filter.shepard_every", "an active filter needs shepard_every >= 1");
+  }
+  const std::string field = case_file.string_or("initial.field", "rest");
+  if (field == "gresho") {
+    p.initial_field = InitialField::gresho_vortex;
+    if (D != 2) {
+      case_file.fail("initial.field", "the Gresho vortex is two-dimensional");
+    }
+  } else if (field != "rest") {
+    case_file.fail("initial.field", "expected \"rest\" or \"gresho\", got \"" + field + "\"");
+  }
+  if (case_file.has("initial.centre")) {
+    const std::vector<double> centre = case_file.numbers("initial.centre", D);
+    std::copy(centre.begin(), centre.end(), p.centre.begin());
+  }
+
   p.domain = read_domain<D>(case_file);
 
   // Default scales: positions keep 52 fraction bits below the domain size, so the double view of

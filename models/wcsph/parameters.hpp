@@ -8,6 +8,8 @@
 
 namespace revsph::wcsph {
 
+enum class InitialField { rest, gresho_vortex };
+
 template <int D>
 struct Parameters {
   // [physics]
@@ -24,6 +26,15 @@ struct Parameters {
   double wall_radius = 0.0;          // r_wall (m)
   double wall_energy_per_mass = 0.0; // E_wall / m (J/kg)
   double wall_epsilon = 0.0;         // eps (m)
+  // [physics] anti_clump_pressure: p0 of the anti-clump force of App. A (0: off)
+  double anti_clump_pressure = 0.0;
+  // [filter]: the Shepard filter of App. A, every shepard_every steps; active replaces the
+  // velocities (dissipative, irreversible), passive only reports the filtered field
+  std::int64_t shepard_every = 0;
+  bool shepard_active = false;
+  // [initial]: the initial velocity and pressure field
+  InitialField initial_field = InitialField::rest;
+  Vec<D> centre{};
   Box<D> domain;
   // [fixed_point]: scales of the stored and the accumulated quantities
   fixedpoint::Scale position_scale;

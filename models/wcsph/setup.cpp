@@ -2,6 +2,7 @@
 
 #include "core/particle_blocks.hpp"
 #include "core/run_settings.hpp"
+#include "models/wcsph/gresho.hpp"
 #include "models/wcsph/model.hpp"
 
 #include <algorithm>
@@ -13,7 +14,7 @@ namespace revsph::wcsph {
 
 namespace {
 
-constexpr std::string_view particle_kinds[] = {"fluid", "wall"};
+constexpr std::string_view particle_kinds[] = {"fluid", "wall", "dummy"};
 // Memory per particle, generously: state, positions, derived arrays and cell lists ~250 B, plus
 // 4 B per neighbour in the lists and as much again while they are built. Measured about 220 B per
 // particle in 2D at h = 3 dr (~28 neighbours; tools/bench/results).
@@ -26,17 +27,66 @@ double bytes_per_particle(int dimension, double support_radius_over_dr) {
 // Masses are constants of the setup; 52 bits keep their double view exact.
 constexpr int mass_fraction_bits = 52;
 
+// The initial velocity and the density each carrier (fluid, then dummy) should have at t = 0:
+// rest, or the Gresho vortex of App. A (its velocity, and the density whose Tait pressure is the
+// vortex's pressure, so that the vortex starts in equilibrium).
+template <int D>
+struct InitialFields {
+  std::vector<Vec<D>> velocity;       // fluid
+  std::vector<double> target_density; // carriers
+};
+
+template <int D>
+InitialFields<D> initial_fields(const Parameters<D>& parameters,
+                                const std::vector<Vec<D>>& fluid_positions,
+                                const std::vector<Vec<D>>& dummy_positions) {
+  InitialFields<D> fields{std::vector<Vec<D>>(fluid_positions.size()), {}};
+  auto target = [&](const Vec<D>& p) {
+    if (parameters.initial_field != InitialField::gresho_vortex) {
+      return parameters.rest_density;
+    }
+    const double r = std::hypot(p[0] - parameters.centre[0], p[1] - parameters.centre[1]);
+    return tait_density(gresho::pressure(r, parameters.rest_density), parameters.rest_density,
+                        parameters.sound_speed);
+  };
+  for (std::size_t a = 0; a < fluid_positions.size(); ++a) {
+    const Vec<D>& p = fluid_positions[a];
+    if (parameters.initial_field == InitialField::gresho_vortex) {
+      const double dx = p[0] - parameters.centre[0];
+      const double dy = p[1] - parameters.centre[1];
+      const double r = std::hypot(dx, dy);
+      const double u = gresho::azimuthal_velocity(r);
+      fields.velocity[a][0] = r > 0.0 ? -u * dy / r : 0.0;
+      fields.velocity[a][1] = r > 0.0 ? u * dx / r : 0.0;
+    }
+    fields.target_density.push_back(target(p));
+  }
+  for (const Vec<D>& p : dummy_positions) {
+    fields.target_density.push_back(target(p));
+  }
+  return fields;
+}
+
 template <class Arith, int D>
-void fill_positions(const CaseFile& case_file, const ParticleBlock<D>& block,
-                    StateField<typename Arith::Raw>& field, std::size_t first) {
-  for (std::size_t i = 0; i < block.positions.size(); ++i) {
+void fill_vectors(const CaseFile& case_file, const std::string& key,
+                  const std::vector<Vec<D>>& values, StateField<typename Arith::Raw>& field,
+                  const char* what) {
+  field.resize(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) {
     for (int k = 0; k < D; ++k) {
-      if (!Arith::try_from_real(block.positions[i][k], field.info().scale,
-                                field.at(k, first + i))) {
-        case_file.fail(block.key, "a particle position does not fit the position scale "
-                                  "(see fixed_point.position_exponent)");
+      if (!Arith::try_from_real(values[i][k], field.info().scale, field.at(k, i))) {
+        case_file.fail(key, std::string("a particle ") + what +
+                                " does not fit its fixed-point scale (see [fixed_point])");
       }
     }
+  }
+}
+
+template <class Arith>
+void fill_scalars(const std::vector<double>& values, StateField<typename Arith::Raw>& field) {
+  field.resize(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    Arith::try_from_real(values[i], field.info().scale, field.at(0, i));
   }
 }
 
@@ -48,19 +98,30 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
       read_particle_blocks<D>(case_file, parameters.dr, parameters.domain, particle_kinds,
                               {bytes_per_particle(D, parameters.support_radius / parameters.dr),
                                options.memory_budget_bytes});
-  std::size_t fluid_count = 0;
-  std::size_t wall_count = 0;
-  double largest_mass = 0.0;
+  // Particles of each set in block order; masses are rho0 times the lattice cell volume.
+  std::vector<Vec<D>> fluid_positions, wall_positions, dummy_positions;
+  std::vector<double> fluid_masses, dummy_masses;
   for (const auto& block : blocks) {
+    const double mass = parameters.rest_density * block.volume_per_particle;
+    auto& positions = block.kind == "fluid"   ? fluid_positions
+                      : block.kind == "dummy" ? dummy_positions
+                                              : wall_positions;
+    positions.insert(positions.end(), block.positions.begin(), block.positions.end());
     if (block.kind == "fluid") {
-      fluid_count += block.positions.size();
-      largest_mass = std::max(largest_mass, parameters.rest_density * block.volume_per_particle);
-    } else {
-      wall_count += block.positions.size();
+      fluid_masses.insert(fluid_masses.end(), block.positions.size(), mass);
+    } else if (block.kind == "dummy") {
+      dummy_masses.insert(dummy_masses.end(), block.positions.size(), mass);
     }
   }
-  if (fluid_count == 0) {
+  if (fluid_positions.empty()) {
     case_file.fail("particles", "the case has no fluid particles");
+  }
+  double largest_mass = 0.0;
+  for (const double m : fluid_masses) {
+    largest_mass = std::max(largest_mass, m);
+  }
+  for (const double m : dummy_masses) {
+    largest_mass = std::max(largest_mass, m);
   }
   // rest_density * lattice cell volume can overflow or underflow even when both are valid.
   if (!(largest_mass > 0.0) || !std::isfinite(largest_mass)) {
@@ -69,34 +130,27 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
            << ": it must be positive and finite";
     case_file.fail("physics.rest_density", reason.str());
   }
+  const InitialFields<D> initial = initial_fields<D>(parameters, fluid_positions, dummy_positions);
 
   State<D, Raw> state;
+  const fixedpoint::Scale mass_scale =
+      fixedpoint::Scale::covering(largest_mass, mass_fraction_bits);
   state.position.info().scale = parameters.position_scale;
   state.velocity.info().scale = parameters.velocity_scale;
-  state.mass.info().scale = fixedpoint::Scale::covering(largest_mass, mass_fraction_bits);
+  state.mass.info().scale = mass_scale;
   state.density_constant.info().scale = parameters.density_scale;
   state.wall_position.info().scale = parameters.position_scale;
-  state.position.resize(fluid_count);
-  state.velocity.resize(fluid_count);
-  state.mass.resize(fluid_count);
-  state.density_constant.resize(fluid_count);
-  state.wall_position.resize(wall_count);
-
-  std::size_t next_fluid = 0;
-  std::size_t next_wall = 0;
-  for (const auto& block : blocks) {
-    if (block.kind == "fluid") {
-      fill_positions<Arith, D>(case_file, block, state.position, next_fluid);
-      for (std::size_t i = 0; i < block.positions.size(); ++i) {
-        Arith::try_from_real(parameters.rest_density * block.volume_per_particle,
-                             state.mass.info().scale, state.mass.at(0, next_fluid + i));
-      }
-      next_fluid += block.positions.size();
-    } else {
-      fill_positions<Arith, D>(case_file, block, state.wall_position, next_wall);
-      next_wall += block.positions.size();
-    }
-  }
+  state.dummy_position.info().scale = parameters.position_scale;
+  state.dummy_mass.info().scale = mass_scale;
+  state.dummy_density_constant.info().scale = parameters.density_scale;
+  fill_vectors<Arith, D>(case_file, "particles", fluid_positions, state.position, "position");
+  fill_vectors<Arith, D>(case_file, "initial.field", initial.velocity, state.velocity, "velocity");
+  fill_scalars<Arith>(fluid_masses, state.mass);
+  state.density_constant.resize(fluid_positions.size());
+  fill_vectors<Arith, D>(case_file, "particles", wall_positions, state.wall_position, "position");
+  fill_vectors<Arith, D>(case_file, "particles", dummy_positions, state.dummy_position, "position");
+  fill_scalars<Arith>(dummy_masses, state.dummy_mass);
+  state.dummy_density_constant.resize(dummy_positions.size());
 
   SimulationInfo info;
   info.case_name = case_name(case_file);
@@ -104,9 +158,17 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   info.dimension = D;
   info.arithmetic = options.arithmetic;
   info.dt = parameters.dt;
-  info.particles = {{"fluid", fluid_count, true}, {"wall", wall_count, false}};
-  return std::make_unique<ModelSimulation<Model<D, Arith>>>(
-      Model<D, Arith>(parameters, std::move(info), std::move(state)));
+  info.particles = {{"fluid", fluid_positions.size(), true},
+                    {"wall", wall_positions.size(), false},
+                    {"dummy", dummy_positions.size(), false}};
+  if (parameters.shepard_active) {
+    info.irreversible_terms.push_back("active Shepard filter every " +
+                                      std::to_string(parameters.shepard_every) +
+                                      " steps (paper 1 App. A)");
+  }
+  Model<D, Arith> model(parameters, std::move(info), std::move(state));
+  model.initialise_density_constants(initial.target_density);
+  return std::make_unique<ModelSimulation<Model<D, Arith>>>(std::move(model));
 }
 
 template <int D>

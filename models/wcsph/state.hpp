@@ -18,6 +18,12 @@ struct State {
       {"fluid", "density_constant", "kg/m^3", Parity::even, 1, {}, false}};
   // Constant: wall particles (§3.3) are fixed and carry only their positions.
   StateField<Raw> wall_position{{"wall", "position", "m", Parity::even, D, {}, false}};
+  // Constant: dummy particles (App. A) are fixed walls that take part in the density and the
+  // pressure force like fluid particles, with their own masses and integration constants.
+  StateField<Raw> dummy_position{{"dummy", "position", "m", Parity::even, D, {}, false}};
+  StateField<Raw> dummy_mass{{"dummy", "mass", D == 2 ? "kg/m" : "kg", Parity::even, 1, {}, false}};
+  StateField<Raw> dummy_density_constant{
+      {"dummy", "density_constant", "kg/m^3", Parity::even, 1, {}, false}};
 
   template <class Visit>
   void for_each_field(Visit&& visit) {
@@ -26,6 +32,9 @@ struct State {
     visit(mass);
     visit(density_constant);
     visit(wall_position);
+    visit(dummy_position);
+    visit(dummy_mass);
+    visit(dummy_density_constant);
   }
 };
 

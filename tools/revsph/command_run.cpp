@@ -1,3 +1,4 @@
+#include "core/diagnostics_log.hpp"
 #include "core/energy_log.hpp"
 #include "core/progress.hpp"
 #include "core/run_loop.hpp"
@@ -35,6 +36,9 @@ void print_header(const LoadedCase& loaded, std::int64_t steps) {
               << " s)";
   }
   std::cout << ", " << thread_count() << (thread_count() == 1 ? " thread\n" : " threads\n");
+  for (const std::string& term : info.irreversible_terms) {
+    std::cout << "note: irreversible term: " << term << "\n";
+  }
 }
 
 } // namespace
@@ -58,6 +62,7 @@ int run_command(const RunOptions& options) {
   RunOutput output(directory, run_metadata(simulation, loaded.case_file, reference_energy),
                    loaded.settings.snapshot_every);
   EnergyLog energy(output.energy_csv().string(), reference_energy);
+  DiagnosticsLog diagnostics((output.directory() / "diagnostics.csv").string());
   ProgressReporter progress(stdout, "run", simulation.steps_taken() + steps, simulation.info().dt,
                             loaded.settings.progress_interval);
 
@@ -74,6 +79,7 @@ int run_command(const RunOptions& options) {
 
   RunHooks hooks;
   hooks.energy_log = &energy;
+  hooks.diagnostics_log = &diagnostics;
   hooks.energy_every = loaded.settings.energy_every;
   hooks.progress = &progress;
   hooks.after_step = [&](Simulation& s, std::int64_t) {
@@ -109,6 +115,7 @@ int run_command(const RunOptions& options) {
   if (const auto last = output.last_snapshot()) {
     summary.last_snapshot = last->string();
   }
+  summary.diagnostics_maxima = diagnostics.maxima();
   write_summary(output.summary_json(), simulation, summary, energy);
 
   const double steps_done = static_cast<double>(simulation.steps_taken() - summary.start_step);
@@ -119,6 +126,9 @@ int run_command(const RunOptions& options) {
                         summary.wall_seconds
                   : 0.0,
               summary.wall_seconds);
+  for (const EnergyTerm& maximum : diagnostics.maxima()) {
+    std::printf("%s: max %.6g\n", maximum.name.c_str(), maximum.value);
+  }
   std::cout << "state hash: " << summary.final_hash << "\n";
   std::cout << "wrote " << output.directory().string() << "/: energy.csv, summary.json, run.xdmf, "
             << output.snapshot_count() << " snapshots";

@@ -85,6 +85,9 @@ int verify_command(const VerifyCommandOptions& options) {
             << " steps forward, time reversal, " << steps << " steps, time reversal; "
             << thread_count() << (thread_count() == 1 ? " thread\n" : " threads\n");
 
+  for (const std::string& term : info.irreversible_terms) {
+    std::cout << "note: irreversible term: " << term << " — this case cannot return bit for bit\n";
+  }
   if (options.check_substeps) {
     for (const SubstepCheck& check : check_substeps(simulation, info.dt)) {
       std::cout << "sub-step " << check.name << ": " << check.comparison.verdict() << "\n";

@@ -1,6 +1,7 @@
 #pragma once
 // The revsph subcommands. Each returns the process exit status (common.hpp).
 
+#include "tools/analysis/boltzmann_entropy.hpp"
 #include "tools/revsph/common.hpp"
 
 #include <cstdint>
@@ -32,11 +33,23 @@ struct HashOptions {
   std::optional<double> t_end;
 };
 
+struct EntropyOptions {
+  std::string run_dir; // a `run` output directory or a `verify --out` experiment directory
+  int bins = analysis::default_speed_bins;
+  std::optional<double> max_speed; // default: the largest speed over all snapshots of the run
+  std::string particle_set = "fluid";
+  std::string out_dir; // default RUN_DIR/analysis
+  bool plots = true;
+};
+
 int run_command(const RunOptions& options);
 int verify_command(const VerifyCommandOptions& options);
 int hash_command(const HashOptions& options);
 int cases_command(const std::string& name);
 // Bit-for-bit comparison of two snapshots: 0 identical, 1 different, 2 not comparable.
 int diff_command(const std::string& first, const std::string& second);
+// Reduced Boltzmann entropy of every snapshot of a run: entropy.csv, histograms.csv and (unless
+// disabled, through tools/plots/entropy.py) entropy.png and histogram.png.
+int entropy_command(const EntropyOptions& options);
 
 } // namespace revsph::cli

@@ -111,6 +111,28 @@ int main(int argc, char** argv) {
   diff_app->add_option("a", first_snapshot, "first snapshot (.h5)")->required();
   diff_app->add_option("b", second_snapshot, "second snapshot (.h5)")->required();
 
+  EntropyOptions entropy;
+  bool no_plots = false;
+  auto* entropy_app = app.add_subcommand(
+      "entropy", "reduced Boltzmann entropy of the particle speeds in every snapshot of a run or "
+                 "verify --out experiment (paper 1, Appendix B); writes OUT/entropy.csv, "
+                 "OUT/histograms.csv, OUT/entropy.png and OUT/histogram.png");
+  entropy_app
+      ->add_option("run_dir", entropy.run_dir,
+                   "output directory of `revsph run` or of `revsph verify --out`")
+      ->required();
+  entropy_app->add_option("--bins", entropy.bins, "number of speed bins (default 100)")
+      ->check(CLI::PositiveNumber);
+  entropy_app
+      ->add_option("--max-speed", entropy.max_speed,
+                   "upper end of the speed bins in m/s (default: the largest speed in the run)")
+      ->check(CLI::PositiveNumber);
+  entropy_app->add_option("--particle-set", entropy.particle_set,
+                          "particle set whose velocities are analysed (default fluid)");
+  entropy_app->add_option("--out", entropy.out_dir, "output directory (default RUN_DIR/analysis)");
+  entropy_app->add_flag("--no-plots", no_plots,
+                        "only the CSV files (no call of tools/plots/entropy.py)");
+
   std::string case_name;
   auto* cases_app = app.add_subcommand("cases", "list the built-in cases, or print one");
   cases_app->add_option("name", case_name, "print this built-in case file");
@@ -146,6 +168,10 @@ int main(int argc, char** argv) {
     }
     if (*diff_app) {
       return diff_command(first_snapshot, second_snapshot);
+    }
+    if (*entropy_app) {
+      entropy.plots = !no_plots;
+      return entropy_command(entropy);
     }
     if (*cases_app) {
       return cases_command(case_name);

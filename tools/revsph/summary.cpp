@@ -57,6 +57,9 @@ void write_summary(const std::filesystem::path& path, Simulation& simulation, co
       summary["energy"]["final"][term.name] = term.value;
     }
   }
+  for (const EnergyTerm& maximum : run.diagnostics_maxima) {
+    summary["diagnostics"]["max_" + maximum.name] = maximum.value;
+  }
   summary["build"] = {{"version", build_info::version},
                       {"git_commit", build_info::git_commit},
                       {"compiler", build_info::compiler},

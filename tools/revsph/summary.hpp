@@ -23,6 +23,7 @@ struct RunSummary {
   std::string final_hash;
   std::optional<std::string> failure; // the fault message if the run stopped early
   std::size_t snapshots_written = 0;
+  std::vector<EnergyTerm> diagnostics_maxima; // the largest value of each diagnostic
   std::optional<std::string> last_snapshot;
 };
 
