@@ -3,6 +3,7 @@
 
 Usage: /usr/bin/python3 tools/plots/paper1_figures.py [--list] [--runs DIR] [--out DIR]
            [--make-runs] [--no-full] [--no-gresho] [--revsph PATH] [--threads N]
+           [--refdata DIR]
 
   --list       print each figure file, the paper figure it reproduces, and the runs (with their
                revsph commands) it needs, marking runs that are missing; nothing is run
@@ -17,6 +18,7 @@ Usage: /usr/bin/python3 tools/plots/paper1_figures.py [--list] [--runs DIR] [--o
   --no-gresho  do not call tools/plots/gresho_table.py
   --revsph     the revsph binary (default: build/bin/revsph, else build-*/bin/revsph)
   --threads N  passed to revsph (default: revsph's own, all cores)
+  --refdata    the published reference data for Fig. 4 (default: leading_edge.py's)
 
 Without --make-runs, figures whose runs are missing are skipped (the exit status is then 1).
 tools/plots/gresho_table.py, when present, is called as
@@ -178,6 +180,7 @@ def main(argv=None):
     parser.add_argument("--no-gresho", action="store_true")
     parser.add_argument("--revsph")
     parser.add_argument("--threads", type=int)
+    parser.add_argument("--refdata")
     args = parser.parse_args(argv)
     runs, out = Path(args.runs).resolve(), Path(args.out).resolve()
     revsph = find_revsph(args.revsph)
@@ -213,6 +216,8 @@ def main(argv=None):
             continue
         if how[0] == "script":
             command = [PYTHON, str(PLOTS / how[1])] + how[2](runs, out)
+            if how[1] == "leading_edge.py" and args.refdata:
+                command += ["--refdata", args.refdata]
         else:
             command = [str(revsph), "entropy", str(how[1].path(runs))]
         show(command)
