@@ -141,13 +141,17 @@ std::vector<Vec<D>> lattice_points_outside(Lattice lattice, const Box<D>& region
 
 // A Vogel (sunflower) spiral about the region's centre: point k at radius spacing sqrt((k + 1/2)
 // / pi) and angle k times the golden angle, so that every point stands for an area spacing^2
-// and the arrangement has no lattice directions. Points at least half a spacing inside the
-// region are kept.
+// and the arrangement has no lattice directions. Points at least a quarter spacing inside the
+// region are kept: unlike a lattice row, the spiral's points are spread evenly up to the cut, so
+// a half-spacing margin (the lattice's) would leave a strip of half a spacing without particles
+// along the edge, i.e. about 7% too little kernel density there next to walls (measured on the
+// Gresho case); a quarter halves the strip and keeps every point 0.75 spacing from a wall
+// particle half a spacing outside.
 std::vector<Vec<2>> vogel_points(const Box<2>& region, double spacing) {
   const double golden_angle = std::numbers::pi * (3.0 - std::sqrt(5.0));
   const Vec<2> centre{0.5 * (region.min[0] + region.max[0]), 0.5 * (region.min[1] + region.max[1])};
   const double reach = std::hypot(region.max[0] - centre[0], region.max[1] - centre[1]);
-  const double margin = 0.5 * spacing * (1.0 - relative_tolerance);
+  const double margin = 0.25 * spacing * (1.0 - relative_tolerance);
   std::vector<Vec<2>> points;
   for (long k = 0;; ++k) {
     const double radius = spacing * std::sqrt((static_cast<double>(k) + 0.5) / std::numbers::pi);

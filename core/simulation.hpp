@@ -36,6 +36,9 @@ struct SimulationInfo {
   // Dissipative operations outside the reversible step (an active filter, say): with any of
   // them the case cannot return bit for bit, and the verifier says so.
   std::vector<std::string> irreversible_terms;
+  // What the setup computed that a reader of the output should be able to see and repeat
+  // (e.g. the initial state correction's seed, iterations and residual), as name-value pairs.
+  std::vector<std::pair<std::string, std::string>> setup_report;
 
   std::size_t moving_particle_count() const {
     std::size_t n = 0;

@@ -106,8 +106,11 @@ void validate(const IscSettings& settings, double support_radius, double rest_de
           "the tolerance must be positive and finite");
   require(settings.jitter >= 0.0 && std::isfinite(settings.jitter),
           "the jitter must be non-negative and finite");
-  require(settings.jitter == 0.0 || (settings.spacing > 0.0 && std::isfinite(settings.spacing)),
-          "a jitter needs a positive, finite particle spacing");
+  require(settings.max_step >= 0.0 && std::isfinite(settings.max_step),
+          "max_step must be non-negative and finite");
+  require((settings.jitter == 0.0 && settings.max_step == 0.0) ||
+              (settings.spacing > 0.0 && std::isfinite(settings.spacing)),
+          "a jitter or a step limit needs a positive, finite particle spacing");
 }
 
 template <int D>
@@ -457,11 +460,26 @@ IscReport correct_initial_state(CoordinateArrays<D>& movable, std::span<const do
     report.linear_iterations.push_back(solve_normal_equations(
         jacobian, deficit, forcing_term(report.residuals.back()), kMaxLinearIterations, potential));
     // Eq. (6b): dx = M^-1 J^T chi.
-    const Eigen::VectorXd displacement =
+    Eigen::VectorXd displacement =
         jacobian.inverse_mass.cwiseProduct(jacobian.matrix.transpose() * potential);
     if (!displacement.allFinite()) {
       report.stopped_early = "the Newton step of eq. (6) is not finite";
       break;
+    }
+    if (settings.max_step > 0.0) {
+      double longest_squared = 0.0;
+      for (std::size_t a = 0; a < n; ++a) {
+        double length_squared = 0.0;
+        for (int k = 0; k < D; ++k) {
+          const double d = displacement[static_cast<Eigen::Index>(D * a + k)];
+          length_squared += d * d;
+        }
+        longest_squared = std::max(longest_squared, length_squared);
+      }
+      const double limit = settings.max_step * settings.spacing;
+      if (longest_squared > limit * limit) {
+        displacement *= limit / std::sqrt(longest_squared);
+      }
     }
     for (int k = 0; k < D; ++k) {
       for (std::size_t a = 0; a < n; ++a) {

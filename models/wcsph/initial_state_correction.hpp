@@ -25,7 +25,13 @@ struct IscSettings {
   // [0, jitter * spacing). It breaks the symmetry of regular lattices, on which the Newton
   // iteration "nearly always diverges" (paper 1, footnote 2). 0: no displacement.
   double jitter = 0.1;
-  double spacing = 0.0;   // the initial particle spacing dr; required when jitter > 0
+  // Damping: a Newton step that would move some particle farther than max_step * spacing is
+  // scaled down as a whole to that length (0: undamped). Far from the solution, full steps can
+  // land on one of the many other configurations of uniform density, e.g. pairs of particles a
+  // tenth of dr apart, which have the right density but explode under the pressure and
+  // anti-clump forces; near it, steps are tiny and the convergence stays quadratic.
+  double max_step = 0.0;
+  double spacing = 0.0;   // the initial particle spacing dr; required when jitter or max_step > 0
   std::uint64_t seed = 1; // std::mt19937_64 seed of the jitter: equal seeds, equal results
 };
 

@@ -118,6 +118,33 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
     std::copy(centre.begin(), centre.end(), p.centre.begin());
   }
 
+  p.isc_enabled = case_file.boolean_or("initial_state_correction.enabled", false);
+  p.isc.max_iterations = static_cast<int>(std::clamp<std::int64_t>(
+      case_file.integer_or("initial_state_correction.max_iterations", 20), -1, 1000));
+  if (p.isc.max_iterations < 1 || p.isc.max_iterations > 999) {
+    case_file.fail("initial_state_correction.max_iterations", "must be between 1 and 999");
+  }
+  p.isc.tolerance = case_file.number_or("initial_state_correction.tolerance", 1e-10);
+  if (!(p.isc.tolerance > 0.0 && p.isc.tolerance < 1.0)) {
+    case_file.fail("initial_state_correction.tolerance", "must be > 0 and < 1");
+  }
+  p.isc.jitter = case_file.number_or("initial_state_correction.jitter", 0.1);
+  if (!(p.isc.jitter >= 0.0 && p.isc.jitter <= 0.5)) {
+    case_file.fail("initial_state_correction.jitter",
+                   "must be between 0 and 0.5 (a fraction of dr)");
+  }
+  p.isc.max_step = case_file.number_or("initial_state_correction.max_step", 0.0);
+  if (!(p.isc.max_step >= 0.0 && p.isc.max_step <= 10.0)) {
+    case_file.fail("initial_state_correction.max_step",
+                   "must be between 0 and 10 (a fraction of dr; 0: undamped Newton)");
+  }
+  p.isc.spacing = p.dr;
+  const std::int64_t seed = case_file.integer_or("initial_state_correction.seed", 1);
+  if (seed < 0) {
+    case_file.fail("initial_state_correction.seed", "must be >= 0");
+  }
+  p.isc.seed = static_cast<std::uint64_t>(seed);
+
   p.domain = read_domain<D>(case_file);
 
   // Default scales: positions keep 52 fraction bits below the domain size, so the double view of

@@ -5,6 +5,7 @@
 #include "core/geometry.hpp"
 #include "fixedpoint/scale.hpp"
 #include "models/wcsph/equations.hpp"
+#include "models/wcsph/initial_state_correction.hpp"
 
 namespace revsph::wcsph {
 
@@ -35,6 +36,9 @@ struct Parameters {
   // [initial]: the initial velocity and pressure field
   InitialField initial_field = InitialField::rest;
   Vec<D> centre{};
+  // [initial_state_correction]: paper 1 §3.2, applied to the fluid positions at setup
+  bool isc_enabled = false;
+  IscSettings isc;
   Box<D> domain;
   // [fixed_point]: scales of the stored and the accumulated quantities
   fixedpoint::Scale position_scale;

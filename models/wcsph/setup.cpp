@@ -67,6 +67,76 @@ InitialFields<D> initial_fields(const Parameters<D>& parameters,
   return fields;
 }
 
+template <int D>
+CoordinateArrays<D> coordinate_arrays(const std::vector<Vec<D>>& points) {
+  CoordinateArrays<D> arrays;
+  for (int k = 0; k < D; ++k) {
+    arrays[k].reserve(points.size());
+    for (const Vec<D>& point : points) {
+      arrays[k].push_back(point[k]);
+    }
+  }
+  return arrays;
+}
+
+std::string scientific(double value) {
+  std::ostringstream text;
+  text.precision(3);
+  text << std::scientific << value;
+  return text.str();
+}
+
+// Paper 1 §3.2: the fluid particles move until their kernel density (eq. 4), dummy particles
+// included, is rho0; wall particles of eq. (7) take no part in densities. Done in double
+// precision before anything is converted to fixed point, so the state that starts the reversible
+// run is simply the corrected one. Failing to converge is a case error: running on would mark
+// the free-surface particles through C_a, which is what the correction exists to avoid.
+template <int D>
+void correct_fluid_positions(const CaseFile& case_file, const Parameters<D>& parameters,
+                             std::vector<Vec<D>>& fluid_positions,
+                             const std::vector<double>& fluid_masses,
+                             const std::vector<Vec<D>>& dummy_positions,
+                             const std::vector<double>& dummy_masses,
+                             std::vector<std::pair<std::string, std::string>>& report_out) {
+  CoordinateArrays<D> movable = coordinate_arrays<D>(fluid_positions);
+  IscReport report;
+  try {
+    report = correct_initial_state<D>(movable, fluid_masses, coordinate_arrays<D>(dummy_positions),
+                                      dummy_masses, parameters.support_radius,
+                                      parameters.rest_density, parameters.domain, parameters.isc);
+  } catch (const std::exception& error) {
+    case_file.fail("initial_state_correction", error.what());
+  }
+  if (!report.converged) {
+    std::ostringstream reason;
+    reason << "did not converge: max |rho - rho0| / rho0 = " << scientific(report.residuals.back())
+           << " after " << report.iterations << " Newton iterations (tolerance "
+           << scientific(parameters.isc.tolerance) << ", max_iterations "
+           << parameters.isc.max_iterations << ", seed " << parameters.isc.seed << ")";
+    if (!report.stopped_early.empty()) {
+      reason << ": " << report.stopped_early;
+    }
+    case_file.fail("initial_state_correction", reason.str());
+  }
+  for (std::size_t a = 0; a < fluid_positions.size(); ++a) {
+    for (int k = 0; k < D; ++k) {
+      fluid_positions[a][k] = movable[k][a];
+    }
+  }
+  std::string linear_iterations;
+  for (const int n : report.linear_iterations) {
+    linear_iterations += (linear_iterations.empty() ? "" : " ") + std::to_string(n);
+  }
+  report_out.emplace_back("initial_state_correction.seed", std::to_string(parameters.isc.seed));
+  report_out.emplace_back("initial_state_correction.jitter", scientific(parameters.isc.jitter));
+  report_out.emplace_back("initial_state_correction.iterations", std::to_string(report.iterations));
+  report_out.emplace_back("initial_state_correction.initial_residual",
+                          scientific(report.residuals.front()));
+  report_out.emplace_back("initial_state_correction.final_residual",
+                          scientific(report.residuals.back()));
+  report_out.emplace_back("initial_state_correction.linear_iterations", linear_iterations);
+}
+
 template <class Arith, int D>
 void fill_vectors(const CaseFile& case_file, const std::string& key,
                   const std::vector<Vec<D>>& values, StateField<typename Arith::Raw>& field,
@@ -130,6 +200,11 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
            << ": it must be positive and finite";
     case_file.fail("physics.rest_density", reason.str());
   }
+  std::vector<std::pair<std::string, std::string>> setup_report;
+  if (parameters.isc_enabled) {
+    correct_fluid_positions<D>(case_file, parameters, fluid_positions, fluid_masses,
+                               dummy_positions, dummy_masses, setup_report);
+  }
   const InitialFields<D> initial = initial_fields<D>(parameters, fluid_positions, dummy_positions);
 
   State<D, Raw> state;
@@ -158,6 +233,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   info.dimension = D;
   info.arithmetic = options.arithmetic;
   info.dt = parameters.dt;
+  info.setup_report = std::move(setup_report);
   info.particles = {{"fluid", fluid_positions.size(), true},
                     {"wall", wall_positions.size(), false},
                     {"dummy", dummy_positions.size(), false}};

@@ -1,7 +1,9 @@
 // The Gresho vortex of paper 1 App. A: dummy-particle walls, anti-clump force, Gresho initial
 // fields, Shepard filter (passive and active) and the error norm of eq. (11).
 
+#include "core/case_file.hpp"
 #include "core/energy_log.hpp"
+#include "core/kernel_wendland.hpp"
 #include "core/run_loop.hpp"
 #include "models/wcsph/gresho.hpp"
 #include "models/wcsph/model.hpp"
@@ -10,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace {
@@ -107,3 +111,83 @@ TEST(Gresho, DummyWallsConserveEnergyWithoutTheAntiClumpForce) {
 }
 
 } // namespace
+
+namespace isc_case {
+
+using revsph::CaseError;
+
+// Kernel density (eq. 4) of every fluid particle with fluid and dummy neighbours, all pairs, from
+// the double views of the fixed-point state: independent of the correction's own sums.
+double max_density_deviation(Wcsph2D& model, double support_radius, double rest_density) {
+  const auto& state = model.state();
+  const auto coordinates = [](const auto& field, std::size_t i) {
+    return std::array<double, 2>{revsph::fixedpoint::to_real(field.at(0, i), field.info().scale),
+                                 revsph::fixedpoint::to_real(field.at(1, i), field.info().scale)};
+  };
+  const revsph::WendlandQuintic<2> kernel(support_radius);
+  double largest = 0.0;
+  for (std::size_t a = 0; a < state.position.count(); ++a) {
+    const auto xa = coordinates(state.position, a);
+    double density = 0.0;
+    for (std::size_t b = 0; b < state.position.count(); ++b) {
+      const auto xb = coordinates(state.position, b);
+      density += revsph::fixedpoint::to_real(state.mass.at(0, b), state.mass.info().scale) *
+                 kernel.value(std::hypot(xa[0] - xb[0], xa[1] - xb[1]));
+    }
+    for (std::size_t f = 0; f < state.dummy_position.count(); ++f) {
+      const auto xf = coordinates(state.dummy_position, f);
+      density +=
+          revsph::fixedpoint::to_real(state.dummy_mass.at(0, f), state.dummy_mass.info().scale) *
+          kernel.value(std::hypot(xa[0] - xf[0], xa[1] - xf[1]));
+    }
+    largest = std::max(largest, std::abs(density - rest_density) / rest_density);
+  }
+  return largest;
+}
+
+TEST(GreshoInitialStateCorrection, CaseSwitchMakesTheFluidDensityUniformAndReportsTheSeed) {
+  const std::vector<revsph::testing::Override> overrides = {
+      {"discretisation.dr", "0.04"},
+      {"particles[0].lattice", "\"vogel\""},
+      {"initial_state_correction.enabled", "true"},
+      {"initial_state_correction.seed", "42"}};
+  auto simulation = make_simulation("gresho", overrides);
+  const auto& report = simulation->info().setup_report;
+  const auto value = [&](const std::string& name) {
+    for (const auto& [key, text] : report) {
+      if (key == name) {
+        return text;
+      }
+    }
+    return std::string("(missing)");
+  };
+  EXPECT_EQ(value("initial_state_correction.seed"), "42");
+  EXPECT_LE(std::stoi(value("initial_state_correction.iterations")), 20);
+  EXPECT_LT(std::stod(value("initial_state_correction.final_residual")), 1e-10);
+  // Positions are rounded to the 2^-52-relative position scale after the correction, far below
+  // the tolerance; checked by an all-pairs sum.
+  EXPECT_LT(max_density_deviation(model_of(*simulation), 0.12, 1.0), 1e-9);
+
+  auto without = make_simulation(
+      "gresho", {{"discretisation.dr", "0.04"}, {"particles[0].lattice", "\"vogel\""}});
+  EXPECT_GT(max_density_deviation(model_of(*without), 0.12, 1.0), 0.05);
+  EXPECT_TRUE(without->info().setup_report.empty());
+}
+
+TEST(GreshoInitialStateCorrection, NonConvergenceIsACaseErrorNamingTheResidual) {
+  try {
+    make_simulation("gresho", {{"discretisation.dr", "0.04"},
+                               {"particles[0].lattice", "\"vogel\""},
+                               {"initial_state_correction.enabled", "true"},
+                               {"initial_state_correction.max_iterations", "1"}});
+    FAIL() << "expected a CaseError";
+  } catch (const CaseError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("initial_state_correction"), std::string::npos) << message;
+    EXPECT_NE(message.find("did not converge: max |rho - rho0| / rho0 = "), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("after 1 Newton iterations"), std::string::npos) << message;
+  }
+}
+
+} // namespace isc_case

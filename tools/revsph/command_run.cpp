@@ -36,6 +36,7 @@ void print_header(const LoadedCase& loaded, std::int64_t steps) {
               << " s)";
   }
   std::cout << ", " << thread_count() << (thread_count() == 1 ? " thread\n" : " threads\n");
+  print_setup_report(info);
   for (const std::string& term : info.irreversible_terms) {
     std::cout << "note: irreversible term: " << term << "\n";
   }

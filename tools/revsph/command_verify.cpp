@@ -41,6 +41,9 @@ void write_verify_summary(const fs::path& path, const Simulation& simulation,
   summary["model"] = info.model;
   summary["dimension"] = info.dimension;
   summary["arithmetic"] = std::string(to_string(info.arithmetic));
+  for (const auto& [name, value] : info.setup_report) {
+    summary["setup"][name] = value;
+  }
   for (const ParticleCount& p : info.particles) {
     summary["particles"][p.particle_set] = p.count;
   }
@@ -84,6 +87,7 @@ int verify_command(const VerifyCommandOptions& options) {
             << "D, " << to_string(info.arithmetic) << "-point arithmetic), " << steps
             << " steps forward, time reversal, " << steps << " steps, time reversal; "
             << thread_count() << (thread_count() == 1 ? " thread\n" : " threads\n");
+  print_setup_report(info);
 
   for (const std::string& term : info.irreversible_terms) {
     std::cout << "note: irreversible term: " << term << " — this case cannot return bit for bit\n";

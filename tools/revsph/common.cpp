@@ -122,4 +122,10 @@ void print_error(const std::string& message) {
   std::cerr << "revsph: error: " << message << "\n";
 }
 
+void print_setup_report(const SimulationInfo& info) {
+  for (const auto& [name, value] : info.setup_report) {
+    std::cout << "setup: " << name << " = " << value << "\n";
+  }
+}
+
 } // namespace revsph::cli

@@ -57,4 +57,7 @@ void apply_thread_count(int threads);
 // "revsph: error: <message>" on stderr.
 void print_error(const std::string& message);
 
+// "setup: NAME = VALUE" for each entry of SimulationInfo::setup_report (stdout).
+void print_setup_report(const SimulationInfo& info);
+
 } // namespace revsph::cli

@@ -28,6 +28,9 @@ void write_summary(const std::filesystem::path& path, Simulation& simulation, co
     summary["particles"][p.particle_set] = p.count;
   }
   summary["dt"] = info.dt;
+  for (const auto& [name, value] : info.setup_report) {
+    summary["setup"][name] = value;
+  }
   summary["steps_requested"] = run.steps_requested;
   summary["steps"] = simulation.steps_taken() - run.start_step;
   summary["final_step"] = simulation.steps_taken();
