@@ -6,8 +6,9 @@ way) in fixed and in floating point, then each plotting script and tools/plots/p
 and checks exit statuses, that the PNGs are written, and numbers against computations made here
 from the raw files: the leading-edge RMS against two made-up reference files in the layout of
 the published ones (fronts, time scaling, the T <= 2 cut and interpolation redone here), the
-largest energy error against revsph's summary.json and energy.csv, and the FixPA/FloPA deviations (exactly 0 in fixed point, positive in floating
-point, and the FloPA value recomputed). Skipped where python3-matplotlib is not installed.
+largest energy error against revsph's summary.json and energy.csv, and the FixPA/FloPA
+deviations (exactly 0 in fixed point, positive in floating point, the FloPA value recomputed).
+Skipped where python3-matplotlib is not installed.
 
 Usage: figures_test.py REVSPH_BINARY [unittest options]   (or REVSPH=... in the environment)
 """

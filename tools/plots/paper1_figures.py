@@ -21,9 +21,11 @@ Usage: /usr/bin/python3 tools/plots/paper1_figures.py [--list] [--runs DIR] [--o
   --refdata    the published reference data for Fig. 4 (default: leading_edge.py's)
 
 Without --make-runs, figures whose runs are missing are skipped (the exit status is then 1).
-tools/plots/gresho_table.py, when present, is called as
-`gresho_table.py --runs RUNS --out OUT` (it owns its runs and outputs); when absent it is
-skipped with a note. Exit status 0 only if every figure was made.
+tools/plots/gresho_table.py (Table 2, Gresho vortex), when present, is called as
+`gresho_table.py --runs RUNS --out OUT --revsph REVSPH [--threads N]`; it makes the Gresho runs
+it lacks, so it is called only with --make-runs or when RUNS already holds gresho-* runs, all
+with summary.json; when absent it is skipped with a note. Exit status 0 only if every figure
+was made.
 """
 
 import argparse
@@ -158,6 +160,7 @@ def list_figures(table, runs, revsph, threads, out):
               + ", ".join(f"{r.name}{'' if r.present(runs) else ' (missing)'}" for r in needed))
     gresho = PLOTS / "gresho_table.py"
     print(f"\nTable 2 (Gresho vortex): {gresho.relative_to(REPO)} --runs RUNS --out OUT "
+          f"--revsph REVSPH, with --make-runs or when RUNS holds its gresho-* runs "
           f"({'present' if gresho.is_file() else 'not present: skipped'})")
     print("\nruns (made by --make-runs, one at a time, skipped when summary.json exists):")
     for run in RUNS:
@@ -232,16 +235,26 @@ def main(argv=None):
         made += files
 
     gresho = PLOTS / "gresho_table.py"
+    # gresho_table.py makes whatever Gresho runs it lacks, so it is only called where runs may
+    # be made (--make-runs) or where its runs are already there.
+    gresho_runs = sorted(runs.glob("gresho-*"))
+    gresho_ready = bool(gresho_runs) and all((r / "summary.json").is_file() for r in gresho_runs)
     if args.no_gresho:
         pass
-    elif gresho.is_file():
-        command = [PYTHON, str(gresho), "--runs", str(runs), "--out", str(out)]
+    elif not gresho.is_file():
+        print(f"note: {gresho.relative_to(REPO)} does not exist: Table 2 (Gresho vortex) skipped")
+    elif not (args.make_runs or gresho_ready):
+        print(f"note: Table 2 (Gresho vortex) skipped: no gresho-* runs in {runs}; "
+              f"--make-runs lets {gresho.name} make them")
+    else:
+        command = [PYTHON, str(gresho), "--runs", str(runs), "--out", str(out),
+                   "--revsph", str(revsph)]
+        if args.threads:
+            command += ["--threads", str(args.threads)]
         show(command)
         if subprocess.run(command, env=environment()).returncode != 0:
             print("error: gresho_table.py failed", file=sys.stderr)
             ok = False
-    else:
-        print(f"note: {gresho.relative_to(REPO)} does not exist: Table 2 (Gresho vortex) skipped")
 
     for name in made:
         size = (out / name).stat().st_size
