@@ -30,6 +30,7 @@ was made.
 
 import argparse
 import os
+import shlex
 import shutil
 import subprocess
 import sys
@@ -131,7 +132,7 @@ def find_revsph(given):
 
 
 def show(command):
-    print("$ " + " ".join(str(c) for c in command), flush=True)
+    print("$ " + shlex.join(str(c) for c in command), flush=True)
 
 
 def environment():
@@ -165,7 +166,7 @@ def list_figures(table, runs, revsph, threads, out):
     print("\nruns (made by --make-runs, one at a time, skipped when summary.json exists):")
     for run in RUNS:
         print(f"  {run.name}: {run.purpose}\n    "
-              + " ".join(run.command(revsph, runs, threads)))
+              + shlex.join(run.command(revsph, runs, threads)))
     print("\nFig. 3 uses dambreak-small in both arithmetics, because a float run of the full "
           "case costs another 1.5 h; Fig. 5 compares dt, dt/2, dt/4 on dambreak-small (plus the "
           "full run at its dt).\nWithout dambreak-full (or with --no-full), Figs. 4, 5, 6 and "
