@@ -223,8 +223,10 @@ def drift_figure(runs, path):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0],
-                                     usage=__doc__.split("\n\n")[1].removeprefix("Usage: "))
+    head, usage, *details = __doc__.split("\n\n")
+    parser = argparse.ArgumentParser(description=head, epilog="\n\n".join(details),
+                                     usage=usage.removeprefix("Usage: "),
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("run_dirs", nargs="+", metavar="RUN_DIR")
     parser.add_argument("--label", action="append", default=[],
                         help="legend label of a RUN_DIR (one per RUN_DIR, in order)")

@@ -105,8 +105,10 @@ def configuration(ax, state, colour, title, norm=None, walls=True):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0],
-                                     usage=__doc__.split("\n\n")[1].removeprefix("Usage: "))
+    head, usage, *details = __doc__.split("\n\n")
+    parser = argparse.ArgumentParser(description=head, epilog="\n\n".join(details),
+                                     usage=usage.removeprefix("Usage: "),
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("fixed_dir", metavar="FIXED_VERIFY_DIR")
     parser.add_argument("float_dir", metavar="FLOAT_VERIFY_DIR")
     parser.add_argument("--out", help="output directory (default FLOAT_VERIFY_DIR/analysis)")

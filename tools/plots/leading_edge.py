@@ -141,8 +141,10 @@ def rms_difference(T, X, t_ref, x_ref):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0],
-                                     usage=__doc__.split("\n\n")[1].removeprefix("Usage: "))
+    head, usage, *details = __doc__.split("\n\n")
+    parser = argparse.ArgumentParser(description=head, epilog="\n\n".join(details),
+                                     usage=usage.removeprefix("Usage: "),
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("run_dir", metavar="RUN_DIR")
     parser.add_argument("--out", help="output directory (default RUN_DIR/analysis)")
     parser.add_argument("--tag", default="", help="appended to the output file names")

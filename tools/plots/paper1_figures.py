@@ -174,8 +174,10 @@ def list_figures(table, runs, revsph, threads, out):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0],
-                                     usage=__doc__.split("\n\n")[1].removeprefix("Usage: "))
+    head, usage, *details = __doc__.split("\n\n")
+    parser = argparse.ArgumentParser(description=head, epilog="\n\n".join(details),
+                                     usage=usage.removeprefix("Usage: "),
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--list", action="store_true")
     parser.add_argument("--runs", default=str(REPO / "out" / "paper1"))
     parser.add_argument("--out", default=str(REPO / "docs" / "figures"))
