@@ -90,9 +90,6 @@ class Run:
         start = self.backward["time"][0]
         return 2.0 * start - self.backward["time"]
 
-    def reference_energy(self):
-        return self.forward["total"][0]
-
     def max_relative_error(self):
         return float(np.max(self.forward["relative_error"]))
 
