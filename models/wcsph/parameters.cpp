@@ -119,6 +119,7 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   }
 
   p.isc_enabled = case_file.boolean_or("initial_state_correction.enabled", false);
+  p.isc_with_dummies = case_file.boolean_or("initial_state_correction.include_dummies", true);
   p.isc.max_iterations = static_cast<int>(std::clamp<std::int64_t>(
       case_file.integer_or("initial_state_correction.max_iterations", 20), -1, 1000));
   if (p.isc.max_iterations < 1 || p.isc.max_iterations > 999) {

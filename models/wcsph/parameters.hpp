@@ -38,6 +38,7 @@ struct Parameters {
   Vec<D> centre{};
   // [initial_state_correction]: paper 1 §3.2, applied to the fluid positions at setup
   bool isc_enabled = false;
+  bool isc_with_dummies = true; // dummy particles count in the corrected densities
   IscSettings isc;
   Box<D> domain;
   // [fixed_point]: scales of the stored and the accumulated quantities

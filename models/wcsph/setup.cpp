@@ -202,8 +202,12 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   }
   std::vector<std::pair<std::string, std::string>> setup_report;
   if (parameters.isc_enabled) {
+    const std::vector<Vec<D>> no_positions;
+    const std::vector<double> no_masses;
     correct_fluid_positions<D>(case_file, parameters, fluid_positions, fluid_masses,
-                               dummy_positions, dummy_masses, setup_report);
+                               parameters.isc_with_dummies ? dummy_positions : no_positions,
+                               parameters.isc_with_dummies ? dummy_masses : no_masses,
+                               setup_report);
   }
   const InitialFields<D> initial = initial_fields<D>(parameters, fluid_positions, dummy_positions);
 

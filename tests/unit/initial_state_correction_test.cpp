@@ -93,6 +93,17 @@ TEST(InitialStateCorrection, SquarePatchReachesUniformDensityWithin1e10InAtMostT
   const std::vector<double> density =
       brute_force_density<2>(patch.positions, patch.mass, patch.support_radius);
   EXPECT_LT(max_relative_deviation(density), 1e-10);
+  // Reported, not asserted: the uniform-density configuration the iteration reaches has collapsed
+  // pairs near the free surface (measured 0.004 dr here; damping the steps does not avoid them),
+  // a known limitation documented in models/wcsph/README.md.
+  double closest = 1.0;
+  for (std::size_t a = 0; a < patch.positions[0].size(); ++a) {
+    for (std::size_t b = a + 1; b < patch.positions[0].size(); ++b) {
+      closest = std::min(closest, std::hypot(patch.positions[0][a] - patch.positions[0][b],
+                                             patch.positions[1][a] - patch.positions[1][b]));
+    }
+  }
+  std::cout << "closest pair after the correction: " << closest / patch.dr << " dr\n";
   for (std::size_t i = 0; i + 1 < report.residuals.size(); ++i) {
     std::cout << "iteration " << i << ": residual " << report.residuals[i] << ", "
               << report.linear_iterations[i] << " CG iterations\n";
