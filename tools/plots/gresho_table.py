@@ -93,7 +93,7 @@ def velocity_figure(run_dir, path):
             u = f["particles/fluid/velocity"][:]
             t = float(f.attrs["time"])
         speed = np.hypot(u[:, 0], u[:, 1])
-        image = axis.scatter(x[:, 0], x[:, 1], c=speed, s=0.6, cmap="viridis", vmin=0, vmax=1.0,
+        image = axis.scatter(x[:, 0], x[:, 1], c=speed, s=1.6, cmap="viridis", vmin=0, vmax=1.0,
                              linewidths=0)
         axis.set_aspect("equal")
         axis.set_title(f"Vogel spiral + ISC, t = {t:.2f}")
