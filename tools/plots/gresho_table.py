@@ -86,7 +86,7 @@ def velocity_figure(run_dir, path):
     snapshots = sorted((run_dir / "snapshots").glob("step_*.h5"))
     if len(snapshots) < 2:
         return
-    figure, axes = plt.subplots(1, 2, figsize=(9.5, 4.4), constrained_layout=True)
+    figure, axes = plt.subplots(1, 2, figsize=(8.0, 3.7), constrained_layout=True)
     for axis, file in zip(axes, (snapshots[0], snapshots[-1])):
         with h5py.File(file, "r") as f:
             x = f["particles/fluid/position"][:]
@@ -100,7 +100,7 @@ def velocity_figure(run_dir, path):
         axis.set_xlim(-0.52, 0.52)
         axis.set_ylim(-0.52, 0.52)
     figure.colorbar(image, ax=axes, label="speed |u|", shrink=0.85)
-    figure.savefig(path, dpi=110)
+    figure.savefig(path, dpi=70)
     plt.close(figure)
     print(f"wrote {path}")
 
