@@ -26,11 +26,12 @@ error on the scale of the flow. The normaliser is the net drop E_g(0) - E_g(t_en
 forward run, not the largest drop, so it is the energy the run converted by its end.
 """
 
-import argparse
 import csv
 import json
 import sys
 from pathlib import Path
+
+from docstring_cli import parser_from_docstring
 
 import matplotlib
 
@@ -233,10 +234,7 @@ def drift_figure(runs, path):
 
 
 def main(argv=None):
-    head, usage, *details = __doc__.split("\n\n")
-    parser = argparse.ArgumentParser(description=head, epilog="\n\n".join(details),
-                                     usage=usage.removeprefix("Usage: "),
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = parser_from_docstring(__doc__)
     parser.add_argument("run_dirs", nargs="+", metavar="RUN_DIR")
     parser.add_argument("--label", action="append", default=[],
                         help="legend label of a RUN_DIR (one per RUN_DIR, in order)")

@@ -18,13 +18,14 @@ also the distances from the initial state. For the fixed run the raw position in
 compared too: every deviation must be exactly 0, and the script exits with status 1 if not.
 """
 
-import argparse
 import json
 import re
 import sys
 from pathlib import Path
 
 import h5py
+
+from docstring_cli import parser_from_docstring
 import matplotlib
 
 matplotlib.use("Agg")
@@ -105,10 +106,7 @@ def configuration(ax, state, colour, title, norm=None, walls=True):
 
 
 def main(argv=None):
-    head, usage, *details = __doc__.split("\n\n")
-    parser = argparse.ArgumentParser(description=head, epilog="\n\n".join(details),
-                                     usage=usage.removeprefix("Usage: "),
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = parser_from_docstring(__doc__)
     parser.add_argument("fixed_dir", metavar="FIXED_VERIFY_DIR")
     parser.add_argument("float_dir", metavar="FLOAT_VERIFY_DIR")
     parser.add_argument("--out", help="output directory (default FLOAT_VERIFY_DIR/analysis)")

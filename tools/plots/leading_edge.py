@@ -32,13 +32,14 @@ the simulated time range; the number of points used is printed with it. The expe
 is not instantaneous; no time shift is applied.
 """
 
-import argparse
 import math
 import sys
 import tomllib
 from pathlib import Path
 
 import h5py
+
+from docstring_cli import parser_from_docstring
 import matplotlib
 
 matplotlib.use("Agg")
@@ -141,10 +142,7 @@ def rms_difference(T, X, t_ref, x_ref):
 
 
 def main(argv=None):
-    head, usage, *details = __doc__.split("\n\n")
-    parser = argparse.ArgumentParser(description=head, epilog="\n\n".join(details),
-                                     usage=usage.removeprefix("Usage: "),
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = parser_from_docstring(__doc__)
     parser.add_argument("run_dir", metavar="RUN_DIR")
     parser.add_argument("--out", help="output directory (default RUN_DIR/analysis)")
     parser.add_argument("--tag", default="", help="appended to the output file names")

@@ -28,13 +28,14 @@ with summary.json; when absent it is skipped with a note. Exit status 0 only if 
 was made.
 """
 
-import argparse
 import os
 import shlex
 import shutil
 import subprocess
 import sys
 from pathlib import Path
+
+from docstring_cli import parser_from_docstring
 
 REPO = Path(__file__).resolve().parents[2]
 PLOTS = REPO / "tools" / "plots"
@@ -174,10 +175,7 @@ def list_figures(table, runs, revsph, threads, out):
 
 
 def main(argv=None):
-    head, usage, *details = __doc__.split("\n\n")
-    parser = argparse.ArgumentParser(description=head, epilog="\n\n".join(details),
-                                     usage=usage.removeprefix("Usage: "),
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = parser_from_docstring(__doc__)
     parser.add_argument("--list", action="store_true")
     parser.add_argument("--runs", default=str(REPO / "out" / "paper1"))
     parser.add_argument("--out", default=str(REPO / "docs" / "figures"))
