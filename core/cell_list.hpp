@@ -38,9 +38,15 @@ public:
   double cell_size() const { return cell_size_; }
   std::size_t cell_count() const { return cell_start_.size() - 1; }
   std::size_t point_count() const { return sorted_points_.size(); }
+  // Axis k of the point in cell-order slot s, as given to build(). The candidates of a query are
+  // a few contiguous runs of slots, so reading coordinates here instead of through the point
+  // index stays in cache however the points are ordered in memory (the profile in
+  // tools/bench/results/profile-2026-11-22.md: the neighbour search became memory bound as the
+  // fluid deformed).
+  double sorted_coordinate(int k, std::uint32_t slot) const { return sorted_coordinates_[k][slot]; }
 
-  // Calls visit(j) for every point j in the 3^D cells around `query` (a superset of the points
-  // within cell_size of it).
+  // Calls visit(j, s) for every point j in the 3^D cells around `query` (a superset of the points
+  // within cell_size of it); s is j's slot in cell order, for sorted_coordinate().
   template <class Visit>
   void for_each_candidate(const Vec<D>& query, Visit&& visit) const {
     std::array<int, D> centre{};
@@ -80,7 +86,7 @@ private:
     const std::uint32_t begin = cell_start_[first_cell];
     const std::uint32_t end = cell_start_[last_cell + 1];
     for (std::uint32_t s = begin; s < end; ++s) {
-      visit(sorted_points_[s]);
+      visit(sorted_points_[s], s);
     }
   }
 
@@ -90,7 +96,8 @@ private:
   std::array<int, D> cells_per_axis_{};
   std::vector<std::uint32_t> cell_start_;    // cell c holds sorted_points_[start[c], start[c+1])
   std::vector<std::uint32_t> sorted_points_; // point indices, by cell, ascending within a cell
-  std::vector<std::uint32_t> cell_of_point_; // scratch for build()
+  std::array<std::vector<double>, D> sorted_coordinates_; // by slot, as sorted_points_
+  std::vector<std::uint32_t> cell_of_point_;              // scratch for build()
 };
 
 extern template class CellList<2>;
