@@ -78,12 +78,6 @@ void CellList<D>::build(const CoordinateView<D>& points) {
   for (std::size_t i = 0; i < n; ++i) {
     sorted_points_[fill[cell_of_point_[i]]++] = static_cast<std::uint32_t>(i);
   }
-  for (int k = 0; k < D; ++k) {
-    sorted_coordinates_[k].resize(n);
-    for (std::size_t s = 0; s < n; ++s) {
-      sorted_coordinates_[k][s] = points[k][sorted_points_[s]];
-    }
-  }
 }
 
 template class CellList<2>;

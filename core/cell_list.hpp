@@ -38,15 +38,9 @@ public:
   double cell_size() const { return cell_size_; }
   std::size_t cell_count() const { return cell_start_.size() - 1; }
   std::size_t point_count() const { return sorted_points_.size(); }
-  // Axis k of the point in cell-order slot s, as given to build(). The candidates of a query are
-  // a few contiguous runs of slots, so reading coordinates here instead of through the point
-  // index stays in cache however the points are ordered in memory (the profile in
-  // tools/bench/results/profile-2026-11-22.md: the neighbour search became memory bound as the
-  // fluid deformed).
-  double sorted_coordinate(int k, std::uint32_t slot) const { return sorted_coordinates_[k][slot]; }
 
-  // Calls visit(j, s) for every point j in the 3^D cells around `query` (a superset of the points
-  // within cell_size of it); s is j's slot in cell order, for sorted_coordinate().
+  // Calls visit(j) for every point j in the 3^D cells around `query` (a superset of the points
+  // within cell_size of it).
   template <class Visit>
   void for_each_candidate(const Vec<D>& query, Visit&& visit) const {
     std::array<int, D> centre{};
@@ -86,7 +80,7 @@ private:
     const std::uint32_t begin = cell_start_[first_cell];
     const std::uint32_t end = cell_start_[last_cell + 1];
     for (std::uint32_t s = begin; s < end; ++s) {
-      visit(sorted_points_[s], s);
+      visit(sorted_points_[s]);
     }
   }
 

@@ -32,18 +32,12 @@ Vec<D> point_of(const CoordinateView<D>& points, std::size_t i) {
 // branch on the distance test: once the fluid is disordered, about a third of the candidates
 // pass in no predictable pattern, and mispredicted branches dominated the search.
 template <int D, class Emit>
-void scan_query(const CellList<D>& cells, const CoordinateView<D>& queries, std::size_t a,
-                double radius_squared, bool exclude_self, Emit&& emit) {
-  const Vec<D> query = point_of<D>(queries, a);
-  cells.for_each_candidate(query, [&](std::uint32_t b, std::uint32_t slot) {
-    // The same expression as squared_distance (same operand order): bit-identical results.
-    double sum = 0.0;
-    for (int k = 0; k < D; ++k) {
-      const double d = query[k] - cells.sorted_coordinate(k, slot);
-      sum += d * d;
-    }
+void scan_query(const CellList<D>& cells, const CoordinateView<D>& targets,
+                const CoordinateView<D>& queries, std::size_t a, double radius_squared,
+                bool exclude_self, Emit&& emit) {
+  cells.for_each_candidate(point_of<D>(queries, a), [&](std::uint32_t b) {
     const bool is_self = exclude_self & (b == a);
-    emit(b, (sum < radius_squared) & !is_self);
+    emit(b, (squared_distance<D>(queries, a, targets, b) < radius_squared) & !is_self);
   });
 }
 
@@ -56,9 +50,6 @@ void find_neighbours(const CellList<D>& cells, const CoordinateView<D>& targets,
   if (radius > cells.cell_size()) {
     throw std::invalid_argument("find_neighbours: the radius exceeds the cell size");
   }
-  if (cells.point_count() != targets[0].size()) {
-    throw std::invalid_argument("find_neighbours: the cell list was built from other points");
-  }
   const std::size_t n = queries[0].size();
   const double radius_squared = radius * radius;
   const bool exclude_self = self_pairs == SelfPairs::excluded;
@@ -68,7 +59,7 @@ void find_neighbours(const CellList<D>& cells, const CoordinateView<D>& targets,
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n; ++a) {
     std::size_t count = 0;
-    scan_query<D>(cells, queries, a, radius_squared, exclude_self,
+    scan_query<D>(cells, targets, queries, a, radius_squared, exclude_self,
                   [&](std::uint32_t, bool accepted) { count += accepted; });
     result.offsets[a + 1] = count;
   }
@@ -86,7 +77,7 @@ void find_neighbours(const CellList<D>& cells, const CoordinateView<D>& targets,
       const std::size_t expected = result.offsets[a + 1] - result.offsets[a];
       buffer.resize(expected + 1);
       std::size_t written = 0;
-      scan_query<D>(cells, queries, a, radius_squared, exclude_self,
+      scan_query<D>(cells, targets, queries, a, radius_squared, exclude_self,
                     [&](std::uint32_t b, bool accepted) {
                       buffer[written] = b;
                       written += accepted;
