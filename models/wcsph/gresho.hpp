@@ -7,6 +7,7 @@
 //        = rho0 (12.5 r^2 - 20 r + 4 ln r + 6 - 4 ln 0.4)  (0.2 <= r < 0.4)
 //        = 0                                                (r >= 0.4).
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -17,6 +18,16 @@ inline double azimuthal_velocity(double r) {
     return 5.0 * r;
   }
   return r < 0.4 ? 2.0 - 5.0 * r : 0.0;
+}
+
+// The velocity (u_x, u_y) at offset (dx, dy) from the vortex centre: u(r) along e_theta.
+inline std::array<double, 2> velocity(double dx, double dy) {
+  const double r = std::hypot(dx, dy);
+  if (!(r > 0.0)) {
+    return {0.0, 0.0};
+  }
+  const double u = azimuthal_velocity(r);
+  return {-u * dy / r, u * dx / r};
 }
 
 inline double pressure(double r, double rest_density) {

@@ -346,12 +346,8 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics() {
   double raw_sum = 0.0;
   double filtered_sum = 0.0;
   for (std::size_t a = 0; a < fluid_count(); ++a) {
-    const double dx = position_[0][a] - parameters_.centre[0];
-    const double dy = position_[1][a] - parameters_.centre[1];
-    const double r = std::hypot(dx, dy);
-    const double u_theta = gresho::azimuthal_velocity(r);
-    const double exact_x = r > 0.0 ? -u_theta * dy / r : 0.0;
-    const double exact_y = r > 0.0 ? u_theta * dx / r : 0.0;
+    const auto [exact_x, exact_y] = gresho::velocity(position_[0][a] - parameters_.centre[0],
+                                                     position_[1][a] - parameters_.centre[1]);
     const double volume = mass_[a] / density_[a];
     raw_sum += volume * ((velocity[0][a] - exact_x) * (velocity[0][a] - exact_x) +
                          (velocity[1][a] - exact_y) * (velocity[1][a] - exact_y));

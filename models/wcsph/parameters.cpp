@@ -120,11 +120,12 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
 
   p.isc_enabled = case_file.boolean_or("initial_state_correction.enabled", false);
   p.isc_with_dummies = case_file.boolean_or("initial_state_correction.include_dummies", true);
-  p.isc.max_iterations = static_cast<int>(std::clamp<std::int64_t>(
-      case_file.integer_or("initial_state_correction.max_iterations", 20), -1, 1000));
-  if (p.isc.max_iterations < 1 || p.isc.max_iterations > 999) {
+  const std::int64_t max_iterations =
+      case_file.integer_or("initial_state_correction.max_iterations", 20);
+  if (max_iterations < 1 || max_iterations > 999) {
     case_file.fail("initial_state_correction.max_iterations", "must be between 1 and 999");
   }
+  p.isc.max_iterations = static_cast<int>(max_iterations);
   p.isc.tolerance = case_file.number_or("initial_state_correction.tolerance", 1e-10);
   if (!(p.isc.tolerance > 0.0 && p.isc.tolerance < 1.0)) {
     case_file.fail("initial_state_correction.tolerance", "must be > 0 and < 1");

@@ -52,12 +52,9 @@ InitialFields<D> initial_fields(const Parameters<D>& parameters,
   for (std::size_t a = 0; a < fluid_positions.size(); ++a) {
     const Vec<D>& p = fluid_positions[a];
     if (parameters.initial_field == InitialField::gresho_vortex) {
-      const double dx = p[0] - parameters.centre[0];
-      const double dy = p[1] - parameters.centre[1];
-      const double r = std::hypot(dx, dy);
-      const double u = gresho::azimuthal_velocity(r);
-      fields.velocity[a][0] = r > 0.0 ? -u * dy / r : 0.0;
-      fields.velocity[a][1] = r > 0.0 ? u * dx / r : 0.0;
+      const auto u = gresho::velocity(p[0] - parameters.centre[0], p[1] - parameters.centre[1]);
+      fields.velocity[a][0] = u[0];
+      fields.velocity[a][1] = u[1];
     }
     fields.target_density.push_back(target(p));
   }
