@@ -1,6 +1,7 @@
 #include "core/xdmf.hpp"
 
-#include <fstream>
+#include "core/atomic_file.hpp"
+
 #include <sstream>
 #include <stdexcept>
 
@@ -78,16 +79,7 @@ std::string xdmf_document(int dimension, const std::vector<XdmfSnapshot>& snapsh
 
 void write_xdmf(const std::filesystem::path& path, int dimension,
                 const std::vector<XdmfSnapshot>& snapshots) {
-  std::filesystem::path temporary = path;
-  temporary += ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << xdmf_document(dimension, snapshots);
-    if (!out.flush()) {
-      throw std::runtime_error("cannot write " + temporary.string());
-    }
-  }
-  std::filesystem::rename(temporary, path);
+  write_file_atomically(path, xdmf_document(dimension, snapshots));
 }
 
 } // namespace revsph

@@ -1,6 +1,7 @@
 // revsph entropy: the reduced Boltzmann entropy of a run's particle speeds over time (paper 1,
 // §6 and Appendix B; the formulas are in tools/analysis/boltzmann_entropy.hpp).
 
+#include "core/atomic_file.hpp"
 #include "tools/analysis/boltzmann_entropy.hpp"
 #include "tools/revsph/commands.hpp"
 #include "verify/snapshot_check.hpp"
@@ -149,19 +150,6 @@ std::string number(double value) {
   char text[64];
   std::snprintf(text, sizeof text, "%.12g", value);
   return text;
-}
-
-// Written to a temporary name and renamed, like every other revsph output.
-void write_file(const fs::path& path, const std::string& contents) {
-  const fs::path temporary = path.string() + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << contents;
-    if (!out.flush()) {
-      throw std::runtime_error("cannot write " + temporary.string());
-    }
-  }
-  fs::rename(temporary, path);
 }
 
 std::string entropy_csv(const std::vector<EntropyRow>& rows) {
@@ -326,7 +314,7 @@ int entropy_command(const EntropyOptions& options) {
 
   const fs::path out = options.out_dir.empty() ? run_dir / "analysis" : fs::path(options.out_dir);
   fs::create_directories(out);
-  write_file(out / "entropy.csv", entropy_csv(rows));
+  write_file_atomically(out / "entropy.csv", entropy_csv(rows));
   std::string histograms = "snapshot,phase,step,time,dimension,theta_fit,bin,v_low,v_high,"
                            "v_centre,count,density,mb_density\n";
   if (reversal) {
@@ -336,7 +324,7 @@ int entropy_command(const EntropyOptions& options) {
     append_histogram(histograms, "turning_point", *last_forward);
   }
   append_histogram(histograms, "final", rows.back());
-  write_file(out / "histograms.csv", histograms);
+  write_file_atomically(out / "histograms.csv", histograms);
 
   const SnapshotSpeeds& first = snapshots.front();
   std::cout << "revsph entropy: " << run_dir.string() << ": " << snapshots.size() << " snapshots, "

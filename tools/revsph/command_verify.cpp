@@ -1,3 +1,4 @@
+#include "core/atomic_file.hpp"
 #include "core/build_info.hpp"
 #include "core/energy_log.hpp"
 #include "core/progress.hpp"
@@ -9,7 +10,6 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -68,7 +68,7 @@ void write_verify_summary(const fs::path& path, const Simulation& simulation,
                       {"git_commit", build_info::git_commit},
                       {"compiler", build_info::compiler},
                       {"flags", build_info::flags}};
-  std::ofstream(path) << summary.dump(2) << "\n";
+  write_file_atomically(path, summary.dump(2) + "\n");
 }
 
 } // namespace

@@ -1,11 +1,11 @@
 #include "tools/revsph/summary.hpp"
 
+#include "core/atomic_file.hpp"
 #include "core/build_info.hpp"
 #include "core/memory.hpp"
 
 #include <nlohmann/json.hpp>
 
-#include <fstream>
 #include <stdexcept>
 
 namespace revsph::cli {
@@ -68,16 +68,7 @@ void write_summary(const std::filesystem::path& path, Simulation& simulation, co
                       {"compiler", build_info::compiler},
                       {"build_type", build_info::build_type},
                       {"flags", build_info::flags}};
-  std::filesystem::path temporary = path;
-  temporary += ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::trunc);
-    out << summary.dump(2) << "\n";
-    if (!out.flush()) {
-      throw std::runtime_error("cannot write " + temporary.string());
-    }
-  }
-  std::filesystem::rename(temporary, path);
+  write_file_atomically(path, summary.dump(2) + "\n");
 }
 
 } // namespace revsph::cli
