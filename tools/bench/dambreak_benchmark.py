@@ -1,31 +1,66 @@
 #!/usr/bin/python3
-"""Benchmark the WCSPH dam break: particle-steps per second and peak memory.
+"""Benchmark revsph on the dam break: particle-steps per second, threads, memory.
 
-For every spatial step dr (default 0.02, 0.01, 0.005 m) and every thread count
-(default 1 and 2) this script runs
+One command measures several suites (select with --suite; default: all):
 
-    revsph run dambreak --set discretisation.dr=DR --steps N --threads K --out DIR --force
+  table1   the Table-1 dam break (2D, dr = 0.005 m, 80 000 fluid particles),
+           1 and 2 threads, in two states, 400 steps each:
+             "t=0"    the fresh lattice (the column starts to fall), and
+             "t=0.5s" continued from the t = 0.5 s state, where the fluid is
+                      splashing and disordered (the expensive phase).
+           Their mean is reported as the representative figure of a full run;
+           it is the harmonic mean of the two rates, i.e. the rate of a run
+           that spends equally many steps in both states.
+  scaling  the 2D dam break at dr = 0.01, 0.005, 0.0025, 0.00125 m (2e4 to
+           1.28e6 fluid particles) with 2 threads, 3.2e7 particle-steps per run
+           (at least 20 steps); reports each size's rate relative to the mean
+           rate of all sizes and whether max/min of the rates is within 1.2
+           ("linear in N within 20 %").
+  3d       dambreak-3d-small at dr = 0.0125 and 0.00625 m (16 000 and 128 000
+           fluid particles), 1 and 2 threads, 3.2e6 particle-steps per run.
 
-as a separate process, R times (default 5), and reads DIR/summary.json.  Each
-configuration is its own process, so "peak_memory_bytes" (getrusage maxrss of
-that process) is the peak memory of that configuration alone.
+Every configuration is a separate process, run R times (default 5):
 
-Reported per (dr, threads):
+    revsph run CASE --set discretisation.dr=DR --steps N --threads K --out DIR --force \
+        --set output.snapshot_every=100000000
+    revsph run --from SNAPSHOT.h5 --steps N --threads K --out DIR --force \
+        --set output.snapshot_every=100000000                  (the t=0.5s state)
+
+and the figures are read from DIR/summary.json.  Because each configuration
+has its own process, "peak_memory_bytes" (getrusage maxrss) is its own peak.
+
+The t = 0.5 s state is made once per binary with
+
+    revsph run dambreak --set discretisation.dr=0.005 --t-end 0.5 --out DIR \
+        --set output.snapshot_every=100000000
+
+(20 000 steps: several minutes) and kept in --cache-dir under a name holding
+the binary's SHA-256, so a rebuilt engine never continues from a state that
+another build produced.  --snapshot PATH uses an existing snapshot instead.
+
+Reported per configuration (workload x threads):
   * the median particle-steps per second over the repeats, with min and max
     (particle-steps = fluid particles x steps, as computed by revsph itself);
   * the speed-up of the median against the smallest thread count;
   * the peak resident memory (largest over the repeats), and that divided by
     the total number of particles (fluid + wall);
-and per dr whether the final state hash was identical in every run, across
-thread counts and repeats (a free determinism check: it must be "yes").
+and per workload whether the final state hash was identical in every run,
+across thread counts and repeats (the engine is bitwise deterministic, so a
+difference is a bug).
+
+With --profile, one 1-thread run of the t=0.5s state (100 steps) is recorded
+with `perf record -F 999 -g` and the top symbols of
+`perf report --stdio --no-children` are reported (or "perf not available").
 
 With --output FILE a markdown record is written: command line, date, machine
-(CPU, cores, memory, kernel), the build of revsph (compiler, flags, commit)
-and the table.  Recorded runs live in tools/bench/results/.
+(CPU, cores, memory, kernel), the build of revsph (compiler, flags, commit),
+the inputs, one table per suite, the determinism check and the profile.
+Recorded runs live in tools/bench/results/.
 
 Exit status: 0 on success; 1 if a run failed or the binary changed while the
-benchmark ran (nothing is written then); 2 if the binary is missing; 3 if a
-final state hash differed between runs of one resolution.
+benchmark ran (nothing is written then); 2 if the binary (or the snapshot
+given with --snapshot) is missing; 3 if a final state hash differed between
+runs of one workload.  A failed profile is reported, not an error.
 
 Standard library only; run with /usr/bin/python3 from any directory.
 """
@@ -38,7 +73,9 @@ import hashlib
 import json
 import os
 import platform
+import re
 import shlex
+import shutil
 import statistics
 import subprocess
 import sys
@@ -48,24 +85,88 @@ from pathlib import Path
 
 REPO_ROOT = Path(__file__).resolve().parents[2]
 DEFAULT_REVSPH = REPO_ROOT / "build" / "bin" / "revsph"
-CASE = "dambreak"
-
-DEFAULT_RESOLUTIONS = [0.02, 0.01, 0.005]
-DEFAULT_THREADS = [1, 2]
+DEFAULT_CACHE_DIR = Path("/tmp/revsph-bench-cache")
 DEFAULT_REPEATS = 5
-# Steps per resolution, chosen so that one run takes a few seconds.
-DEFAULT_STEPS = {0.02: 2000, 0.01: 1000, 0.005: 400}
-# For a resolution not in DEFAULT_STEPS: aim at this many fluid particle-steps.
-# The dam-break column is 1 m x 2 m, i.e. 2 / dr^2 fluid particles.
-FALLBACK_PARTICLE_STEPS = 2.0e7
+
+SUITES = ["table1", "scaling", "3d"]
+# Thread counts per suite unless --threads is given.  Scaling only needs the
+# production setting (2 threads on the reference machine); the thread speed-up
+# is measured by table1 and 3d.
+DEFAULT_SUITE_THREADS = {"table1": [1, 2], "scaling": [2], "3d": [1, 2]}
+
+CASE_2D = "dambreak"
+CASE_3D = "dambreak-3d-small"
+
+TABLE1_DR = 0.005
+TABLE1_STEPS = 400
+# The disordered state: simulated time, and the dr it is made at.
+SPLASH_TIME = 0.5
+
+DEFAULT_SCALING_RESOLUTIONS = [0.01, 0.005, 0.0025, 0.00125]
+SCALING_PARTICLE_STEPS = 3.2e7
+DEFAULT_3D_RESOLUTIONS = [0.0125, 0.00625]
+# 3D steps cost about 8x more per particle than 2D ones; this keeps a 1-thread
+# run near 10 s.
+THREE_D_PARTICLE_STEPS = 3.2e6
+MIN_STEPS = 20
+# "Linear in N": the largest rate over the smallest rate, across sizes.
+LINEARITY_TOLERANCE = 1.2
+
+PROFILE_STEPS = 100
+PROFILE_SYMBOLS = 12
+PROFILE_SYMBOL_WIDTH = 140
+
 QUICK_STEP_FRACTION = 0.1
+# A snapshot interval larger than any run: only the first and last states are
+# written, so output costs (almost) nothing.
+NO_SNAPSHOTS = "output.snapshot_every=100000000"
+
+
+def fluid_particles_2d(dr: float) -> float:
+    """The 2D dam-break column is 1 m x 2 m, filled on a lattice of spacing dr."""
+    return 2.0 / (dr * dr)
+
+
+def fluid_particles_3d(dr: float) -> float:
+    """The small 3D column is 0.25 m x 0.25 m x 0.5 m."""
+    return 0.25 * 0.25 * 0.5 / dr ** 3
+
+
+# --------------------------------------------------------------------------
+# What is measured
+# --------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Workload:
+    """One thing to time: a built-in case at a resolution, or a continuation of a snapshot."""
+
+    suite: str
+    label: str
+    steps: int
+    case: str
+    dr: float
+    snapshot: Path | None = None
+
+    def command(self, revsph: Path, threads: int, out_dir: str) -> list[str]:
+        if self.snapshot is not None:
+            start = ["--from", str(self.snapshot)]
+        else:
+            start = [self.case, "--set", f"discretisation.dr={self.dr:g}"]
+        return ([str(revsph), "run"] + start
+                + ["--steps", str(self.steps), "--threads", str(threads),
+                   "--out", out_dir, "--force", "--set", NO_SNAPSHOTS])
+
+    @property
+    def title(self) -> str:
+        """How the workload is named in the determinism list and the progress log."""
+        return f"{self.suite} {self.label}"
 
 
 @dataclass
 class RunResult:
     """What one revsph process reported in its summary.json."""
 
-    dr: float
     threads: int
     steps: int
     fluid_particles: int
@@ -79,9 +180,8 @@ class RunResult:
 
 @dataclass
 class ConfigurationSummary:
-    """All repeats of one (dr, threads) configuration."""
+    """All repeats of one (workload, threads) configuration."""
 
-    dr: float
     threads: int
     runs: list[RunResult] = field(default_factory=list)
 
@@ -103,6 +203,49 @@ class ConfigurationSummary:
         return first.fluid_particles + first.wall_particles
 
 
+@dataclass
+class WorkloadResults:
+    """Every thread count of one workload, keyed by thread count (ascending)."""
+
+    workload: Workload
+    by_threads: dict[int, ConfigurationSummary]
+
+    @property
+    def hash_is_invariant(self) -> bool:
+        """True if every run of this workload ended in the same state hash."""
+        hashes = {run.final_hash for summary in self.by_threads.values()
+                  for run in summary.runs}
+        return len(hashes) == 1
+
+    @property
+    def first_run(self) -> RunResult:
+        return next(iter(self.by_threads.values())).runs[0]
+
+
+@dataclass
+class SplashState:
+    """Where the t = 0.5 s snapshot came from, for the record."""
+
+    path: Path
+    origin: str
+    sha256: str
+
+
+@dataclass
+class ProfileResult:
+    """The perf summary of one run, or why there is none."""
+
+    note: str
+    command: str = ""
+    particle_steps_per_second: float | None = None
+    # (share in percent, shared object, symbol), largest first
+    symbols: list[tuple[float, str, str]] = field(default_factory=list)
+
+
+class BenchmarkError(RuntimeError):
+    """A run failed; the benchmark stops with exit status 1."""
+
+
 # --------------------------------------------------------------------------
 # Command line
 # --------------------------------------------------------------------------
@@ -110,30 +253,57 @@ class ConfigurationSummary:
 
 def parse_arguments(argv: list[str]) -> argparse.Namespace:
     parser = argparse.ArgumentParser(
-        description="Benchmark the WCSPH dam break (particle-steps/s and peak memory).")
+        description="Benchmark revsph on the dam break: particle-steps/s, thread "
+                    "speed-up, peak memory, determinism and a profile.")
+    parser.add_argument("--suite", nargs="+", choices=SUITES, default=SUITES,
+                        help="suites to run (default: all: %(default)s)")
     parser.add_argument("--revsph", type=Path, default=DEFAULT_REVSPH,
                         help="path of the revsph binary (default: %(default)s)")
     parser.add_argument("--repeats", type=positive_int, default=DEFAULT_REPEATS,
                         help="runs per configuration; the median is reported "
                              "(default: %(default)s)")
+    parser.add_argument("--threads", type=positive_int, nargs="+", default=None,
+                        metavar="K",
+                        help="thread counts for every suite (default: table1 1 2, "
+                             "scaling 2, 3d 1 2)")
     parser.add_argument("--steps", type=positive_int, default=None,
-                        help="time steps for every resolution (default: per resolution, "
-                             + ", ".join(f"dr={dr}: {n}" for dr, n in DEFAULT_STEPS.items())
-                             + ")")
-    parser.add_argument("--resolutions", type=float, nargs="+", default=DEFAULT_RESOLUTIONS,
-                        metavar="DR", help="spatial steps dr in m (default: %(default)s)")
-    parser.add_argument("--threads", type=positive_int, nargs="+", default=DEFAULT_THREADS,
-                        metavar="K", help="thread counts (default: %(default)s)")
+                        help="the same number of time steps for every run (default: "
+                             f"table1 {TABLE1_STEPS}; scaling "
+                             f"{SCALING_PARTICLE_STEPS:.1e} and 3d "
+                             f"{THREE_D_PARTICLE_STEPS:.1e} particle-steps, "
+                             f"at least {MIN_STEPS} steps)")
+    parser.add_argument("--resolutions", type=positive_float, nargs="+",
+                        default=DEFAULT_SCALING_RESOLUTIONS, metavar="DR",
+                        help="dr in m of the scaling suite (default: %(default)s)")
+    parser.add_argument("--resolutions-3d", type=positive_float, nargs="+",
+                        default=DEFAULT_3D_RESOLUTIONS, metavar="DR",
+                        help="dr in m of the 3d suite (default: %(default)s)")
+    parser.add_argument("--snapshot", type=Path, default=None,
+                        help="use this t = 0.5 s dam-break snapshot (dr = 0.005) instead "
+                             "of making one in --cache-dir")
+    parser.add_argument("--cache-dir", type=Path, default=DEFAULT_CACHE_DIR,
+                        help="where the t = 0.5 s snapshot is made and kept, per binary "
+                             "(default: %(default)s)")
+    parser.add_argument("--profile", action="store_true",
+                        help=f"profile one 1-thread run of the t=0.5s state "
+                             f"({PROFILE_STEPS} steps) with perf")
     parser.add_argument("--output", type=Path, default=None,
                         help="write a markdown record of the run to this file "
                              "(default: print only)")
     parser.add_argument("--quick", action="store_true",
-                        help="smoke test: 1 repeat and 10%% of the steps")
+                        help="smoke test of this script: 1 repeat and 10%% of the steps; "
+                             "its figures are too short to quote")
     arguments = parser.parse_args(argv)
     arguments.revsph = arguments.revsph.absolute()
+    if arguments.snapshot is not None:
+        arguments.snapshot = arguments.snapshot.absolute()
+    arguments.cache_dir = arguments.cache_dir.absolute()
     if arguments.quick:
         arguments.repeats = 1
-    arguments.threads = sorted(set(arguments.threads))
+    # Run the suites in their canonical order, each once, however they were given.
+    arguments.suite = [suite for suite in SUITES if suite in arguments.suite]
+    if arguments.threads is not None:
+        arguments.threads = sorted(set(arguments.threads))
     return arguments
 
 
@@ -144,18 +314,59 @@ def positive_int(text: str) -> int:
     return value
 
 
-def steps_for_resolution(dr: float, arguments: argparse.Namespace) -> int:
-    """Time steps to run at spatial step dr (before the --quick reduction)."""
-    if arguments.steps is not None:
-        steps = arguments.steps
-    elif dr in DEFAULT_STEPS:
-        steps = DEFAULT_STEPS[dr]
-    else:
-        fluid_particles = 2.0 / (dr * dr)
-        steps = max(10, round(FALLBACK_PARTICLE_STEPS / fluid_particles))
-    if arguments.quick:
-        steps = max(1, round(steps * QUICK_STEP_FRACTION))
-    return steps
+def positive_float(text: str) -> float:
+    """A spatial step: particle counts and step counts divide by it."""
+    value = float(text)
+    if not value > 0.0:
+        raise argparse.ArgumentTypeError(f"must be positive, got {text}")
+    return value
+
+
+def threads_for_suite(suite: str, arguments: argparse.Namespace) -> list[int]:
+    return arguments.threads if arguments.threads is not None else DEFAULT_SUITE_THREADS[suite]
+
+
+def scaled_steps(default_steps: int, arguments: argparse.Namespace) -> int:
+    """Apply --steps and --quick to a suite's default step count."""
+    steps = arguments.steps if arguments.steps is not None else default_steps
+    return shortened_for_quick(steps, arguments.quick)
+
+
+def shortened_for_quick(steps: int, quick: bool) -> int:
+    """--quick tests the script, not the engine: a tenth of the steps is enough."""
+    return max(1, round(steps * QUICK_STEP_FRACTION)) if quick else steps
+
+
+def steps_for_particle_steps(target: float, fluid_particles: float) -> int:
+    """Steps that make about `target` particle-steps, so every size runs equally long."""
+    return max(MIN_STEPS, round(target / fluid_particles))
+
+
+def needs_splash_state(arguments: argparse.Namespace) -> bool:
+    return "table1" in arguments.suite or arguments.profile
+
+
+def build_workloads(arguments: argparse.Namespace, splash: SplashState | None) -> list[Workload]:
+    """Every workload of the selected suites, in the order they are run."""
+    workloads = []
+    if "table1" in arguments.suite:
+        steps = scaled_steps(TABLE1_STEPS, arguments)
+        workloads.append(Workload("table1", "t=0", steps, CASE_2D, TABLE1_DR))
+        workloads.append(Workload("table1", f"t={SPLASH_TIME:g}s", steps, CASE_2D, TABLE1_DR,
+                                  snapshot=splash.path))
+    if "scaling" in arguments.suite:
+        for dr in arguments.resolutions:
+            steps = scaled_steps(
+                steps_for_particle_steps(SCALING_PARTICLE_STEPS, fluid_particles_2d(dr)),
+                arguments)
+            workloads.append(Workload("scaling", f"dr={dr:g}", steps, CASE_2D, dr))
+    if "3d" in arguments.suite:
+        for dr in arguments.resolutions_3d:
+            steps = scaled_steps(
+                steps_for_particle_steps(THREE_D_PARTICLE_STEPS, fluid_particles_3d(dr)),
+                arguments)
+            workloads.append(Workload("3d", f"dr={dr:g}", steps, CASE_3D, dr))
+    return workloads
 
 
 # --------------------------------------------------------------------------
@@ -163,29 +374,32 @@ def steps_for_resolution(dr: float, arguments: argparse.Namespace) -> int:
 # --------------------------------------------------------------------------
 
 
-def revsph_command(revsph: Path, dr: float, steps: int, threads: int, out_dir: str) -> list[str]:
-    return [str(revsph), "run", CASE,
-            "--set", f"discretisation.dr={dr}",
-            "--steps", str(steps),
-            "--threads", str(threads),
-            "--out", out_dir, "--force"]
+def read_summary(command: list[str], out_dir: Path, steps: int | None) -> dict:
+    """summary.json of a finished run, checked to have completed (all `steps`, if given)."""
+    with open(out_dir / "summary.json", encoding="utf-8") as file:
+        summary = json.load(file)
+    if not summary.get("completed", False) or (steps is not None and summary["steps"] != steps):
+        raise BenchmarkError(f"{shlex.join(command)} did not complete {steps} steps: "
+                             f"{summary.get('failure', 'steps = ' + str(summary.get('steps')))}")
+    return summary
 
 
-def run_revsph_once(revsph: Path, dr: float, steps: int, threads: int) -> RunResult:
+def run_checked(command: list[str], **kwargs) -> subprocess.CompletedProcess:
+    process = subprocess.run(command, text=True, **kwargs)
+    if process.returncode != 0:
+        output = (process.stdout or "") + (process.stderr or "")
+        raise BenchmarkError(f"{shlex.join(command)} exited with status "
+                             f"{process.returncode}:\n{output}")
+    return process
+
+
+def run_revsph_once(revsph: Path, workload: Workload, threads: int) -> RunResult:
     """Run one configuration in its own process and read its summary.json."""
     with tempfile.TemporaryDirectory(prefix="revsph-bench-") as out_dir:
-        command = revsph_command(revsph, dr, steps, threads, out_dir)
-        process = subprocess.run(command, capture_output=True, text=True)
-        if process.returncode != 0:
-            raise RuntimeError(f"{shlex.join(command)} exited with status "
-                               f"{process.returncode}:\n{process.stdout}{process.stderr}")
-        with open(os.path.join(out_dir, "summary.json"), encoding="utf-8") as file:
-            summary = json.load(file)
-    if not summary.get("completed", False) or summary["steps"] != steps:
-        raise RuntimeError(f"{shlex.join(command)} did not complete {steps} steps: "
-                           f"{summary.get('failure', 'steps = ' + str(summary['steps']))}")
+        command = workload.command(revsph, threads, out_dir)
+        run_checked(command, capture_output=True)
+        summary = read_summary(command, Path(out_dir), workload.steps)
     return RunResult(
-        dr=dr,
         threads=summary["threads"],
         steps=summary["steps"],
         fluid_particles=summary["particles"].get("fluid", 0),
@@ -198,28 +412,31 @@ def run_revsph_once(revsph: Path, dr: float, steps: int, threads: int) -> RunRes
     )
 
 
-def run_benchmark(arguments: argparse.Namespace) -> dict[float, dict[int, ConfigurationSummary]]:
-    """Run every configuration; returns results[dr][threads].
+def run_benchmark(arguments: argparse.Namespace,
+                  workloads: list[Workload]) -> list[WorkloadResults]:
+    """Run every configuration of every workload.
 
-    Within a resolution the thread counts are interleaved repeat by repeat, so
+    Within a workload the thread counts are interleaved repeat by repeat, so
     slow drifts of the machine (other load, clock changes) affect them alike.
     """
-    results: dict[float, dict[int, ConfigurationSummary]] = {}
-    total_runs = len(arguments.resolutions) * len(arguments.threads) * arguments.repeats
+    results = []
+    total_runs = sum(len(threads_for_suite(w.suite, arguments)) for w in workloads) \
+        * arguments.repeats
     run_number = 0
-    for dr in arguments.resolutions:
-        steps = steps_for_resolution(dr, arguments)
-        results[dr] = {k: ConfigurationSummary(dr, k) for k in arguments.threads}
+    for workload in workloads:
+        thread_counts = threads_for_suite(workload.suite, arguments)
+        by_threads = {k: ConfigurationSummary(k) for k in thread_counts}
         for repeat in range(arguments.repeats):
-            for threads in arguments.threads:
+            for threads in thread_counts:
                 run_number += 1
-                result = run_revsph_once(arguments.revsph, dr, steps, threads)
-                results[dr][threads].runs.append(result)
-                log(f"[{run_number}/{total_runs}] dr={dr} threads={threads} "
-                    f"repeat {repeat + 1}/{arguments.repeats}: {steps} steps in "
+                result = run_revsph_once(arguments.revsph, workload, threads)
+                by_threads[threads].runs.append(result)
+                log(f"[{run_number}/{total_runs}] {workload.title} threads={threads} "
+                    f"repeat {repeat + 1}/{arguments.repeats}: {workload.steps} steps in "
                     f"{result.wall_seconds:.2f} s, "
                     f"{result.particle_steps_per_second:.3e} particle-steps/s, "
                     f"peak {result.peak_memory_bytes / 1e6:.1f} MB")
+        results.append(WorkloadResults(workload, by_threads))
     return results
 
 
@@ -228,68 +445,416 @@ def log(message: str) -> None:
 
 
 # --------------------------------------------------------------------------
+# The t = 0.5 s state
+# --------------------------------------------------------------------------
+
+
+def splash_generation_command(revsph: Path, out_dir: Path) -> list[str]:
+    return [str(revsph), "run", CASE_2D, "--set", f"discretisation.dr={TABLE1_DR:g}",
+            "--t-end", f"{SPLASH_TIME:g}", "--out", str(out_dir), "--force",
+            "--set", NO_SNAPSHOTS]
+
+
+def final_snapshot_of(run_dir: Path, summary: dict) -> Path:
+    """The snapshot of a run's last state (revsph always writes it)."""
+    return run_dir / "snapshots" / f"step_{summary['final_step']:09d}.h5"
+
+
+def cached_splash_snapshot(run_dir: Path) -> Path | None:
+    """The cached state if run_dir holds a completed run that reached t = 0.5 s, else None."""
+    try:
+        with open(run_dir / "summary.json", encoding="utf-8") as file:
+            summary = json.load(file)
+        reached = abs(summary["time"] - SPLASH_TIME) <= summary["dt"]
+        snapshot = final_snapshot_of(run_dir, summary)
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+    if summary.get("completed") and reached and snapshot.is_file():
+        return snapshot
+    return None
+
+
+def obtain_splash_state(arguments: argparse.Namespace, binary_sha256: str) -> SplashState:
+    """The t = 0.5 s snapshot: given, cached for this binary, or made now.
+
+    The cache entry is named after the binary's SHA-256: a state made by
+    another build may differ bit for bit (the engine is being changed), and
+    the benchmark must continue exactly what this binary computes.  A new
+    entry is made in a scratch directory and renamed into place only when
+    complete, so an interrupted run never leaves a half-written cache.
+    """
+    if arguments.snapshot is not None:
+        return SplashState(arguments.snapshot, "given with --snapshot",
+                           file_sha256(arguments.snapshot))
+    run_dir = arguments.cache_dir / f"dambreak-t{SPLASH_TIME:g}s-{binary_sha256[:16]}"
+    snapshot = cached_splash_snapshot(run_dir)
+    if snapshot is not None:
+        log(f"using the cached t = {SPLASH_TIME:g} s state {snapshot}")
+        return SplashState(snapshot, f"cached in {arguments.cache_dir} for this binary",
+                           file_sha256(snapshot))
+
+    arguments.cache_dir.mkdir(parents=True, exist_ok=True)
+    scratch = Path(tempfile.mkdtemp(prefix="making-", dir=arguments.cache_dir))
+    command = splash_generation_command(arguments.revsph, scratch)
+    log(f"making the t = {SPLASH_TIME:g} s dam-break state (dr = {TABLE1_DR:g}, all threads); "
+        f"this takes several minutes (about 10 on 2 cores) and is done once per binary "
+        f"(--snapshot PATH uses an existing state instead):\n"
+        f"  {shlex.join(command)}")
+    try:
+        # revsph's progress goes to stderr with ours; our stdout stays the report.
+        sys.stderr.flush()
+        run_checked(command, stdout=sys.stderr)
+        read_summary(command, scratch, None)
+        if cached_splash_snapshot(scratch) is None:
+            raise BenchmarkError(f"{shlex.join(command)} did not reach t = {SPLASH_TIME:g} s")
+        if file_sha256(arguments.revsph) != binary_sha256:
+            raise BenchmarkError(f"{arguments.revsph} changed while the t = {SPLASH_TIME:g} s "
+                                 "state was made (rebuilt?)")
+        shutil.rmtree(run_dir, ignore_errors=True)  # an incomplete entry, if any
+        scratch.rename(run_dir)
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
+    snapshot = cached_splash_snapshot(run_dir)
+    if snapshot is None:
+        raise BenchmarkError(f"the state made in {run_dir} cannot be read back")
+    return SplashState(snapshot, f"made by this benchmark ({shlex.join(command)}), "
+                                 f"kept in {arguments.cache_dir}", file_sha256(snapshot))
+
+
+# --------------------------------------------------------------------------
+# Profile
+# --------------------------------------------------------------------------
+
+# perf report's column separator: a tab never occurs in a symbol, so the
+# columns split exactly however long the symbols are.
+PERF_SEPARATOR = "\t"
+PERF_REPORT_OPTIONS = ["--stdio", "--no-children", "-g", "none", "--sort", "dso,symbol",
+                       "--fields", "overhead,dso,sym"]
+
+
+def parse_perf_report(text: str, limit: int) -> list[tuple[float, str, str]]:
+    """(share, shared object, symbol) of the `limit` largest entries of a flat perf report.
+
+    Symbols are shortened (see shortened_symbol) and entries that then read
+    the same are added up: template instances that differ only in their
+    arguments, like the fluid-fluid and fluid-wall neighbour searches, are one
+    cost in a summary.
+    """
+    shares: dict[tuple[str, str], float] = {}
+    for line in text.splitlines():
+        if line.startswith("#"):
+            continue
+        # Overhead, object and symbol come first; perf may append columns of
+        # its own (IPC) that a summary does not need.
+        fields = [part.strip() for part in line.split(PERF_SEPARATOR)]
+        if len(fields) < 3 or not fields[0].endswith("%"):
+            continue
+        try:
+            share = float(fields[0][:-1])
+        except ValueError:
+            continue
+        symbol = re.sub(r"^\[.\]\s*", "", fields[2])  # drop perf's [.] / [k] marker
+        key = (fields[1], shortened_symbol(symbol))
+        shares[key] = shares.get(key, 0.0) + share
+    ranked = sorted(shares.items(), key=lambda item: -item[1])
+    return [(share, dso, symbol) for (dso, symbol), share in ranked[:limit]]
+
+
+def shortened_symbol(symbol: str) -> str:
+    """A demangled C++ symbol with its parameter lists elided: `f<2>(…)`, not 500 characters.
+
+    Template arguments and lambda numbers stay, so distinct functions stay
+    distinct; `operator()` and `(anonymous namespace)` are kept as they are.
+    """
+    anonymous = "(anonymous namespace)"
+    text = symbol.replace(anonymous, "\0")
+    pieces = []
+    depth = 0
+    elided = False
+    for character in text:
+        if character == "(":
+            if depth == 0:
+                pieces.append("(")
+                elided = False
+            else:
+                elided = True
+            depth += 1
+        elif character == ")" and depth > 0:
+            depth -= 1
+            if depth == 0:
+                pieces.append("…)" if elided else ")")
+        elif depth > 0:
+            elided = True
+        else:
+            pieces.append(character)
+    return "".join(pieces).replace("\0", anonymous)
+
+
+def profile_splash_state(arguments: argparse.Namespace, splash: SplashState) -> ProfileResult:
+    """perf profile of one 1-thread run of the t = 0.5 s state.
+
+    One thread, because a flat profile of one thread shows where the work
+    goes without OpenMP waiting mixed in.  Failure of perf (missing, or not
+    permitted) is reported in the record, not raised: the timings stand alone.
+    """
+    perf = shutil.which("perf")
+    if perf is None:
+        return ProfileResult("perf not available")
+    steps = shortened_for_quick(PROFILE_STEPS, arguments.quick)
+    workload = Workload("profile", f"t={SPLASH_TIME:g}s", steps, CASE_2D, TABLE1_DR,
+                        snapshot=splash.path)
+    with tempfile.TemporaryDirectory(prefix="revsph-profile-") as scratch:
+        scratch_path = Path(scratch)
+        data = scratch_path / "perf.data"
+        run_command = workload.command(arguments.revsph, 1, str(scratch_path / "run"))
+        record = [perf, "record", "-F", "999", "-g", "-o", str(data), "--"] + run_command
+        report = [perf, "report"] + PERF_REPORT_OPTIONS + [
+            "--field-separator", PERF_SEPARATOR, "-i", str(data)]
+        shown_command = (shlex.join(["perf", "record", "-F", "999", "-g", "--"]
+                                    + workload.command(arguments.revsph, 1, "TMPDIR"))
+                         + "\n" + shlex.join(["perf", "report"] + PERF_REPORT_OPTIONS))
+        log(f"profiling {steps} steps of the t = {SPLASH_TIME:g} s state on 1 thread with perf")
+        try:
+            run_checked(record, capture_output=True)
+            summary = read_summary(run_command, scratch_path / "run", steps)
+            output = run_checked(report, capture_output=True).stdout
+        except (BenchmarkError, OSError) as error:
+            return ProfileResult(f"perf failed: {str(error).strip().splitlines()[0]}",
+                                 shown_command)
+    symbols = parse_perf_report(output, PROFILE_SYMBOLS)
+    if not symbols:
+        return ProfileResult("perf report listed no symbols", shown_command)
+    return ProfileResult(f"{steps} steps, 1 thread", shown_command,
+                         summary["particle_steps_per_second"], symbols)
+
+
+# --------------------------------------------------------------------------
 # Analysis and formatting
 # --------------------------------------------------------------------------
 
 
-def hash_is_invariant(configurations: dict[int, ConfigurationSummary]) -> bool:
-    """True if every run at this resolution ended in the same state hash."""
-    hashes = {run.final_hash for summary in configurations.values() for run in summary.runs}
-    return len(hashes) == 1
+def harmonic_mean(values: list[float]) -> float:
+    """The mean rate of a run that spends equally many steps at each of these rates."""
+    return len(values) / sum(1.0 / value for value in values)
 
 
-def results_table(results: dict[float, dict[int, ConfigurationSummary]]) -> list[list[str]]:
-    """Header row followed by one row per (dr, threads)."""
-    baseline_threads = min(next(iter(results.values())))
-    header = ["dr (m)", "fluid particles", "wall particles", "threads", "steps",
-              "median particle-steps/s", "min", "max",
-              f"speed-up vs {baseline_threads} thread{'s' if baseline_threads > 1 else ''}",
-              "peak memory (MB)", "bytes/particle"]
-    rows = [header]
-    for dr, configurations in results.items():
-        baseline_rate = configurations[baseline_threads].median_rate
-        for threads, summary in configurations.items():
-            first = summary.runs[0]
-            rows.append([
-                f"{dr:g}",
-                str(first.fluid_particles),
-                str(first.wall_particles),
-                str(threads),
-                str(first.steps),
-                f"{summary.median_rate:.3e}",
-                f"{min(summary.rates):.3e}",
-                f"{max(summary.rates):.3e}",
-                f"{summary.median_rate / baseline_rate:.2f}",
-                f"{summary.peak_memory_bytes / 1e6:.1f}",
-                f"{summary.peak_memory_bytes / summary.total_particles:.0f}",
-            ])
+def speedup_header(results: list[WorkloadResults]) -> str:
+    smallest = min(min(r.by_threads) for r in results)
+    return f"speed-up vs {smallest} thread{'s' if smallest > 1 else ''}"
+
+
+def speedup_cell(result: WorkloadResults, threads: int) -> str:
+    """Median rate against the smallest thread count of this workload ('-' if alone)."""
+    if len(result.by_threads) < 2:
+        return "-"
+    baseline = result.by_threads[min(result.by_threads)].median_rate
+    return f"{result.by_threads[threads].median_rate / baseline:.2f}"
+
+
+def measurement_cells(result: WorkloadResults, threads: int) -> list[str]:
+    """The columns every suite table shares, from 'fluid particles' to 'bytes/particle'."""
+    summary = result.by_threads[threads]
+    first = summary.runs[0]
+    return [
+        str(first.fluid_particles),
+        str(first.wall_particles),
+        str(threads),
+        str(first.steps),
+        f"{summary.median_rate:.3e}",
+        f"{min(summary.rates):.3e}",
+        f"{max(summary.rates):.3e}",
+        speedup_cell(result, threads),
+        f"{summary.peak_memory_bytes / 1e6:.1f}",
+        f"{summary.peak_memory_bytes / summary.total_particles:.0f}",
+    ]
+
+
+def measurement_header(results: list[WorkloadResults]) -> list[str]:
+    return ["fluid particles", "wall particles", "threads", "steps",
+            "median particle-steps/s", "min", "max", speedup_header(results),
+            "peak memory (MB)", "bytes/particle"]
+
+
+def table1_rows(results: list[WorkloadResults]) -> list[list[str]]:
+    """One row per (state, threads), then the mean of the states per thread count."""
+    rows = [["state"] + measurement_header(results)]
+    for result in results:
+        for threads in result.by_threads:
+            rows.append([result.workload.label] + measurement_cells(result, threads))
+    common_threads = [k for k in results[0].by_threads
+                      if all(k in r.by_threads for r in results)]
+    means = {k: harmonic_mean([r.by_threads[k].median_rate for r in results])
+             for k in common_threads}
+    for threads, mean in means.items():
+        speedup = f"{mean / means[min(means)]:.2f}" if len(means) > 1 else "-"
+        rows.append(["mean of the states (full run)", "", "", str(threads), "",
+                     f"{mean:.3e}", "", "", speedup, "", ""])
     return rows
 
 
-def format_markdown_table(rows: list[list[str]]) -> str:
-    """A markdown table with padded columns, readable as plain text too."""
-    widths = [max(len(row[i]) for row in rows) for i in range(len(rows[0]))]
+def scaling_rows(results: list[WorkloadResults]) -> list[list[str]]:
+    """One row per (dr, threads), with the rate relative to the mean over sizes."""
+    header = measurement_header(results)
+    # The ratio goes right after the median it is computed from.
+    ratio_column = header.index("median particle-steps/s") + 1
+    header.insert(ratio_column, "rate / mean of sizes")
+    rows = [["dr (m)"] + header]
+    mean_rates = scaling_mean_rates(results)
+    for result in results:
+        for threads in result.by_threads:
+            cells = measurement_cells(result, threads)
+            ratio = result.by_threads[threads].median_rate / mean_rates[threads]
+            cells.insert(ratio_column, f"{ratio:.2f}")
+            rows.append([f"{result.workload.dr:g}"] + cells)
+    return rows
 
-    def format_row(row: list[str]) -> str:
-        return "| " + " | ".join(cell.rjust(width) for cell, width in zip(row, widths)) + " |"
 
-    separator = "|" + "|".join("-" * (width + 1) + ":" for width in widths) + "|"
-    return "\n".join([format_row(rows[0]), separator] + [format_row(row) for row in rows[1:]])
+def scaling_mean_rates(results: list[WorkloadResults]) -> dict[int, float]:
+    """Per thread count, the arithmetic mean of the median rates over all sizes."""
+    thread_counts = sorted({k for r in results for k in r.by_threads})
+    return {k: statistics.mean(r.by_threads[k].median_rate for r in results
+                               if k in r.by_threads)
+            for k in thread_counts}
 
 
-def hash_invariance_lines(results: dict[float, dict[int, ConfigurationSummary]]) -> list[str]:
+def scaling_verdict_lines(results: list[WorkloadResults]) -> list[str]:
+    """Per thread count: is the cost per particle-step independent of N (within 20 %)?"""
     lines = []
-    for dr, configurations in results.items():
-        verdict = "yes" if hash_is_invariant(configurations) else "no"
-        runs = sum(len(summary.runs) for summary in configurations.values())
-        threads = ", ".join(str(k) for k in configurations)
-        lines.append(f"dr={dr:g}: hash invariant: {verdict} "
-                     f"({runs} runs, threads {threads})")
+    for threads in scaling_mean_rates(results):
+        rates = [r.by_threads[threads].median_rate for r in results if threads in r.by_threads]
+        if len(rates) < 2:
+            lines.append(f"{threads} thread{'s' if threads > 1 else ''}: one size only, "
+                         "no verdict on linearity in N")
+            continue
+        spread = max(rates) / min(rates)
+        verdict = "yes" if spread <= LINEARITY_TOLERANCE else "no"
+        lines.append(f"{threads} thread{'s' if threads > 1 else ''}: max/min of the median "
+                     f"rates over {len(rates)} sizes = {spread:.2f}; linear in N within "
+                     f"{(LINEARITY_TOLERANCE - 1) * 100:.0f} %: {verdict}")
     return lines
 
 
-def first_summary(configurations: dict[int, ConfigurationSummary]) -> ConfigurationSummary:
-    return next(iter(configurations.values()))
+def three_d_rows(results: list[WorkloadResults]) -> list[list[str]]:
+    rows = [["dr (m)"] + measurement_header(results)]
+    for result in results:
+        for threads in result.by_threads:
+            rows.append([f"{result.workload.dr:g}"] + measurement_cells(result, threads))
+    return rows
+
+
+def format_markdown_table(rows: list[list[str]], text_columns: int = 0) -> str:
+    """A markdown table with padded columns, readable as plain text too.
+
+    The first `text_columns` columns hold names and are aligned left; the
+    others hold numbers and are aligned right, so digits line up.
+    """
+    widths = [max(len(row[i]) for row in rows) for i in range(len(rows[0]))]
+
+    def format_row(row: list[str]) -> str:
+        cells = [cell.ljust(width) if i < text_columns else cell.rjust(width)
+                 for i, (cell, width) in enumerate(zip(row, widths))]
+        return "| " + " | ".join(cells) + " |"
+
+    separator = "|" + "|".join(
+        ":" + "-" * (width + 1) if i < text_columns else "-" * (width + 1) + ":"
+        for i, width in enumerate(widths)) + "|"
+    return "\n".join([format_row(rows[0]), separator] + [format_row(row) for row in rows[1:]])
+
+
+def results_of_suite(results: list[WorkloadResults], suite: str) -> list[WorkloadResults]:
+    return [result for result in results if result.workload.suite == suite]
+
+
+def suite_sections(results: list[WorkloadResults]) -> list[str]:
+    """Markdown lines: one section per suite that ran."""
+    lines = []
+    table1 = results_of_suite(results, "table1")
+    if table1:
+        lines += [
+            f"### table1: Table-1 dam break (2D, dr = {TABLE1_DR:g} m)",
+            "",
+            f"`t=0` starts from the fresh lattice; `t={SPLASH_TIME:g}s` continues from the "
+            f"t = {SPLASH_TIME:g} s state (splashing, disordered fluid). The last rows are the "
+            "harmonic mean of the two median rates: the rate of a run spending equally many "
+            "steps in both states, the representative figure of a full run.",
+            "",
+            format_markdown_table(table1_rows(table1), text_columns=1),
+            "",
+        ]
+    scaling = results_of_suite(results, "scaling")
+    if scaling:
+        lines += [
+            "### scaling: 2D dam break, rate against problem size",
+            "",
+            "Steps per run are chosen for about "
+            f"{SCALING_PARTICLE_STEPS:.1e} particle-steps (at least {MIN_STEPS} steps). "
+            "`rate / mean of sizes` is the median rate over the mean of the median rates of "
+            "all sizes with the same thread count.",
+            "",
+            format_markdown_table(scaling_rows(scaling)),
+            "",
+        ]
+        lines += [f"- {line}" for line in scaling_verdict_lines(scaling)] + [""]
+    three_d = results_of_suite(results, "3d")
+    if three_d:
+        lines += [
+            f"### 3d: {CASE_3D}",
+            "",
+            f"Steps per run are chosen for about {THREE_D_PARTICLE_STEPS:.1e} particle-steps "
+            f"(at least {MIN_STEPS} steps).",
+            "",
+            format_markdown_table(three_d_rows(three_d)),
+            "",
+        ]
+    return lines
+
+
+def hash_invariance_lines(results: list[WorkloadResults]) -> list[str]:
+    lines = []
+    for result in results:
+        verdict = "yes" if result.hash_is_invariant else "no"
+        runs = sum(len(summary.runs) for summary in result.by_threads.values())
+        runs_text = f"{runs} run{'s' if runs > 1 else ''}"
+        threads = ", ".join(str(k) for k in result.by_threads)
+        if result.hash_is_invariant:
+            hashes = f"{result.first_run.final_hash[:16]}…"
+        else:
+            # Which thread count (or repeat) diverged is the first clue to the bug.
+            hashes = "; ".join(
+                f"{k} thread{'s' if k > 1 else ''}: "
+                + ", ".join(f"{run.final_hash[:16]}…" for run in summary.runs)
+                for k, summary in result.by_threads.items())
+        lines.append(f"{result.workload.title}: hash invariant: {verdict} "
+                     f"({runs_text}, threads {threads}; {hashes})")
+    return lines
+
+
+def profile_lines(profile: ProfileResult) -> list[str]:
+    """Markdown lines of the profile summary."""
+    if not profile.symbols:
+        lines = [f"Profile: {profile.note}."]
+        if profile.command:
+            lines += ["", "```sh", profile.command, "```"]
+        return lines
+    rate = (f", {profile.particle_steps_per_second:.3e} particle-steps/s under perf"
+            if profile.particle_steps_per_second else "")
+    lines = [
+        f"One run of the t = {SPLASH_TIME:g} s state ({profile.note}{rate}), flat profile "
+        "(self time, no children) of the whole process, so loading the snapshot and writing "
+        "the final state are included. Parameter lists are elided and symbols that then read "
+        f"the same are added up; the top {len(profile.symbols)}:",
+        "",
+        "```sh",
+        profile.command,
+        "```",
+        "",
+    ]
+    rows = [["symbol", "object", "share of samples"]]
+    for share, dso, symbol in profile.symbols:
+        if len(symbol) > PROFILE_SYMBOL_WIDTH:
+            symbol = symbol[:PROFILE_SYMBOL_WIDTH - 1] + "…"
+        rows.append(["`" + symbol.replace("|", "\\|") + "`", f"`{dso}`", f"{share:.1f} %"])
+    return lines + [format_markdown_table(rows, text_columns=2)]
 
 
 # --------------------------------------------------------------------------
@@ -376,9 +941,9 @@ def machine_description(load_before: str) -> list[tuple[str, str]]:
     ]
 
 
-def build_description(results: dict[float, dict[int, ConfigurationSummary]],
-                      revsph: Path, binary_sha256: str) -> list[tuple[str, str]]:
-    build = first_summary(next(iter(results.values()))).runs[0].build
+def build_description(results: list[WorkloadResults], revsph: Path,
+                      binary_sha256: str) -> list[tuple[str, str]]:
+    build = results[0].first_run.build if results else {}
     return [
         ("binary", str(revsph.resolve())),
         ("binary SHA-256", binary_sha256),
@@ -400,17 +965,29 @@ def invoked_command_line() -> str:
     return shlex.join([sys.executable] + sys.argv)
 
 
-def markdown_report(arguments: argparse.Namespace,
-                    results: dict[float, dict[int, ConfigurationSummary]],
-                    started: datetime.datetime, binary_sha256: str, load_before: str) -> str:
-    example_steps = steps_for_resolution(arguments.resolutions[0], arguments)
-    example = shlex.join(revsph_command(
-        arguments.revsph, arguments.resolutions[0], example_steps, arguments.threads[0],
-        "TMPDIR"))
+def example_commands(arguments: argparse.Namespace, workloads: list[Workload]) -> list[str]:
+    """One revsph command per kind of workload (the first of each suite, and the snapshot run)."""
+    examples = []
+    seen = set()
+    for workload in workloads:
+        kind = (workload.suite, workload.snapshot is not None)
+        if kind in seen:
+            continue
+        seen.add(kind)
+        threads = threads_for_suite(workload.suite, arguments)[0]
+        examples.append(shlex.join(workload.command(arguments.revsph, threads, "TMPDIR")))
+    return examples
+
+
+def markdown_report(arguments: argparse.Namespace, workloads: list[Workload],
+                    results: list[WorkloadResults], splash: SplashState | None,
+                    profile: ProfileResult | None, started: datetime.datetime,
+                    binary_sha256: str, load_before: str) -> str:
     lines = [
         "# Dam-break benchmark",
         "",
         f"- date: {started.isoformat(timespec='seconds')}",
+        f"- suites: {', '.join(arguments.suite)}",
         f"- command (run in `{os.getcwd()}`):",
         "",
         "  ```sh",
@@ -420,16 +997,26 @@ def markdown_report(arguments: argparse.Namespace,
         f"- each configuration is a separate process, {arguments.repeats} repeat(s), e.g.",
         "",
         "  ```sh",
-        f"  {example}",
-        "  ```",
-        "",
-        "## Machine",
-        "",
     ]
+    lines += [f"  {example}" for example in example_commands(arguments, workloads)]
+    lines += ["  ```", ""]
+    if arguments.quick:
+        lines += ["- **--quick**: a smoke test of the script; the figures are too short to "
+                  "quote.", ""]
+    lines += ["## Machine", ""]
     lines += [f"- {name}: {value}" for name, value in machine_description(load_before)]
     lines += ["", "## Build", ""]
-    lines += [f"- {name}: {value}" for name, value in build_description(results, arguments.revsph,
-                                                                  binary_sha256)]
+    lines += [f"- {name}: {value}"
+              for name, value in build_description(results, arguments.revsph, binary_sha256)]
+    if splash is not None:
+        lines += [
+            "",
+            "## Inputs",
+            "",
+            f"- t = {SPLASH_TIME:g} s state: {splash.path}",
+            f"  - {splash.origin}",
+            f"  - SHA-256: {splash.sha256}",
+        ]
     lines += [
         "",
         "## Results",
@@ -438,20 +1025,29 @@ def markdown_report(arguments: argparse.Namespace,
         "median, min and max are over the repeats. Peak memory is the largest maxrss over the "
         "repeats (MB = 10^6 bytes); bytes/particle divides it by fluid + wall particles.",
         "",
-        format_markdown_table(results_table(results)),
+    ]
+    lines += suite_sections(results)
+    lines += [
+        "## Determinism",
         "",
-        "Determinism (final state hash identical across thread counts and repeats):",
+        "Final state hash identical across thread counts and repeats:",
         "",
     ]
     lines += [f"- {line}" for line in hash_invariance_lines(results)]
+    if profile is not None:
+        lines += ["", "## Profile", ""] + profile_lines(profile)
     return "\n".join(lines) + "\n"
 
 
-def print_console_report(results: dict[float, dict[int, ConfigurationSummary]]) -> None:
-    print(format_markdown_table(results_table(results)))
-    print()
+def print_console_report(results: list[WorkloadResults], profile: ProfileResult | None) -> None:
+    for line in suite_sections(results):
+        print(line)
     for line in hash_invariance_lines(results):
         print(line)
+    if profile is not None:
+        print()
+        for line in profile_lines(profile):
+            print(line)
 
 
 def main(argv: list[str]) -> int:
@@ -461,30 +1057,43 @@ def main(argv: list[str]) -> int:
             f"  cmake -S {REPO_ROOT} -B {REPO_ROOT / 'build'} -DCMAKE_BUILD_TYPE=Release "
             f"&& cmake --build {REPO_ROOT / 'build'} -j2\nor pass --revsph PATH")
         return 2
+    if arguments.snapshot is not None and not arguments.snapshot.is_file():
+        log(f"error: snapshot {arguments.snapshot} not found")
+        return 2
     cpus = os.cpu_count() or 1
-    if max(arguments.threads) > cpus:
-        log(f"warning: {max(arguments.threads)} threads requested but only {cpus} CPUs")
+    most_threads = max(max(threads_for_suite(suite, arguments)) for suite in arguments.suite)
+    if most_threads > cpus:
+        log(f"warning: {most_threads} threads requested but only {cpus} CPUs")
 
     started = datetime.datetime.now().astimezone()
     binary_sha256 = file_sha256(arguments.revsph)
     load_before = load_average()
+    splash = None
+    profile = None
     try:
-        results = run_benchmark(arguments)
-    except RuntimeError as error:
+        if needs_splash_state(arguments):
+            splash = obtain_splash_state(arguments, binary_sha256)
+        workloads = build_workloads(arguments, splash)
+        results = run_benchmark(arguments, workloads)
+        if arguments.profile:
+            profile = profile_splash_state(arguments, splash)
+    except BenchmarkError as error:
         log(f"error: {error}")
         return 1
 
-    print_console_report(results)
+    print_console_report(results, profile)
     if file_sha256(arguments.revsph) != binary_sha256:
         log(f"error: {arguments.revsph} changed while the benchmark ran (rebuilt?); "
             "the results mix two binaries and are not recorded")
         return 1
     if arguments.output is not None:
         arguments.output.parent.mkdir(parents=True, exist_ok=True)
-        arguments.output.write_text(markdown_report(arguments, results, started, binary_sha256,
-                                                    load_before), encoding="utf-8")
+        arguments.output.write_text(
+            markdown_report(arguments, workloads, results, splash, profile, started,
+                            binary_sha256, load_before),
+            encoding="utf-8")
         print(f"\nwrote {arguments.output}")
-    all_invariant = all(hash_is_invariant(configs) for configs in results.values())
+    all_invariant = all(result.hash_is_invariant for result in results)
     return 0 if all_invariant else 3
 
 
