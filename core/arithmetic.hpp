@@ -8,10 +8,12 @@
 
 #include "fixedpoint/conversion.hpp"
 #include "fixedpoint/exact_sum.hpp"
+#include "fixedpoint/exact_sums.hpp"
 
 #include <cmath>
 #include <cstdint>
 #include <string_view>
+#include <vector>
 
 namespace revsph {
 
@@ -22,6 +24,7 @@ std::string_view to_string(Arithmetic arithmetic);
 struct FixedArithmetic {
   using Raw = std::int64_t;
   using Sum = fixedpoint::ExactSum;
+  using Sums = fixedpoint::ExactSums; // one Sum per particle
   static constexpr Arithmetic kind = Arithmetic::fixed;
 
   static double real(Raw raw, const fixedpoint::Scale& scale) {
@@ -59,8 +62,30 @@ struct FloatArithmetic {
       return std::isfinite(total_);
     }
 
+    double total() const { return total_; }
+
   private:
     double total_ = 0.0;
+  };
+
+  // One Sum per particle; terms are added in the order they come (pair_list.hpp fixes it).
+  class Sums {
+  public:
+    explicit Sums(const fixedpoint::Scale& scale) : scale_(scale) {}
+    const fixedpoint::Scale& scale() const { return scale_; }
+    void reset(std::size_t n) { totals_.assign(n, 0.0); }
+    std::size_t size() const { return totals_.size(); }
+    void add(std::size_t i, double term) { totals_[i] += term; }
+    void add_raw(std::size_t i, double raw) { totals_[i] += raw; }
+    void add_sum(std::size_t i, const Sum& sum) { totals_[i] += sum.total(); }
+    bool try_value(std::size_t i, double& value) const {
+      value = totals_[i];
+      return std::isfinite(value);
+    }
+
+  private:
+    fixedpoint::Scale scale_; // unused by the arithmetic; kept for the same interface
+    std::vector<double> totals_;
   };
 
   static double real(Raw raw, const fixedpoint::Scale&) { return raw; }

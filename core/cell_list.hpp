@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
@@ -38,6 +39,13 @@ public:
   double cell_size() const { return cell_size_; }
   std::size_t cell_count() const { return cell_start_.size() - 1; }
   std::size_t point_count() const { return sorted_points_.size(); }
+  const std::array<int, D>& cells_per_axis() const { return cells_per_axis_; }
+
+  // The points in cell order: slot s holds point sorted_points()[s]; cell c holds the slots
+  // [cell_start()[c], cell_start()[c + 1]). Cells are numbered with axis 0 fastest, so the cells
+  // of one row (and their points) are contiguous.
+  std::span<const std::uint32_t> sorted_points() const { return sorted_points_; }
+  std::span<const std::uint32_t> cell_start() const { return cell_start_; }
 
   // Calls visit(j) for every point j in the 3^D cells around `query` (a superset of the points
   // within cell_size of it).
@@ -90,8 +98,7 @@ private:
   std::array<int, D> cells_per_axis_{};
   std::vector<std::uint32_t> cell_start_;    // cell c holds sorted_points_[start[c], start[c+1])
   std::vector<std::uint32_t> sorted_points_; // point indices, by cell, ascending within a cell
-  std::array<std::vector<double>, D> sorted_coordinates_; // by slot, as sorted_points_
-  std::vector<std::uint32_t> cell_of_point_;              // scratch for build()
+  std::vector<std::uint32_t> cell_of_point_; // scratch for build()
 };
 
 extern template class CellList<2>;

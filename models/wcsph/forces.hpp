@@ -2,16 +2,21 @@
 // The neighbour loops of symplectic WCSPH: density (eq. 5), acceleration (eq. 1b + anti-clump
 // force of App. A + gravity + wall force of eq. 7) and the Shepard filter (App. A).
 //
-// Density carriers are the fluid particles followed by the dummy particles (App. A walls) in one
-// array: both have a density and a pressure, so one neighbour list and one loop serve both; only
-// fluid particles move. Every per-particle sum goes through Arith::Sum: exact integers in fixed
-// point (the same result for any order, cell size and thread count), doubles in FloPA.
+// Density carriers are the fluid particles followed by the dummy particles (App. A walls): both
+// have a density and a pressure, so one pair list and one loop serve both; only fluid particles
+// move. The loops run over the carriers in cell order ("slots", core/pair_list.hpp): every array
+// passed in is indexed by slot, and carrier_of_slot[s] names the carrier (fluid index, or
+// fluid_count + dummy index) for the fluid test and for fault reports. Each pair is visited once
+// and its term added to both particles. Every per-particle sum goes through Arith::Sum(s): exact
+// integers in fixed point (the same result for any order, cell size and thread count), doubles in
+// FloPA (summed in the order fixed by the pair list, the same for any thread count).
 
 #include "core/arithmetic.hpp"
 #include "core/fault.hpp"
 #include "core/geometry.hpp"
 #include "core/kernel_wendland.hpp"
 #include "core/neighbour_list.hpp"
+#include "core/pair_list.hpp"
 #include "models/wcsph/equations.hpp"
 
 #include <array>
@@ -44,27 +49,35 @@ template <int D, class Arith>
 void compute_density(const WendlandQuintic<D>& kernel, const CoordinateView<D>& x,
                      std::span<const double> mass,
                      std::span<const typename Arith::Raw> density_constant,
-                     const NeighbourList& neighbours, const fixedpoint::Scale& density_scale,
-                     std::size_t fluid_count, std::vector<double>& density, FaultRecorder& faults) {
+                     const HalfPairList& pairs, std::span<const std::uint32_t> carrier_of_slot,
+                     std::size_t fluid_count, typename Arith::Sums& sums,
+                     std::vector<double>& density, FaultRecorder& faults) {
   const std::size_t n = mass.size();
-  const double self_weight = kernel.value(0.0);
-  density.resize(n);
-#pragma omp parallel for schedule(static)
-  for (std::size_t a = 0; a < n; ++a) {
-    typename Arith::Sum sum(density_scale);
-    sum.add(mass[a] * self_weight);
-    for (const std::uint32_t b : neighbours.of(a)) {
+  sums.reset(n);
+  pairs.for_each_slot([&](std::uint32_t a, std::span<const std::uint32_t> partners) {
+    typename Arith::Sum own(sums.scale());
+    for (const std::uint32_t b : partners) {
       double r_squared = 0.0;
       for (int k = 0; k < D; ++k) {
         const double d = x[k][a] - x[k][b];
         r_squared += d * d;
       }
-      sum.add(mass[b] * kernel.value(std::sqrt(r_squared)));
+      const double w = kernel.value(std::sqrt(r_squared));
+      own.add(mass[b] * w);
+      sums.add(b, mass[a] * w);
     }
-    sum.add_raw(density_constant[a]);
-    if (!sum.try_value(density[a]) || !(density[a] > 0.0)) {
-      faults.record(index_in_set(a, fluid_count), carrier_set(a, fluid_count), "density",
-                    "density overflow, non-finite or not positive");
+    sums.add_sum(a, own);
+  });
+  const double self_weight = kernel.value(0.0);
+  density.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < n; ++a) {
+    sums.add(a, mass[a] * self_weight);
+    sums.add_raw(a, density_constant[a]);
+    if (!sums.try_value(a, density[a]) || !(density[a] > 0.0)) {
+      const std::size_t carrier = carrier_of_slot[a];
+      faults.record(index_in_set(carrier, fluid_count), carrier_set(carrier, fluid_count),
+                    "density", "density overflow, non-finite or not positive");
     }
   }
 }
@@ -73,26 +86,31 @@ void compute_density(const WendlandQuintic<D>& kernel, const CoordinateView<D>& 
 //   a_a = -sum_b m_b (p_a / rho_a^2 + p_b / rho_b^2) w'(r_ab) (x_a - x_b) / r_ab
 //         - sum_b m_b p0 (1 / rho_a^2 + 1 / rho_b^2) w~'(r_ab) (x_a - x_b) / r_ab   (App. A)
 //         + sum_wall F_wall->a / m_a - g e_vertical                               (eq. 7)
-// for the fluid particles a < fluid_count. For equal masses the pair term for (a, b) is the exact
-// negative of the one for (b, a), so internal forces conserve momentum in integers.
+// for the fluid slots (dummy slots get a value too, which the caller ignores). The term b
+// receives from a pair is computed as if b were the query (its own mass factor, x_b - x_a =
+// -(x_a - x_b) exactly), so the sums are those of a per-particle loop; for equal masses it is
+// the exact negative of a's term, so internal forces conserve momentum in integers.
+// wall_neighbours lists, per slot, the wall particles within the wall radius.
 template <int D, class Arith>
 void compute_acceleration(const WendlandQuintic<D>& kernel, const CoordinateView<D>& x,
                           const CoordinateView<D>& wall_x, std::span<const double> mass,
                           std::span<const double> pressure_over_density_squared,
                           std::span<const double> inverse_density_squared,
-                          const NeighbourList& neighbours, const NeighbourList& wall_neighbours,
-                          std::size_t fluid_count, double gravity, const WallPotential& wall,
+                          const HalfPairList& pairs, const NeighbourList& wall_neighbours,
+                          std::span<const std::uint32_t> carrier_of_slot, std::size_t fluid_count,
+                          double gravity, const WallPotential& wall,
                           const WendlandQuintic<D>* anti_clump_kernel, double anti_clump_pressure,
-                          const fixedpoint::Scale& acceleration_scale,
+                          std::array<typename Arith::Sums, D>& sums,
                           std::array<std::vector<double>, D>& acceleration, FaultRecorder& faults) {
+  const std::size_t n = mass.size();
   for (int k = 0; k < D; ++k) {
-    acceleration[k].resize(fluid_count);
+    sums[k].reset(n);
+    acceleration[k].resize(n);
   }
-#pragma omp parallel for schedule(static)
-  for (std::size_t a = 0; a < fluid_count; ++a) {
-    auto sum = sums_at<typename Arith::Sum, D>(acceleration_scale);
+  pairs.for_each_slot([&](std::uint32_t a, std::span<const std::uint32_t> partners) {
+    auto own = sums_at<typename Arith::Sum, D>(sums[0].scale());
     const double pressure_a = pressure_over_density_squared[a];
-    for (const std::uint32_t b : neighbours.of(a)) {
+    for (const std::uint32_t b : partners) {
       std::array<double, D> d{};
       double r_squared = 0.0;
       for (int k = 0; k < D; ++k) {
@@ -100,61 +118,84 @@ void compute_acceleration(const WendlandQuintic<D>& kernel, const CoordinateView
         r_squared += d[k] * d[k];
       }
       const double r = std::sqrt(r_squared);
-      double factor =
-          -mass[b] * (pressure_a + pressure_over_density_squared[b]) * kernel.derivative_over_r(r);
+      const double pressure_sum = pressure_a + pressure_over_density_squared[b];
+      const double slope = kernel.derivative_over_r(r);
+      double factor_a = -mass[b] * pressure_sum * slope;
+      double factor_b = -mass[a] * pressure_sum * slope;
       if (anti_clump_kernel != nullptr) {
-        factor -= mass[b] * anti_clump_pressure *
-                  (inverse_density_squared[a] + inverse_density_squared[b]) *
-                  anti_clump_kernel->derivative_over_r(r);
+        const double inverse_sum = inverse_density_squared[a] + inverse_density_squared[b];
+        const double anti_clump_slope = anti_clump_kernel->derivative_over_r(r);
+        factor_a -= mass[b] * anti_clump_pressure * inverse_sum * anti_clump_slope;
+        factor_b -= mass[a] * anti_clump_pressure * inverse_sum * anti_clump_slope;
       }
       for (int k = 0; k < D; ++k) {
-        sum[k].add(factor * d[k]);
+        own[k].add(factor_a * d[k]);
+        sums[k].add(b, factor_b * -d[k]);
       }
     }
-    for (const std::uint32_t w : wall_neighbours.of(a)) {
-      std::array<double, D> d{};
-      double r_squared = 0.0;
-      for (int k = 0; k < D; ++k) {
-        d[k] = x[k][a] - wall_x[k][w];
-        r_squared += d[k] * d[k];
-      }
-      const double factor = wall.acceleration_over_distance(r_squared);
-      for (int k = 0; k < D; ++k) {
-        sum[k].add(factor * d[k]);
+    if (carrier_of_slot[a] < fluid_count) {
+      for (const std::uint32_t w : wall_neighbours.of(a)) {
+        std::array<double, D> d{};
+        double r_squared = 0.0;
+        for (int k = 0; k < D; ++k) {
+          d[k] = x[k][a] - wall_x[k][w];
+          r_squared += d[k] * d[k];
+        }
+        const double factor = wall.acceleration_over_distance(r_squared);
+        for (int k = 0; k < D; ++k) {
+          own[k].add(factor * d[k]);
+        }
       }
     }
-    sum[D - 1].add(-gravity);
     for (int k = 0; k < D; ++k) {
-      if (!sum[k].try_value(acceleration[k][a])) {
-        faults.record(a, "fluid", "acceleration", "fixed-point overflow or non-finite force");
+      sums[k].add_sum(a, own[k]);
+    }
+  });
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < n; ++a) {
+    if (carrier_of_slot[a] >= fluid_count) {
+      continue;
+    }
+    sums[D - 1].add(a, -gravity);
+    for (int k = 0; k < D; ++k) {
+      if (!sums[k].try_value(a, acceleration[k][a])) {
+        faults.record(carrier_of_slot[a], "fluid", "acceleration",
+                      "fixed-point overflow or non-finite force");
       }
     }
   }
 }
 
-// App. A Shepard filter of the fluid velocity: u~_a = sum_b V_b u_b w_ab / sum_b V_b w_ab over
-// fluid particles b (a included), V_b = m_b / rho_b. Dummy particles do not take part: the
-// filter smooths the flow, it is not a wall condition. Plain doubles: the result is either a
-// view for people (passive) or an irreversible replacement of the velocities (active).
+// App. A Shepard filter of the fluid velocity, u~_a = sum_b V_b u_b w_ab / sum_b V_b w_ab over
+// fluid b (including b = a), V_b = m_b / rho_b; in double (a diagnostic, or the irreversible
+// active filter). Slot-indexed like the loops above; dummy slots get no value.
 template <int D>
 void shepard_filter(const WendlandQuintic<D>& kernel, const CoordinateView<D>& x,
                     std::span<const double> mass, std::span<const double> density,
-                    const std::array<std::vector<double>, D>& velocity,
-                    const NeighbourList& neighbours, std::size_t fluid_count,
+                    const std::array<std::vector<double>, D>& velocity, const HalfPairList& pairs,
+                    std::span<const std::uint32_t> carrier_of_slot, std::size_t fluid_count,
                     std::array<std::vector<double>, D>& filtered) {
-  for (int k = 0; k < D; ++k) {
-    filtered[k].resize(fluid_count);
-  }
+  const std::size_t n = mass.size();
   const double self_weight = kernel.value(0.0);
-#pragma omp parallel for schedule(static)
-  for (std::size_t a = 0; a < fluid_count; ++a) {
-    double weight = mass[a] / density[a] * self_weight;
-    std::array<double, D> sum{};
-    for (int k = 0; k < D; ++k) {
-      sum[k] = weight * velocity[k][a];
+  std::vector<double> weight(n, 0.0);
+  for (int k = 0; k < D; ++k) {
+    filtered[k].assign(n, 0.0);
+  }
+  auto is_fluid = [&](std::uint32_t slot) { return carrier_of_slot[slot] < fluid_count; };
+  for (std::size_t a = 0; a < n; ++a) {
+    if (is_fluid(static_cast<std::uint32_t>(a))) {
+      weight[a] = mass[a] / density[a] * self_weight;
+      for (int k = 0; k < D; ++k) {
+        filtered[k][a] = weight[a] * velocity[k][a];
+      }
     }
-    for (const std::uint32_t b : neighbours.of(a)) {
-      if (b >= fluid_count) {
+  }
+  pairs.for_each_slot([&](std::uint32_t a, std::span<const std::uint32_t> partners) {
+    if (!is_fluid(a)) {
+      return;
+    }
+    for (const std::uint32_t b : partners) {
+      if (!is_fluid(b)) {
         continue;
       }
       double r_squared = 0.0;
@@ -162,14 +203,22 @@ void shepard_filter(const WendlandQuintic<D>& kernel, const CoordinateView<D>& x
         const double d = x[k][a] - x[k][b];
         r_squared += d * d;
       }
-      const double w = mass[b] / density[b] * kernel.value(std::sqrt(r_squared));
-      weight += w;
+      const double w = kernel.value(std::sqrt(r_squared));
+      const double to_a = mass[b] / density[b] * w;
+      const double to_b = mass[a] / density[a] * w;
+      weight[a] += to_a;
+      weight[b] += to_b;
       for (int k = 0; k < D; ++k) {
-        sum[k] += w * velocity[k][b];
+        filtered[k][a] += to_a * velocity[k][b];
+        filtered[k][b] += to_b * velocity[k][a];
       }
     }
-    for (int k = 0; k < D; ++k) {
-      filtered[k][a] = sum[k] / weight;
+  });
+  for (std::size_t a = 0; a < n; ++a) {
+    if (is_fluid(static_cast<std::uint32_t>(a))) {
+      for (int k = 0; k < D; ++k) {
+        filtered[k][a] /= weight[a];
+      }
     }
   }
 }

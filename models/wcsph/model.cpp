@@ -41,7 +41,9 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
       wall_cells_(parameters_.domain,
                   std::max(parameters_.support_radius, parameters_.wall_radius) *
                       parameters_.cell_size_factor,
-                  cell_budget(state_.wall_position.count())) {
+                  cell_budget(state_.wall_position.count())),
+      density_sums_(parameters_.density_scale),
+      acceleration_sums_(sums_at<typename Arith::Sums, D>(parameters_.acceleration_scale)) {
   if (parameters_.anti_clump_pressure > 0.0) {
     anti_clump_kernel_.emplace(0.5 * parameters_.dr); // App. A: support dr / 2
   }
@@ -134,48 +136,75 @@ void Model<D, Arith>::update_derived() {
   update_constants();
   real_coordinates<Arith, D>(state_.position, position_, 0);
   const std::size_t fluid = fluid_count();
-  const CoordinateView<D> x = view_of<D>(position_);
-  const CoordinateView<D> wall_x = view_of<D>(wall_position_);
+  const std::size_t carriers = mass_.size();
   try {
-    carrier_cells_.build(x);
+    carrier_cells_.build(view_of<D>(position_));
   } catch (const PointOutsideDomain& outside) {
     const std::size_t a = outside.index();
     throw SimulationFault({carrier_set(a, fluid), index_in_set(a, fluid), "position",
                            "left the domain: " + std::string(outside.what())},
                           -1);
   }
-  find_neighbours<D>(carrier_cells_, x, x, parameters_.support_radius, SelfPairs::excluded,
-                     carrier_neighbours_);
-  // Only fluid particles feel the wall; the queries are the fluid part of the carriers.
-  CoordinateView<D> fluid_x;
+  // Gather the carriers into cell order.
+  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
   for (int k = 0; k < D; ++k) {
-    fluid_x[k] = x[k].first(fluid);
+    slot_position_[k].resize(carriers);
   }
-  find_neighbours<D>(wall_cells_, wall_x, fluid_x, parameters_.wall_radius, SelfPairs::included,
+  slot_mass_.resize(carriers);
+  slot_density_constant_.resize(carriers);
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < carriers; ++s) {
+    const std::uint32_t a = carrier_of_slot[s];
+    for (int k = 0; k < D; ++k) {
+      slot_position_[k][s] = position_[k][a];
+    }
+    slot_mass_[s] = mass_[a];
+    slot_density_constant_[s] = density_constant_[a];
+  }
+  const CoordinateView<D> x = view_of<D>(slot_position_);
+  carrier_pairs_.build<D>(carrier_cells_, x, parameters_.support_radius);
+  const CoordinateView<D> wall_x = view_of<D>(wall_position_);
+  find_neighbours<D>(wall_cells_, wall_x, x, parameters_.wall_radius, SelfPairs::included,
                      wall_neighbours_);
 
   FaultRecorder faults;
-  compute_density<D, Arith>(kernel_, x, mass_, density_constant_, carrier_neighbours_,
-                            parameters_.density_scale, fluid, density_, faults);
+  compute_density<D, Arith>(kernel_, x, slot_mass_, slot_density_constant_, carrier_pairs_,
+                            carrier_of_slot, fluid, density_sums_, slot_density_, faults);
   faults.throw_if_any();
-  pressure_over_density_squared_.resize(density_.size());
-  for (std::size_t a = 0; a < density_.size(); ++a) {
-    const double rho = density_[a];
-    pressure_over_density_squared_[a] =
+  pressure_over_density_squared_.resize(carriers);
+  for (std::size_t s = 0; s < carriers; ++s) {
+    const double rho = slot_density_[s];
+    pressure_over_density_squared_[s] =
         tait_pressure(rho, parameters_.rest_density, parameters_.sound_speed) / (rho * rho);
   }
   if (anti_clump_kernel_) {
-    inverse_density_squared_.resize(density_.size());
-    for (std::size_t a = 0; a < density_.size(); ++a) {
-      inverse_density_squared_[a] = 1.0 / (density_[a] * density_[a]);
+    inverse_density_squared_.resize(carriers);
+    for (std::size_t s = 0; s < carriers; ++s) {
+      inverse_density_squared_[s] = 1.0 / (slot_density_[s] * slot_density_[s]);
     }
   }
   compute_acceleration<D, Arith>(
-      kernel_, x, wall_x, mass_, pressure_over_density_squared_, inverse_density_squared_,
-      carrier_neighbours_, wall_neighbours_, fluid, parameters_.gravity,
+      kernel_, x, wall_x, slot_mass_, pressure_over_density_squared_, inverse_density_squared_,
+      carrier_pairs_, wall_neighbours_, carrier_of_slot, fluid, parameters_.gravity,
       parameters_.wall_potential(), anti_clump_kernel_ ? &*anti_clump_kernel_ : nullptr,
-      parameters_.anti_clump_pressure, parameters_.acceleration_scale, acceleration_, faults);
+      parameters_.anti_clump_pressure, acceleration_sums_, slot_acceleration_, faults);
   faults.throw_if_any();
+
+  // Back to the canonical order.
+  density_.resize(carriers);
+  for (int k = 0; k < D; ++k) {
+    acceleration_[k].resize(fluid);
+  }
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < carriers; ++s) {
+    const std::uint32_t a = carrier_of_slot[s];
+    density_[a] = slot_density_[s];
+    if (a < fluid) {
+      for (int k = 0; k < D; ++k) {
+        acceleration_[k][a] = slot_acceleration_[k][s];
+      }
+    }
+  }
   derived_valid_ = true;
 }
 
@@ -189,12 +218,6 @@ template <int D, class Arith>
 const std::array<std::vector<double>, D>& Model<D, Arith>::acceleration() {
   update_derived();
   return acceleration_;
-}
-
-template <int D, class Arith>
-const NeighbourList& Model<D, Arith>::fluid_neighbours() {
-  update_derived();
-  return carrier_neighbours_;
 }
 
 template <int D, class Arith>
@@ -213,9 +236,30 @@ std::array<std::vector<double>, D> Model<D, Arith>::real_velocity() const {
 template <int D, class Arith>
 std::array<std::vector<double>, D> Model<D, Arith>::filtered_velocity() {
   update_derived();
+  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  const std::size_t fluid = fluid_count();
+  const std::array<std::vector<double>, D> velocity = real_velocity();
+  std::array<std::vector<double>, D> slot_velocity;
+  for (int k = 0; k < D; ++k) {
+    slot_velocity[k].assign(carrier_of_slot.size(), 0.0);
+    for (std::size_t s = 0; s < carrier_of_slot.size(); ++s) {
+      if (carrier_of_slot[s] < fluid) {
+        slot_velocity[k][s] = velocity[k][carrier_of_slot[s]];
+      }
+    }
+  }
+  std::array<std::vector<double>, D> slot_filtered;
+  shepard_filter<D>(kernel_, view_of<D>(slot_position_), slot_mass_, slot_density_, slot_velocity,
+                    carrier_pairs_, carrier_of_slot, fluid, slot_filtered);
   std::array<std::vector<double>, D> filtered;
-  shepard_filter<D>(kernel_, view_of<D>(position_), mass_, density_, real_velocity(),
-                    carrier_neighbours_, fluid_count(), filtered);
+  for (int k = 0; k < D; ++k) {
+    filtered[k].resize(fluid);
+    for (std::size_t s = 0; s < carrier_of_slot.size(); ++s) {
+      if (carrier_of_slot[s] < fluid) {
+        filtered[k][carrier_of_slot[s]] = slot_filtered[k][s];
+      }
+    }
+  }
   return filtered;
 }
 
@@ -259,14 +303,22 @@ typename Model<D, Arith>::ParticleEnergies Model<D, Arith>::particle_energies() 
     energies.compressional[a] =
         m * compressional_energy_per_mass(density_[a], parameters_.rest_density,
                                           parameters_.sound_speed); // eq. (3)
-    double wall_energy = 0.0; // eq. (7), attributed to the fluid particle
-    for (const std::uint32_t w : wall_neighbours_.of(a)) {
+  }
+  // eq. (7), attributed to the fluid particle; the wall lists are per slot.
+  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  for (std::size_t s = 0; s < carrier_of_slot.size(); ++s) {
+    const std::uint32_t a = carrier_of_slot[s];
+    if (a >= n) {
+      continue;
+    }
+    double wall_energy = 0.0;
+    for (const std::uint32_t w : wall_neighbours_.of(s)) {
       double r_squared = 0.0;
       for (int k = 0; k < D; ++k) {
         const double d = position_[k][a] - wall_position_[k][w];
         r_squared += d * d;
       }
-      wall_energy += m * wall.energy_per_fluid_mass(r_squared);
+      wall_energy += mass_[a] * wall.energy_per_fluid_mass(r_squared);
     }
     energies.wall[a] = wall_energy;
   }

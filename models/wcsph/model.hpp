@@ -9,6 +9,7 @@
 #include "core/energy.hpp"
 #include "core/kernel_wendland.hpp"
 #include "core/neighbour_list.hpp"
+#include "core/pair_list.hpp"
 #include "core/particle_view.hpp"
 #include "core/simulation.hpp"
 #include "core/step_composition.hpp"
@@ -63,7 +64,6 @@ public:
   // Derived quantities at the current positions, fluid particles first, then dummies.
   const std::vector<double>& density();
   const std::array<std::vector<double>, D>& acceleration();
-  const NeighbourList& fluid_neighbours();
 
 private:
   static void kick_substep(Model& model, double dt) { model.kick(dt); }
@@ -90,17 +90,26 @@ private:
   CoordinateArrays<D> wall_position_;
   std::vector<double> mass_;          // carriers: fluid then dummies
   std::vector<Raw> density_constant_; // carriers
-  // Derived from the state, recomputed after every drift.
+  // Derived from the state, recomputed after every drift. The neighbour loops run over the
+  // carriers in cell order (slots, core/pair_list.hpp) for memory locality and to visit each pair
+  // once; the state and everything the model reports stay in the canonical particle order.
   bool derived_valid_ = false;
-  CoordinateArrays<D> position_; // carriers
-  CellList<D> carrier_cells_;
+  CoordinateArrays<D> position_; // carriers, canonical order
+  CellList<D> carrier_cells_;    // its sorted_points() maps a slot to its carrier
   CellList<D> wall_cells_;
-  NeighbourList carrier_neighbours_;
-  NeighbourList wall_neighbours_;
-  std::vector<double> density_;                       // carriers
-  std::vector<double> pressure_over_density_squared_; // carriers
-  std::vector<double> inverse_density_squared_;       // carriers, with the anti-clump force
-  std::array<std::vector<double>, D> acceleration_;   // fluid
+  CoordinateArrays<D> slot_position_;
+  std::vector<double> slot_mass_;
+  std::vector<Raw> slot_density_constant_;
+  HalfPairList carrier_pairs_;
+  NeighbourList wall_neighbours_; // per slot: wall particles within the wall radius
+  typename Arith::Sums density_sums_;
+  std::array<typename Arith::Sums, D> acceleration_sums_;
+  std::vector<double> slot_density_;
+  std::vector<double> pressure_over_density_squared_; // slots
+  std::vector<double> inverse_density_squared_;       // slots, with the anti-clump force
+  std::array<std::vector<double>, D> slot_acceleration_;
+  std::vector<double> density_;                     // carriers, canonical order
+  std::array<std::vector<double>, D> acceleration_; // fluid, canonical order
 };
 
 extern template class Model<2, FixedArithmetic>;
