@@ -3,12 +3,17 @@
 # Bitwise reproducibility (design note exact-reversibility.md §6): no FMA contraction, no
 # fast-math reassociation, round-to-nearest IEEE arithmetic. tests/fma_contraction_test.cpp checks
 # that the flags reach the physics code.
+#
+# -fno-math-errno only stops sqrt and llrint from setting errno: GCC then emits the single
+# instructions (sqrtsd, cvtsd2si) instead of library calls, with identical, correctly rounded
+# results (llrint rounds in the current mode either way; range checks come before it).
 add_library(revsph_flags INTERFACE)
 target_compile_options(revsph_flags INTERFACE
   -ffp-contract=off
   -fno-fast-math
   -fno-associative-math
   -fno-reciprocal-math
+  -fno-math-errno
   -Wall -Wextra -Wpedantic -Wshadow)
 target_include_directories(revsph_flags INTERFACE ${PROJECT_SOURCE_DIR})
 

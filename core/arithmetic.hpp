@@ -73,11 +73,25 @@ struct FloatArithmetic {
   public:
     explicit Sums(const fixedpoint::Scale& scale) : scale_(scale) {}
     const fixedpoint::Scale& scale() const { return scale_; }
-    void reset(std::size_t n) { totals_.assign(n, 0.0); }
-    std::size_t size() const { return totals_.size(); }
-    void add(std::size_t i, double term) { totals_[i] += term; }
-    void add_raw(std::size_t i, double raw) { totals_[i] += raw; }
-    void add_sum(std::size_t i, const Sum& sum) { totals_[i] += sum.total(); }
+    void reset(std::size_t n) {
+      totals_.resize(n);
+#pragma omp parallel for schedule(static)
+      for (std::size_t i = 0; i < n; ++i) {
+        totals_[i] = 0.0;
+      }
+    }
+    std::size_t size() const {
+      return totals_.size();
+    }
+    void add(std::size_t i, double term) {
+      totals_[i] += term;
+    }
+    void add_raw(std::size_t i, double raw) {
+      totals_[i] += raw;
+    }
+    void add_sum(std::size_t i, const Sum& sum) {
+      totals_[i] += sum.total();
+    }
     bool try_value(std::size_t i, double& value) const {
       value = totals_[i];
       return std::isfinite(value);
@@ -88,7 +102,9 @@ struct FloatArithmetic {
     std::vector<double> totals_;
   };
 
-  static double real(Raw raw, const fixedpoint::Scale&) { return raw; }
+  static double real(Raw raw, const fixedpoint::Scale&) {
+    return raw;
+  }
   static bool try_from_real(double value, const fixedpoint::Scale&, Raw& raw) {
     raw = value;
     return std::isfinite(value);

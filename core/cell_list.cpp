@@ -54,21 +54,38 @@ void CellList<D>::build(const CoordinateView<D>& points) {
   }
   cell_of_point_.resize(n);
   std::fill(cell_start_.begin(), cell_start_.end(), 0u);
+  // Cells in parallel; a point outside the domain is marked and the lowest one reported below,
+  // the same for any thread count.
+  constexpr std::uint32_t outside = std::numeric_limits<std::uint32_t>::max();
+  bool any_outside = false;
+#pragma omp parallel for schedule(static) reduction(|| : any_outside)
   for (std::size_t i = 0; i < n; ++i) {
     std::size_t cell = 0;
+    bool inside = true;
     for (int k = D - 1; k >= 0; --k) {
       const double x = points[k][i];
-      if (!(x >= domain_.min[k] && x <= domain_.max[k])) {
-        std::ostringstream where;
-        where << "point " << i << " is outside the domain on axis " << k << " (coordinate " << x
-              << ", domain [" << domain_.min[k] << ", " << domain_.max[k] << "])";
-        throw PointOutsideDomain(i, where.str());
-      }
+      inside = inside && x >= domain_.min[k] && x <= domain_.max[k]; // NaN is outside
       cell = cell * static_cast<std::size_t>(cells_per_axis_[k]) +
-             static_cast<std::size_t>(cell_coordinate(x, k));
+             static_cast<std::size_t>(cell_coordinate(inside ? x : domain_.min[k], k));
     }
-    cell_of_point_[i] = static_cast<std::uint32_t>(cell);
-    ++cell_start_[cell + 1];
+    cell_of_point_[i] = inside ? static_cast<std::uint32_t>(cell) : outside;
+    any_outside = any_outside || !inside;
+  }
+  if (any_outside) {
+    for (std::size_t i = 0; i < n; ++i) {
+      for (int k = D - 1; k >= 0 && cell_of_point_[i] == outside; --k) {
+        const double x = points[k][i];
+        if (!(x >= domain_.min[k] && x <= domain_.max[k])) {
+          std::ostringstream where;
+          where << "point " << i << " is outside the domain on axis " << k << " (coordinate " << x
+                << ", domain [" << domain_.min[k] << ", " << domain_.max[k] << "])";
+          throw PointOutsideDomain(i, where.str());
+        }
+      }
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    ++cell_start_[cell_of_point_[i] + 1];
   }
   for (std::size_t c = 1; c < cell_start_.size(); ++c) {
     cell_start_[c] += cell_start_[c - 1];

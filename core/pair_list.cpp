@@ -88,7 +88,9 @@ void HalfPairList::build(const CellList<D>& cells, const CoordinateView<D>& x, d
     stripe.slot_count = cell_start[end_cell] - stripe.first_slot;
     stripe.offsets.resize(stripe.slot_count + 1);
     stripe.offsets[0] = 0;
-    stripe.used = 0;
+    // Counted in a local: neighbouring stripes' counters share a cache line, and two threads
+    // updating them per slot would serialise on it.
+    std::size_t used = 0;
 
     for (std::size_t c = first_cell; c < end_cell; ++c) {
       if (cell_start[c] == cell_start[c + 1]) {
@@ -113,10 +115,13 @@ void HalfPairList::build(const CellList<D>& cells, const CoordinateView<D>& x, d
 
       for (std::uint32_t a = cell_start[c]; a < cell_start[c + 1]; ++a) {
         const std::size_t candidates = own_row_end - (a + 1) + candidates_after_own_row;
-        if (stripe.used + candidates > stripe.partners.size()) {
-          stripe.partners.resize(std::max(2 * stripe.partners.size(), stripe.used + candidates));
+        if (used + candidates > stripe.partners.size()) {
+          // A quarter of headroom, not the vector's doubling: the lists are the largest array of
+          // a run, and they only grow slowly from step to step.
+          stripe.partners.reserve(used + candidates + (used + candidates) / 4);
+          stripe.partners.resize(used + candidates);
         }
-        std::uint32_t* out = stripe.partners.data() + stripe.used;
+        std::uint32_t* out = stripe.partners.data() + used;
         std::size_t accepted = 0;
         std::array<double, D> xa{};
         for (int k = 0; k < D; ++k) {
@@ -139,10 +144,11 @@ void HalfPairList::build(const CellList<D>& cells, const CoordinateView<D>& x, d
         for (int r = 0; r < row_count; ++r) {
           scan(rows[r].begin, rows[r].end);
         }
-        stripe.used += accepted;
-        stripe.offsets[a - stripe.first_slot + 1] = static_cast<std::uint32_t>(stripe.used);
+        used += accepted;
+        stripe.offsets[a - stripe.first_slot + 1] = static_cast<std::uint32_t>(used);
       }
     }
+    stripe.used = used;
   }
 }
 

@@ -49,8 +49,6 @@ public:
   }
 
   const Scale& scale() const { return scale_; }
-  int128 total() const { return total_; }
-  bool valid() const { return valid_; }
 
 private:
   Scale scale_;

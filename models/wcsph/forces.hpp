@@ -86,7 +86,7 @@ void compute_density(const WendlandQuintic<D>& kernel, const CoordinateView<D>& 
 //   a_a = -sum_b m_b (p_a / rho_a^2 + p_b / rho_b^2) w'(r_ab) (x_a - x_b) / r_ab
 //         - sum_b m_b p0 (1 / rho_a^2 + 1 / rho_b^2) w~'(r_ab) (x_a - x_b) / r_ab   (App. A)
 //         + sum_wall F_wall->a / m_a - g e_vertical                               (eq. 7)
-// for the fluid slots (dummy slots get a value too, which the caller ignores). The term b
+// for the fluid slots, written to acceleration[k][carrier] (canonical fluid order). The term b
 // receives from a pair is computed as if b were the query (its own mass factor, x_b - x_a =
 // -(x_a - x_b) exactly), so the sums are those of a per-particle loop; for equal masses it is
 // the exact negative of a's term, so internal forces conserve momentum in integers.
@@ -105,7 +105,7 @@ void compute_acceleration(const WendlandQuintic<D>& kernel, const CoordinateView
   const std::size_t n = mass.size();
   for (int k = 0; k < D; ++k) {
     sums[k].reset(n);
-    acceleration[k].resize(n);
+    acceleration[k].resize(fluid_count);
   }
   pairs.for_each_slot([&](std::uint32_t a, std::span<const std::uint32_t> partners) {
     auto own = sums_at<typename Arith::Sum, D>(sums[0].scale());
@@ -158,7 +158,7 @@ void compute_acceleration(const WendlandQuintic<D>& kernel, const CoordinateView
     }
     sums[D - 1].add(a, -gravity);
     for (int k = 0; k < D; ++k) {
-      if (!sums[k].try_value(a, acceleration[k][a])) {
+      if (!sums[k].try_value(a, acceleration[k][carrier_of_slot[a]])) {
         faults.record(carrier_of_slot[a], "fluid", "acceleration",
                       "fixed-point overflow or non-finite force");
       }

@@ -24,6 +24,7 @@ void real_coordinates(const StateField<typename Arith::Raw>& field, CoordinateAr
   for (int k = 0; k < D; ++k) {
     const auto raw = field.component(k);
     out[k].resize(std::max(out[k].size(), first + raw.size()));
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < raw.size(); ++i) {
       out[k][first + i] = Arith::real(raw[i], field.info().scale);
     }
@@ -172,6 +173,7 @@ void Model<D, Arith>::update_derived() {
                             carrier_of_slot, fluid, density_sums_, slot_density_, faults);
   faults.throw_if_any();
   pressure_over_density_squared_.resize(carriers);
+#pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < carriers; ++s) {
     const double rho = slot_density_[s];
     pressure_over_density_squared_[s] =
@@ -179,6 +181,7 @@ void Model<D, Arith>::update_derived() {
   }
   if (anti_clump_kernel_) {
     inverse_density_squared_.resize(carriers);
+#pragma omp parallel for schedule(static)
     for (std::size_t s = 0; s < carriers; ++s) {
       inverse_density_squared_[s] = 1.0 / (slot_density_[s] * slot_density_[s]);
     }
@@ -187,23 +190,13 @@ void Model<D, Arith>::update_derived() {
       kernel_, x, wall_x, slot_mass_, pressure_over_density_squared_, inverse_density_squared_,
       carrier_pairs_, wall_neighbours_, carrier_of_slot, fluid, parameters_.gravity,
       parameters_.wall_potential(), anti_clump_kernel_ ? &*anti_clump_kernel_ : nullptr,
-      parameters_.anti_clump_pressure, acceleration_sums_, slot_acceleration_, faults);
+      parameters_.anti_clump_pressure, acceleration_sums_, acceleration_, faults);
   faults.throw_if_any();
 
-  // Back to the canonical order.
-  density_.resize(carriers);
-  for (int k = 0; k < D; ++k) {
-    acceleration_[k].resize(fluid);
-  }
+  density_.resize(carriers); // in the canonical order, for the outputs
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < carriers; ++s) {
-    const std::uint32_t a = carrier_of_slot[s];
-    density_[a] = slot_density_[s];
-    if (a < fluid) {
-      for (int k = 0; k < D; ++k) {
-        acceleration_[k][a] = slot_acceleration_[k][s];
-      }
-    }
+    density_[carrier_of_slot[s]] = slot_density_[s];
   }
   derived_valid_ = true;
 }
@@ -365,14 +358,20 @@ std::vector<ParticleView> Model<D, Arith>::derived_views() {
     return values;
   };
   const std::string energy_unit = D == 2 ? "J/m" : "J";
-  std::vector<ParticleView> views{
-      {"fluid", "density", "kg/m^3", 1, {density_.begin(), density_.begin() + fluid}},
-      {"fluid", "pressure", "Pa", 1, {pressure.begin(), pressure.begin() + fluid}},
-      {"fluid", "acceleration", "m/s^2", D, component_major(acceleration_)},
-      {"fluid", "kinetic_energy", energy_unit, 1, std::move(energies.kinetic)},
-      {"fluid", "gravitational_energy", energy_unit, 1, std::move(energies.gravitational)},
-      {"fluid", "compressional_energy", energy_unit, 1, std::move(energies.compressional)},
-      {"fluid", "wall_energy", energy_unit, 1, std::move(energies.wall)}};
+  // Appended one by one (moved): an initializer list would copy every array once more, and the
+  // snapshot write is the peak of a run's memory.
+  std::vector<ParticleView> views;
+  auto add = [&](const char* set, const char* name, std::string unit, int components,
+                 std::vector<double>&& values) {
+    views.push_back({set, name, std::move(unit), components, std::move(values)});
+  };
+  add("fluid", "density", "kg/m^3", 1, {density_.begin(), density_.begin() + fluid});
+  add("fluid", "pressure", "Pa", 1, {pressure.begin(), pressure.begin() + fluid});
+  add("fluid", "acceleration", "m/s^2", D, component_major(acceleration_));
+  add("fluid", "kinetic_energy", energy_unit, 1, std::move(energies.kinetic));
+  add("fluid", "gravitational_energy", energy_unit, 1, std::move(energies.gravitational));
+  add("fluid", "compressional_energy", energy_unit, 1, std::move(energies.compressional));
+  add("fluid", "wall_energy", energy_unit, 1, std::move(energies.wall));
   if (parameters_.shepard_every > 0) {
     views.push_back({"fluid", "filtered_velocity", "m/s", D, component_major(filtered_velocity())});
   }

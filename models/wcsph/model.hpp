@@ -107,9 +107,8 @@ private:
   std::vector<double> slot_density_;
   std::vector<double> pressure_over_density_squared_; // slots
   std::vector<double> inverse_density_squared_;       // slots, with the anti-clump force
-  std::array<std::vector<double>, D> slot_acceleration_;
-  std::vector<double> density_;                     // carriers, canonical order
-  std::array<std::vector<double>, D> acceleration_; // fluid, canonical order
+  std::vector<double> density_;                       // carriers, canonical order
+  std::array<std::vector<double>, D> acceleration_;   // fluid, canonical order
 };
 
 extern template class Model<2, FixedArithmetic>;
