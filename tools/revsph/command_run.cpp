@@ -95,7 +95,10 @@ int run_command(const RunOptions& options) {
       output.set_reference_energy(simulation.energy().total());
     }
     output.write_snapshot(simulation);
+    const auto stepping_start = std::chrono::steady_clock::now();
     run_steps(simulation, steps, hooks);
+    summary.stepping_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - stepping_start).count();
     output.write_snapshot(simulation);
   } catch (const SimulationFault& fault) {
     // The state is left half-updated by the failed step: no snapshot of it; the last one

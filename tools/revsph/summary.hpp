@@ -17,7 +17,8 @@ struct RunSummary {
   std::optional<std::string> from_snapshot; // the snapshot a restarted run began from
   std::int64_t start_step = 0;
   std::int64_t steps_requested = 0;
-  double wall_seconds = 0.0;
+  double wall_seconds = 0.0;     // the whole run: stepping, energy log and snapshot writes
+  double stepping_seconds = 0.0; // the time steps alone (no initial or final snapshot)
   int threads = 1;
   std::string initial_hash;
   std::string final_hash;
