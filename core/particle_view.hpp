@@ -3,6 +3,7 @@
 // written to snapshots for ParaView and Python, never read back into a simulation. The exact
 // state is the StateSnapshot; views of it and derived quantities are doubles.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -15,5 +16,9 @@ struct ParticleView {
   int components = 1;
   std::vector<double> values; // component-major, like StateField
 };
+
+// Views are produced one at a time and handed to a sink (the snapshot writer), so that only one
+// of them is in memory at once: at a million particles each is tens of megabytes.
+using ViewSink = std::function<void(ParticleView&&)>;
 
 } // namespace revsph

@@ -59,7 +59,7 @@ concept Model = requires(M& model, const M& const_model) {
   // Energy terms at the current (synchronised) state.
   { model.energy() } -> std::same_as<EnergyBudget>;
   // Physical per-particle quantities for snapshots (density, pressure, energy per particle, …).
-  { model.derived_views() } -> std::same_as<std::vector<ParticleView>>;
+  model.derived_views(std::declval<const ViewSink&>());
   // Forget cached quantities derived from the state (after the state was replaced).
   model.invalidate_derived();
   { const_model.info() } -> std::convertible_to<const SimulationInfo&>;
@@ -92,7 +92,8 @@ public:
   virtual StateSnapshot capture_state() = 0;
   virtual void restore_state(const StateSnapshot& snapshot) = 0;
   virtual EnergyBudget energy() = 0;
-  virtual std::vector<ParticleView> derived_views() = 0;
+  // Hands the physical views to `sink` one by one (see ViewSink).
+  virtual void derived_views(const ViewSink& sink) = 0;
   // Empty unless the model reports diagnostics.
   virtual std::vector<EnergyTerm> diagnostics() = 0;
 
@@ -142,8 +143,8 @@ public:
   EnergyBudget energy() override {
     return attributing_faults([&] { return model_.energy(); });
   }
-  std::vector<ParticleView> derived_views() override {
-    return attributing_faults([&] { return model_.derived_views(); });
+  void derived_views(const ViewSink& sink) override {
+    attributing_faults([&] { model_.derived_views(sink); });
   }
   std::vector<EnergyTerm> diagnostics() override {
     if constexpr (HasDiagnostics<M>) {

@@ -1,5 +1,7 @@
 #include "core/snapshot_file.hpp"
 
+#include "core/fault.hpp"
+
 #include "core/hdf5_handle.hpp"
 
 #include <array>
@@ -241,7 +243,17 @@ bool is_hdf5_file(const std::filesystem::path& path) {
 std::vector<XdmfParticleSet> write_snapshot(const std::filesystem::path& path,
                                             const SnapshotMetadata& metadata,
                                             const StateSnapshot& state,
-                                            const std::vector<ParticleView>& views) {
+                                            std::vector<ParticleView> views) {
+  return write_snapshot(path, metadata, state, [&](const ViewSink& sink) {
+    for (ParticleView& view : views) {
+      sink(std::move(view));
+    }
+  });
+}
+
+std::vector<XdmfParticleSet> write_snapshot(const std::filesystem::path& path,
+                                            const SnapshotMetadata& metadata,
+                                            const StateSnapshot& state, const ViewSource& views) {
   hdf5::silence_library_errors();
   std::filesystem::path temporary = path;
   temporary += ".tmp";
@@ -264,14 +276,19 @@ std::vector<XdmfParticleSet> write_snapshot(const std::filesystem::path& path,
       set_of(field.info.particle_set, field.count)
           .fields.push_back({field.info.name, field.info.components});
     }
-    for (const ParticleView& view : views) {
-      XdmfParticleSet& set = set_of(view.particle_set, 0);
-      if (view.values.size() != set.count * static_cast<std::size_t>(view.components)) {
-        throw Hdf5Error("view " + view.particle_set + "/" + view.name +
-                        " does not match its particle set");
-      }
-      write_view(file.id(), view, set.count);
-      set.fields.push_back({view.name, view.components});
+    try {
+      views([&](ParticleView&& view) {
+        XdmfParticleSet& set = set_of(view.particle_set, 0);
+        if (view.values.size() != set.count * static_cast<std::size_t>(view.components)) {
+          throw Hdf5Error("view " + view.particle_set + "/" + view.name +
+                          " does not match its particle set");
+        }
+        write_view(file.id(), view, set.count);
+        set.fields.push_back({view.name, view.components});
+      });
+    } catch (const SimulationFault& fault) {
+      // The exact state is still worth keeping (it is what a run starts or stops from).
+      hdf5::write_string_attribute(file.id(), "derived_fields_error", fault.what());
     }
     for (std::size_t k = 0; k < sets.size(); ++k) {
       XdmfParticleSet& set = sets[k];

@@ -22,6 +22,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -69,10 +70,18 @@ struct Snapshot {
 // Writes `path` atomically: the file is written as `path` + ".tmp" and renamed into place, so a
 // process killed while writing never leaves a partial file under the final name. Returns the
 // particle sets and view datasets written (what an XDMF description of the file lists).
+//
+// The views come from `views(sink)`, written as they arrive. If that throws SimulationFault (the
+// derived quantities of a state that cannot be evaluated), the file keeps the exact state and the
+// views written so far, and its attribute derived_fields_error says why.
+using ViewSource = std::function<void(const ViewSink&)>;
+std::vector<XdmfParticleSet> write_snapshot(const std::filesystem::path& path,
+                                            const SnapshotMetadata& metadata,
+                                            const StateSnapshot& state, const ViewSource& views);
 std::vector<XdmfParticleSet> write_snapshot(const std::filesystem::path& path,
                                             const SnapshotMetadata& metadata,
                                             const StateSnapshot& state,
-                                            const std::vector<ParticleView>& views);
+                                            std::vector<ParticleView> views);
 
 // Reads metadata and exact state. Throws SnapshotError, naming the file and what is wrong, for a
 // missing, truncated or foreign file and for an incompatible format version. The state is not

@@ -343,13 +343,17 @@ EnergyBudget Model<D, Arith>::energy() {
 }
 
 template <int D, class Arith>
-std::vector<ParticleView> Model<D, Arith>::derived_views() {
-  ParticleEnergies energies = particle_energies();
+void Model<D, Arith>::derived_views(const ViewSink& sink) {
   const std::size_t fluid = fluid_count();
-  std::vector<double> pressure(density_.size());
-  for (std::size_t a = 0; a < pressure.size(); ++a) {
-    pressure[a] = tait_pressure(density_[a], parameters_.rest_density, parameters_.sound_speed);
-  }
+  const std::size_t carriers = density_.size();
+  auto pressure_of = [&](std::size_t first, std::size_t end) {
+    std::vector<double> pressure(end - first);
+    for (std::size_t a = first; a < end; ++a) {
+      pressure[a - first] =
+          tait_pressure(density_[a], parameters_.rest_density, parameters_.sound_speed);
+    }
+    return pressure;
+  };
   auto component_major = [](const std::array<std::vector<double>, D>& vectors) {
     std::vector<double> values;
     for (int k = 0; k < D; ++k) {
@@ -358,30 +362,28 @@ std::vector<ParticleView> Model<D, Arith>::derived_views() {
     return values;
   };
   const std::string energy_unit = D == 2 ? "J/m" : "J";
-  // Appended one by one (moved): an initializer list would copy every array once more, and the
-  // snapshot write is the peak of a run's memory.
-  std::vector<ParticleView> views;
-  auto add = [&](const char* set, const char* name, std::string unit, int components,
-                 std::vector<double>&& values) {
-    views.push_back({set, name, std::move(unit), components, std::move(values)});
+  // Each view is built, handed over and freed before the next (the snapshot write is the peak of
+  // a run's memory).
+  auto emit = [&](const char* set, const char* name, std::string unit, int components,
+                  std::vector<double>&& values) {
+    sink(ParticleView{set, name, std::move(unit), components, std::move(values)});
   };
-  add("fluid", "density", "kg/m^3", 1, {density_.begin(), density_.begin() + fluid});
-  add("fluid", "pressure", "Pa", 1, {pressure.begin(), pressure.begin() + fluid});
-  add("fluid", "acceleration", "m/s^2", D, component_major(acceleration_));
-  add("fluid", "kinetic_energy", energy_unit, 1, std::move(energies.kinetic));
-  add("fluid", "gravitational_energy", energy_unit, 1, std::move(energies.gravitational));
-  add("fluid", "compressional_energy", energy_unit, 1, std::move(energies.compressional));
-  add("fluid", "wall_energy", energy_unit, 1, std::move(energies.wall));
+  ParticleEnergies energies = particle_energies();
+  emit("fluid", "density", "kg/m^3", 1, {density_.begin(), density_.begin() + fluid});
+  emit("fluid", "pressure", "Pa", 1, pressure_of(0, fluid));
+  emit("fluid", "acceleration", "m/s^2", D, component_major(acceleration_));
+  emit("fluid", "kinetic_energy", energy_unit, 1, std::move(energies.kinetic));
+  emit("fluid", "gravitational_energy", energy_unit, 1, std::move(energies.gravitational));
+  emit("fluid", "compressional_energy", energy_unit, 1, std::move(energies.compressional));
+  emit("fluid", "wall_energy", energy_unit, 1, std::move(energies.wall));
   if (parameters_.shepard_every > 0) {
-    views.push_back({"fluid", "filtered_velocity", "m/s", D, component_major(filtered_velocity())});
+    emit("fluid", "filtered_velocity", "m/s", D, component_major(filtered_velocity()));
   }
-  if (density_.size() > fluid) {
-    views.push_back({"dummy", "density", "kg/m^3", 1, {density_.begin() + fluid, density_.end()}});
-    views.push_back({"dummy", "pressure", "Pa", 1, {pressure.begin() + fluid, pressure.end()}});
-    views.push_back(
-        {"dummy", "compressional_energy", energy_unit, 1, std::move(energies.dummy_compressional)});
+  if (carriers > fluid) {
+    emit("dummy", "density", "kg/m^3", 1, {density_.begin() + fluid, density_.end()});
+    emit("dummy", "pressure", "Pa", 1, pressure_of(fluid, carriers));
+    emit("dummy", "compressional_energy", energy_unit, 1, std::move(energies.dummy_compressional));
   }
-  return views;
 }
 
 template <int D, class Arith>

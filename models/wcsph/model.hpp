@@ -45,7 +45,7 @@ public:
   EnergyBudget energy();
   // Density, pressure, acceleration, each energy term per fluid particle (and the filtered
   // velocity with a Shepard filter); density and pressure of the dummy particles.
-  std::vector<ParticleView> derived_views();
+  void derived_views(const ViewSink& sink);
   // With the Gresho vortex: the error norm of eq. (11) at this instant, of the velocity and of
   // its Shepard-filtered field (the paper's "passive filter").
   std::vector<EnergyTerm> diagnostics();

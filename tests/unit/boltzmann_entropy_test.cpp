@@ -292,7 +292,7 @@ void write_velocity_snapshot(const fs::path& path, std::int64_t step, double dt,
   metadata.dt = dt;
   metadata.state_hash = revsph::state_hash(state);
   fs::create_directories(path.parent_path());
-  revsph::write_snapshot(path, metadata, state, {});
+  revsph::write_snapshot(path, metadata, state, std::vector<revsph::ParticleView>{});
 }
 
 std::vector<std::map<std::string, std::string>> read_csv(const fs::path& path) {

@@ -1,6 +1,7 @@
 // Snapshot files: exact round trip of any declared state, metadata, atomic writing, and clear
 // refusals of files that are not (or no longer) snapshots.
 
+#include "core/fault.hpp"
 #include "core/hdf5_handle.hpp"
 #include "core/snapshot_file.hpp"
 #include "temp_directory.hpp"
@@ -137,7 +138,7 @@ TEST(SnapshotFile, RefusesMissingForeignAndTruncatedFiles) {
 
   const StateSnapshot state = toy_state();
   const fs::path good = directory.path() / "good.h5";
-  revsph::write_snapshot(good, toy_metadata(state), state, {});
+  revsph::write_snapshot(good, toy_metadata(state), state, std::vector<revsph::ParticleView>{});
   const fs::path truncated = directory.path() / "truncated.h5";
   fs::copy_file(good, truncated);
   fs::resize_file(truncated, fs::file_size(good) / 2);
@@ -149,7 +150,7 @@ TEST(SnapshotFile, RefusesMissingForeignAndTruncatedFiles) {
   revsph::SnapshotMetadata wrong_hash = toy_metadata(state);
   wrong_hash.state_hash = std::string(64, '0');
   const fs::path damaged = directory.path() / "damaged.h5";
-  revsph::write_snapshot(damaged, wrong_hash, state, {});
+  revsph::write_snapshot(damaged, wrong_hash, state, std::vector<revsph::ParticleView>{});
   EXPECT_NE(message_of(damaged).find("does not match the hash"), std::string::npos);
 }
 
@@ -157,7 +158,7 @@ TEST(SnapshotFile, RefusesOtherFormatsAndVersions) {
   TempDirectory directory("revsph-snapshot-test");
   const StateSnapshot state = toy_state();
   const fs::path path = directory.path() / "versioned.h5";
-  revsph::write_snapshot(path, toy_metadata(state), state, {});
+  revsph::write_snapshot(path, toy_metadata(state), state, std::vector<revsph::ParticleView>{});
   {
     revsph::hdf5::Handle file(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose, "open");
     revsph::hdf5::write_int_attribute(file.id(), "format_version", 99);
@@ -178,6 +179,31 @@ TEST(SnapshotFile, RefusesOtherFormatsAndVersions) {
   } catch (const SnapshotError& error) {
     EXPECT_NE(std::string(error.what()).find("not a revsph snapshot"), std::string::npos);
   }
+}
+
+} // namespace
+
+namespace {
+
+// Views are streamed into the file; a fault while deriving them keeps the exact state, the views
+// written so far, and says why.
+TEST(SnapshotFile, KeepsStateAndEarlierViewsWhenDerivingAViewFaults) {
+  TempDirectory directory("revsph-snapshot-test");
+  const StateSnapshot state = toy_state();
+  const fs::path path = directory.path() / "fault.h5";
+  const auto sets =
+      revsph::write_snapshot(path, toy_metadata(state), state, [](const revsph::ViewSink& sink) {
+        sink({"fluid", "temperature", "K", 1, {300.0, 301.0, 302.0, 303.0}});
+        throw revsph::SimulationFault({"fluid", 2, "density", "not positive"}, 7);
+      });
+  const revsph::Snapshot read = revsph::read_checked_snapshot(path);
+  EXPECT_NE(read.metadata.derived_fields_error.find("not positive"), std::string::npos);
+  ASSERT_FALSE(sets.empty());
+  bool has_temperature = false;
+  for (const auto& field : sets[0].fields) {
+    has_temperature = has_temperature || field.name == "temperature";
+  }
+  EXPECT_TRUE(has_temperature) << "the view written before the fault stays";
 }
 
 } // namespace

@@ -354,18 +354,20 @@ def build_workloads(arguments: argparse.Namespace, splash: SplashState | None) -
         workloads.append(Workload("table1", "t=0", steps, CASE_2D, TABLE1_DR))
         workloads.append(Workload("table1", f"t={SPLASH_TIME:g}s", steps, CASE_2D, TABLE1_DR,
                                   snapshot=splash.path))
+    def sized(suite, resolutions, particle_steps, fluid_particles, case):
+        """One workload per resolution, each with about `particle_steps` particle-steps."""
+        return [Workload(suite, f"dr={dr:g}",
+                         scaled_steps(steps_for_particle_steps(particle_steps,
+                                                               fluid_particles(dr)), arguments),
+                         case, dr)
+                for dr in resolutions]
+
     if "scaling" in arguments.suite:
-        for dr in arguments.resolutions:
-            steps = scaled_steps(
-                steps_for_particle_steps(SCALING_PARTICLE_STEPS, fluid_particles_2d(dr)),
-                arguments)
-            workloads.append(Workload("scaling", f"dr={dr:g}", steps, CASE_2D, dr))
+        workloads += sized("scaling", arguments.resolutions, SCALING_PARTICLE_STEPS,
+                           fluid_particles_2d, CASE_2D)
     if "3d" in arguments.suite:
-        for dr in arguments.resolutions_3d:
-            steps = scaled_steps(
-                steps_for_particle_steps(THREE_D_PARTICLE_STEPS, fluid_particles_3d(dr)),
-                arguments)
-            workloads.append(Workload("3d", f"dr={dr:g}", steps, CASE_3D, dr))
+        workloads += sized("3d", arguments.resolutions_3d, THREE_D_PARTICLE_STEPS,
+                           fluid_particles_3d, CASE_3D)
     return workloads
 
 

@@ -76,15 +76,10 @@ void RunOutput::write_snapshot(Simulation& simulation) {
   char name[64];
   std::snprintf(name, sizeof name, "step_%09lld.h5", static_cast<long long>(step));
   const fs::path relative = fs::path("snapshots") / name;
-  std::vector<ParticleView> views;
-  try {
-    views = simulation.derived_views();
-  } catch (const SimulationFault& fault) {
-    // The exact state is still worth keeping (it is what the run starts or stops from).
-    metadata.derived_fields_error = fault.what();
-  }
   XdmfSnapshot entry{step, metadata.time, relative.string(), {}};
-  entry.sets = revsph::write_snapshot(directory_ / relative, metadata, state, views);
+  entry.sets =
+      revsph::write_snapshot(directory_ / relative, metadata, state,
+                             [&](const ViewSink& sink) { simulation.derived_views(sink); });
   series_.push_back(std::move(entry));
   write_xdmf(xdmf(), simulation.info().dimension, series_);
   last_step_ = step;
