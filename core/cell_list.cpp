@@ -48,42 +48,20 @@ CellList<D>::CellList(const Box<D>& domain, double cell_size, std::size_t max_ce
 
 template <int D>
 void CellList<D>::build(const CoordinateView<D>& points) {
-  const std::size_t n = points[0].size();
-  if (n > std::numeric_limits<std::uint32_t>::max()) {
-    throw std::length_error("cell list: more than 2^32 - 1 points");
-  }
-  cell_of_point_.resize(n);
+  build(points[0].size(), [&](int axis, std::size_t i) { return points[axis][i]; });
+}
+
+template <int D>
+void CellList<D>::throw_outside(int axis, std::size_t i, double x) const {
+  std::ostringstream where;
+  where << "point " << i << " is outside the domain on axis " << axis << " (coordinate " << x
+        << ", domain [" << domain_.min[axis] << ", " << domain_.max[axis] << "])";
+  throw PointOutsideDomain(i, where.str());
+}
+
+template <int D>
+void CellList<D>::sort_into_cells(std::size_t n) {
   std::fill(cell_start_.begin(), cell_start_.end(), 0u);
-  // Cells in parallel; a point outside the domain is marked and the lowest one reported below,
-  // the same for any thread count.
-  constexpr std::uint32_t outside = std::numeric_limits<std::uint32_t>::max();
-  bool any_outside = false;
-#pragma omp parallel for schedule(static) reduction(|| : any_outside)
-  for (std::size_t i = 0; i < n; ++i) {
-    std::size_t cell = 0;
-    bool inside = true;
-    for (int k = D - 1; k >= 0; --k) {
-      const double x = points[k][i];
-      inside = inside && x >= domain_.min[k] && x <= domain_.max[k]; // NaN is outside
-      cell = cell * static_cast<std::size_t>(cells_per_axis_[k]) +
-             static_cast<std::size_t>(cell_coordinate(inside ? x : domain_.min[k], k));
-    }
-    cell_of_point_[i] = inside ? static_cast<std::uint32_t>(cell) : outside;
-    any_outside = any_outside || !inside;
-  }
-  if (any_outside) {
-    for (std::size_t i = 0; i < n; ++i) {
-      for (int k = D - 1; k >= 0 && cell_of_point_[i] == outside; --k) {
-        const double x = points[k][i];
-        if (!(x >= domain_.min[k] && x <= domain_.max[k])) {
-          std::ostringstream where;
-          where << "point " << i << " is outside the domain on axis " << k << " (coordinate " << x
-                << ", domain [" << domain_.min[k] << ", " << domain_.max[k] << "])";
-          throw PointOutsideDomain(i, where.str());
-        }
-      }
-    }
-  }
   for (std::size_t i = 0; i < n; ++i) {
     ++cell_start_[cell_of_point_[i] + 1];
   }

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <stdexcept>
 #include <vector>
@@ -35,6 +36,10 @@ public:
 
   // Sorts the points into cells. Throws PointOutsideDomain for the lowest-index point outside.
   void build(const CoordinateView<D>& points);
+  // The same for n points given by coordinate(axis, i) -> double, for callers that hold them in
+  // another form (a model's fixed-point state) and need no copy in doubles.
+  template <class Coordinate>
+  void build(std::size_t n, Coordinate&& coordinate);
 
   double cell_size() const { return cell_size_; }
   std::size_t cell_count() const { return cell_start_.size() - 1; }
@@ -78,6 +83,8 @@ public:
   }
 
 private:
+  [[noreturn]] void throw_outside(int axis, std::size_t i, double x) const;
+  void sort_into_cells(std::size_t n); // from cell_of_point_: stable counting sort
   int cell_coordinate(double x, int axis) const {
     const int c = static_cast<int>((x - domain_.min[axis]) * inverse_cell_size_);
     return c < 0 ? 0 : (c >= cells_per_axis_[axis] ? cells_per_axis_[axis] - 1 : c);
@@ -100,6 +107,43 @@ private:
   std::vector<std::uint32_t> sorted_points_; // point indices, by cell, ascending within a cell
   std::vector<std::uint32_t> cell_of_point_; // scratch for build()
 };
+
+template <int D>
+template <class Coordinate>
+void CellList<D>::build(std::size_t n, Coordinate&& coordinate) {
+  if (n > std::numeric_limits<std::uint32_t>::max()) {
+    throw std::length_error("cell list: more than 2^32 - 1 points");
+  }
+  cell_of_point_.resize(n);
+  // Cells in parallel; a point outside the domain is marked and the lowest one reported below,
+  // the same for any thread count.
+  constexpr std::uint32_t outside = std::numeric_limits<std::uint32_t>::max();
+  bool any_outside = false;
+#pragma omp parallel for schedule(static) reduction(|| : any_outside)
+  for (std::size_t i = 0; i < n; ++i) {
+    std::size_t cell = 0;
+    bool inside = true;
+    for (int k = D - 1; k >= 0; --k) {
+      const double x = coordinate(k, i);
+      inside = inside && x >= domain_.min[k] && x <= domain_.max[k]; // NaN is outside
+      cell = cell * static_cast<std::size_t>(cells_per_axis_[k]) +
+             static_cast<std::size_t>(cell_coordinate(inside ? x : domain_.min[k], k));
+    }
+    cell_of_point_[i] = inside ? static_cast<std::uint32_t>(cell) : outside;
+    any_outside = any_outside || !inside;
+  }
+  if (any_outside) {
+    for (std::size_t i = 0; i < n; ++i) {
+      for (int k = D - 1; k >= 0 && cell_of_point_[i] == outside; --k) {
+        const double x = coordinate(k, i);
+        if (!(x >= domain_.min[k] && x <= domain_.max[k])) {
+          throw_outside(k, i, x);
+        }
+      }
+    }
+  }
+  sort_into_cells(n);
+}
 
 extern template class CellList<2>;
 extern template class CellList<3>;

@@ -115,17 +115,14 @@ void Model<D, Arith>::update_constants() {
   const std::size_t fluid = fluid_count();
   const std::size_t dummies = state_.dummy_position.count();
   mass_.resize(fluid + dummies);
-  density_constant_.resize(fluid + dummies);
   for (std::size_t a = 0; a < fluid; ++a) {
     mass_[a] = Arith::real(state_.mass.at(0, a), state_.mass.info().scale);
-    density_constant_[a] = state_.density_constant.at(0, a);
   }
   for (std::size_t d = 0; d < dummies; ++d) {
     mass_[fluid + d] = Arith::real(state_.dummy_mass.at(0, d), state_.dummy_mass.info().scale);
-    density_constant_[fluid + d] = state_.dummy_density_constant.at(0, d);
   }
-  // Dummy positions follow the fluid's in the carrier array and never change.
-  real_coordinates<Arith, D>(state_.dummy_position, position_, fluid);
+  dummy_position_ = {};
+  real_coordinates<Arith, D>(state_.dummy_position, dummy_position_, 0);
   constants_valid_ = true;
 }
 
@@ -135,11 +132,12 @@ void Model<D, Arith>::update_derived() {
     return;
   }
   update_constants();
-  real_coordinates<Arith, D>(state_.position, position_, 0);
   const std::size_t fluid = fluid_count();
   const std::size_t carriers = mass_.size();
+  // Straight from the fixed-point state: no copy of all coordinates in doubles.
+  auto coordinate = [&](int axis, std::size_t a) { return real_position(axis, a); };
   try {
-    carrier_cells_.build(view_of<D>(position_));
+    carrier_cells_.build(carriers, coordinate);
   } catch (const PointOutsideDomain& outside) {
     const std::size_t a = outside.index();
     throw SimulationFault({carrier_set(a, fluid), index_in_set(a, fluid), "position",
@@ -157,10 +155,11 @@ void Model<D, Arith>::update_derived() {
   for (std::size_t s = 0; s < carriers; ++s) {
     const std::uint32_t a = carrier_of_slot[s];
     for (int k = 0; k < D; ++k) {
-      slot_position_[k][s] = position_[k][a];
+      slot_position_[k][s] = real_position(k, a);
     }
     slot_mass_[s] = mass_[a];
-    slot_density_constant_[s] = density_constant_[a];
+    slot_density_constant_[s] = a < fluid ? state_.density_constant.at(0, a)
+                                          : state_.dummy_density_constant.at(0, a - fluid);
   }
   const CoordinateView<D> x = view_of<D>(slot_position_);
   carrier_pairs_.build<D>(carrier_cells_, x, parameters_.support_radius);
@@ -292,7 +291,7 @@ typename Model<D, Arith>::ParticleEnergies Model<D, Arith>::particle_energies() 
     }
     energies.kinetic[a] = 0.5 * m * v_squared;
     energies.gravitational[a] =
-        m * parameters_.gravity * (position_[D - 1][a] - parameters_.gravity_reference_height);
+        m * parameters_.gravity * (real_position(D - 1, a) - parameters_.gravity_reference_height);
     energies.compressional[a] =
         m * compressional_energy_per_mass(density_[a], parameters_.rest_density,
                                           parameters_.sound_speed); // eq. (3)
@@ -308,7 +307,7 @@ typename Model<D, Arith>::ParticleEnergies Model<D, Arith>::particle_energies() 
     for (const std::uint32_t w : wall_neighbours_.of(s)) {
       double r_squared = 0.0;
       for (int k = 0; k < D; ++k) {
-        const double d = position_[k][a] - wall_position_[k][w];
+        const double d = real_position(k, a) - wall_position_[k][w];
         r_squared += d * d;
       }
       wall_energy += mass_[a] * wall.energy_per_fluid_mass(r_squared);
@@ -399,8 +398,8 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics() {
   double raw_sum = 0.0;
   double filtered_sum = 0.0;
   for (std::size_t a = 0; a < fluid_count(); ++a) {
-    const auto [exact_x, exact_y] = gresho::velocity(position_[0][a] - parameters_.centre[0],
-                                                     position_[1][a] - parameters_.centre[1]);
+    const auto [exact_x, exact_y] = gresho::velocity(real_position(0, a) - parameters_.centre[0],
+                                                     real_position(1, a) - parameters_.centre[1]);
     const double volume = mass_[a] / density_[a];
     raw_sum += volume * ((velocity[0][a] - exact_x) * (velocity[0][a] - exact_x) +
                          (velocity[1][a] - exact_y) * (velocity[1][a] - exact_y));

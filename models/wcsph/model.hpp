@@ -73,6 +73,12 @@ private:
     std::vector<double> dummy_compressional;
   };
   std::size_t fluid_count() const { return state_.position.count(); }
+  // Coordinate `axis` of carrier a (fluid, then dummies) in metres.
+  double real_position(int axis, std::size_t a) const {
+    const std::size_t fluid = fluid_count();
+    return a < fluid ? Arith::real(state_.position.at(axis, a), state_.position.info().scale)
+                     : dummy_position_[axis][a - fluid];
+  }
   void update_derived();
   void update_constants();
   ParticleEnergies particle_energies();
@@ -88,14 +94,13 @@ private:
   // Constant parts (wall and dummy positions, masses, density constants), converted once.
   bool constants_valid_ = false;
   CoordinateArrays<D> wall_position_;
-  std::vector<double> mass_;          // carriers: fluid then dummies
-  std::vector<Raw> density_constant_; // carriers
+  std::vector<double> mass_; // carriers: fluid then dummies
+  CoordinateArrays<D> dummy_position_;
   // Derived from the state, recomputed after every drift. The neighbour loops run over the
   // carriers in cell order (slots, core/pair_list.hpp) for memory locality and to visit each pair
   // once; the state and everything the model reports stay in the canonical particle order.
   bool derived_valid_ = false;
-  CoordinateArrays<D> position_; // carriers, canonical order
-  CellList<D> carrier_cells_;    // its sorted_points() maps a slot to its carrier
+  CellList<D> carrier_cells_; // its sorted_points() maps a slot to its carrier
   CellList<D> wall_cells_;
   CoordinateArrays<D> slot_position_;
   std::vector<double> slot_mass_;
