@@ -1,0 +1,220 @@
+#include "models/shtc/distortion.hpp"
+
+#include "fixedpoint/conversion.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace revsph::shtc {
+
+namespace {
+
+// Odd functions bit for bit: f(-t) == -f(t) whatever the libm does with negative arguments.
+double odd_tan(double t) {
+  return std::copysign(std::tan(std::fabs(t)), t);
+}
+double odd_sin(double t) {
+  return std::copysign(std::sin(std::fabs(t)), t);
+}
+double odd_tanh(double t) {
+  return std::copysign(std::tanh(std::fabs(t)), t);
+}
+double odd_sinh(double t) {
+  return std::copysign(std::sinh(std::fabs(t)), t);
+}
+
+// Lifting steps on the columns of U (right multiplication by a unit triangular matrix).
+template <int D>
+class ColumnLifts {
+public:
+  explicit ColumnLifts(std::array<std::int64_t, D * D>& u) : u_(u) {}
+
+  // column j += round(c * column i): U <- U (I + c e_i e_j^T). The same step with -c undoes it
+  // exactly, because column i is untouched and the rounding is odd-symmetric.
+  bool shear(int i, int j, double c) {
+    for (int row = 0; row < D; ++row) {
+      const double product = c * static_cast<double>(u_[row * D + i]);
+      if (!(std::fabs(product) < fixedpoint::two_to_the_63)) {
+        return false;
+      }
+      if (__builtin_add_overflow(u_[row * D + j], std::llrint(product), &u_[row * D + j])) {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // U <- U R with R the rotation by theta in the (i, j) plane, R = [[cos, -sin], [sin, cos]] on
+  // columns (i, j), as three shears [[1, a], [0, 1]] [[1, 0], [b, 1]] [[1, a], [0, 1]],
+  // a = -tan(theta / 2), b = sin(theta).
+  bool rotate(int i, int j, double theta) {
+    return rotate_by(i, j, -odd_tan(0.5 * theta), odd_sin(theta));
+  }
+  bool rotate_by(int i, int j, double a, double b) {
+    return shear(i, j, a) && shear(j, i, b) && shear(i, j, a);
+  }
+
+  // U <- U B with B = [[cosh t, sinh t], [sinh t, cosh t]] on columns (i, j): the same three
+  // shears with a = tanh(t / 2), b = sinh(t).
+  bool boost(int i, int j, double t) { return rotate_by(i, j, odd_tanh(0.5 * t), odd_sinh(t)); }
+
+  // U <- U diag(e^t, e^-t) on columns (i, j) = U R(-pi/4) B(t) R(pi/4). The two fixed rotations
+  // use the same constants with opposite signs, so stretch(-t) is exactly the inverse sequence.
+  bool stretch(int i, int j, double t) {
+    static const double a = std::tan(std::numbers::pi / 8.0);
+    static const double b = std::sin(std::numbers::pi / 4.0);
+    return rotate_by(i, j, a, -b) && boost(i, j, t) && rotate_by(i, j, -a, b);
+  }
+
+private:
+  std::array<std::int64_t, D * D>& u_;
+};
+
+enum class Generator { rotation, boost, stretch };
+
+struct Factor {
+  Generator kind;
+  int i;
+  int j;
+  double parameter; // odd in h L
+};
+
+// exp(M) for M = -dev(h L), split into plane generators: the antisymmetric part into rotations
+// (exp of [[0, w], [-w, 0]] is the rotation by -w), the symmetric off-diagonal part into boosts,
+// the traceless diagonal into stretches of the pairs (0, 1) and, in 3D, (1, 2).
+template <int D>
+std::vector<Factor> factors_of(const Matrix<D>& h_l) {
+  double trace = 0.0;
+  for (int k = 0; k < D; ++k) {
+    trace += h_l(k, k);
+  }
+  const double trace_part = trace / D;
+  Matrix<D> m;
+  for (int r = 0; r < D; ++r) {
+    for (int c = 0; c < D; ++c) {
+      m(r, c) = -(h_l(r, c) - (r == c ? trace_part : 0.0));
+    }
+  }
+  std::vector<Factor> factors;
+  for (int i = 0; i < D; ++i) {
+    for (int j = i + 1; j < D; ++j) {
+      factors.push_back({Generator::rotation, i, j, -(0.5 * (m(i, j) - m(j, i)))});
+    }
+  }
+  for (int i = 0; i < D; ++i) {
+    for (int j = i + 1; j < D; ++j) {
+      factors.push_back({Generator::boost, i, j, 0.5 * (m(i, j) + m(j, i))});
+    }
+  }
+  factors.push_back({Generator::stretch, 0, 1, m(0, 0)});
+  if constexpr (D == 3) {
+    factors.push_back({Generator::stretch, 1, 2, -m(2, 2)});
+  }
+  return factors;
+}
+
+template <int D>
+bool apply(ColumnLifts<D>& lifts, const Factor& factor, double fraction) {
+  const double parameter = fraction * factor.parameter;
+  switch (factor.kind) {
+  case Generator::rotation:
+    return lifts.rotate(factor.i, factor.j, parameter);
+  case Generator::boost:
+    return lifts.boost(factor.i, factor.j, parameter);
+  case Generator::stretch:
+    return lifts.stretch(factor.i, factor.j, parameter);
+  }
+  return false;
+}
+
+} // namespace
+
+template <int D>
+bool try_make_distortion(const Matrix<D>& a, const DistortionScales& scales,
+                         ExactDistortion<D>& out) {
+  const double determinant = a.determinant();
+  if (!(determinant > 0.0) || !std::isfinite(determinant)) {
+    return false;
+  }
+  const double log_det = std::log(determinant);
+  const double unimodular_factor = std::exp(-log_det / D);
+  if (!fixedpoint::try_to_fixed(log_det, scales.log_det, out.log_det)) {
+    return false;
+  }
+  for (int r = 0; r < D; ++r) {
+    for (int c = 0; c < D; ++c) {
+      if (!fixedpoint::try_to_fixed(a(r, c) * unimodular_factor, scales.unimodular,
+                                    out.unimodular[r * D + c])) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+template <int D>
+Matrix<D> to_matrix(const ExactDistortion<D>& a, const DistortionScales& scales) {
+  const double factor = std::exp(fixedpoint::to_real(a.log_det, scales.log_det) / D);
+  Matrix<D> result;
+  for (int r = 0; r < D; ++r) {
+    for (int c = 0; c < D; ++c) {
+      result(r, c) = factor * fixedpoint::to_real(a.unimodular[r * D + c], scales.unimodular);
+    }
+  }
+  return result;
+}
+
+template <int D>
+bool try_update_distortion(ExactDistortion<D>& a, const Matrix<D>& h_l,
+                           const DistortionScales& scales) {
+  double trace = 0.0;
+  for (int k = 0; k < D; ++k) {
+    trace += h_l(k, k);
+  }
+  // d(log det A)/dt = -tr L (eq. 47): exact and additive, hence exactly invertible.
+  std::int64_t log_det_change = 0;
+  if (!fixedpoint::try_to_fixed(-trace, scales.log_det, log_det_change) ||
+      !fixedpoint::try_add(a.log_det, log_det_change, a.log_det)) {
+    return false;
+  }
+  // Strang: half of every factor but the last, the last whole, the halves again in reverse.
+  const std::vector<Factor> factors = factors_of<D>(h_l);
+  ColumnLifts<D> lifts(a.unimodular);
+  const std::size_t last = factors.size() - 1;
+  for (std::size_t k = 0; k < last; ++k) {
+    if (!apply(lifts, factors[k], 0.5)) {
+      return false;
+    }
+  }
+  if (!apply(lifts, factors[last], 1.0)) {
+    return false;
+  }
+  for (std::size_t k = last; k-- > 0;) {
+    if (!apply(lifts, factors[k], 0.5)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+template <int D>
+Matrix<D> cayley_update(const Matrix<D>& a, const Matrix<D>& h_l) {
+  const Matrix<D> identity = Matrix<D>::Identity();
+  return a * (identity - 0.5 * h_l) * (identity + 0.5 * h_l).inverse();
+}
+
+template bool try_make_distortion<2>(const Matrix<2>&, const DistortionScales&,
+                                     ExactDistortion<2>&);
+template bool try_make_distortion<3>(const Matrix<3>&, const DistortionScales&,
+                                     ExactDistortion<3>&);
+template Matrix<2> to_matrix<2>(const ExactDistortion<2>&, const DistortionScales&);
+template Matrix<3> to_matrix<3>(const ExactDistortion<3>&, const DistortionScales&);
+template bool try_update_distortion<2>(ExactDistortion<2>&, const Matrix<2>&,
+                                       const DistortionScales&);
+template bool try_update_distortion<3>(ExactDistortion<3>&, const Matrix<3>&,
+                                       const DistortionScales&);
+template Matrix<2> cayley_update<2>(const Matrix<2>&, const Matrix<2>&);
+template Matrix<3> cayley_update<3>(const Matrix<3>&, const Matrix<3>&);
+
+} // namespace revsph::shtc
