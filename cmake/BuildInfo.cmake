@@ -9,6 +9,20 @@ if(GIT_FOUND)
   if(NOT REVSPH_GIT_COMMIT)
     set(REVSPH_GIT_COMMIT "unknown")
   endif()
+  # Re-run this when HEAD moves (a commit updates the branch's ref file), so that a rebuild after
+  # a commit does not keep reporting the commit of the first configure.
+  execute_process(COMMAND ${GIT_EXECUTABLE} rev-parse --absolute-git-dir
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} OUTPUT_VARIABLE _revsph_git_dir
+    OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
+  execute_process(COMMAND ${GIT_EXECUTABLE} symbolic-ref -q HEAD
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} OUTPUT_VARIABLE _revsph_git_ref
+    OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
+  foreach(_revsph_git_file HEAD ${_revsph_git_ref})
+    if(_revsph_git_dir AND EXISTS "${_revsph_git_dir}/${_revsph_git_file}")
+      set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
+        "${_revsph_git_dir}/${_revsph_git_file}")
+    endif()
+  endforeach()
 endif()
 string(TOUPPER "${CMAKE_BUILD_TYPE}" _revsph_build_type_upper)
 set(REVSPH_BUILD_FLAGS "${CMAKE_CXX_FLAGS} ${CMAKE_CXX_FLAGS_${_revsph_build_type_upper}} -ffp-contract=off -fno-fast-math -fno-math-errno")
