@@ -11,6 +11,8 @@
 
 #include <cmath>
 #include <random>
+#include <type_traits>
+#include <vector>
 
 namespace {
 
@@ -71,14 +73,6 @@ void expect_single_steps_reverse_exactly(std::uint64_t seed) {
   }
 }
 
-TEST(ShtcDistortion, EachUpdateIsUndoneBitForBitIn2D) {
-  expect_single_steps_reverse_exactly<2>(11);
-}
-
-TEST(ShtcDistortion, EachUpdateIsUndoneBitForBitIn3D) {
-  expect_single_steps_reverse_exactly<3>(12);
-}
-
 // A trajectory of 10 000 steps, a new gradient every step, run back with the negated gradients
 // in reverse order (what the time reversal of the SPH step does).
 template <int D>
@@ -102,13 +96,6 @@ void expect_trajectory_reverses_exactly(std::uint64_t seed) {
   }
   EXPECT_EQ(a.log_det, initial.log_det);
   EXPECT_EQ(a.unimodular, initial.unimodular);
-}
-
-TEST(ShtcDistortion, TrajectoryReturnsBitForBitIn2D) {
-  expect_trajectory_reverses_exactly<2>(21);
-}
-TEST(ShtcDistortion, TrajectoryReturnsBitForBitIn3D) {
-  expect_trajectory_reverses_exactly<3>(22);
 }
 
 // For a constant L, n steps of h = t / n against A0 exp(-t L).
@@ -149,13 +136,6 @@ void expect_second_order(std::uint64_t seed) {
   }
 }
 
-TEST(ShtcDistortion, IsSecondOrderLikeTheCayleyUpdateIn2D) {
-  expect_second_order<2>(31);
-}
-TEST(ShtcDistortion, IsSecondOrderLikeTheCayleyUpdateIn3D) {
-  expect_second_order<3>(32);
-}
-
 // The lifting update and the paper's Cayley update differ by O(h^2) over a fixed time.
 template <int D>
 void expect_close_to_cayley(std::uint64_t seed) {
@@ -179,14 +159,26 @@ void expect_close_to_cayley(std::uint64_t seed) {
   EXPECT_LT(coarse / fine, 4.5);
 }
 
-TEST(ShtcDistortion, DiffersFromCayleyByOrderHSquaredIn2D) {
-  expect_close_to_cayley<2>(41);
+// Every check in 2D and 3D.
+template <class Dimension>
+class ShtcDistortion : public ::testing::Test {};
+using Dimensions = ::testing::Types<std::integral_constant<int, 2>, std::integral_constant<int, 3>>;
+TYPED_TEST_SUITE(ShtcDistortion, Dimensions);
+
+TYPED_TEST(ShtcDistortion, EachUpdateIsUndoneBitForBit) {
+  expect_single_steps_reverse_exactly<TypeParam::value>(10 + TypeParam::value);
 }
-TEST(ShtcDistortion, DiffersFromCayleyByOrderHSquaredIn3D) {
-  expect_close_to_cayley<3>(42);
+TYPED_TEST(ShtcDistortion, TrajectoryReturnsBitForBit) {
+  expect_trajectory_reverses_exactly<TypeParam::value>(20 + TypeParam::value);
+}
+TYPED_TEST(ShtcDistortion, IsSecondOrderLikeTheCayleyUpdate) {
+  expect_second_order<TypeParam::value>(30 + TypeParam::value);
+}
+TYPED_TEST(ShtcDistortion, DiffersFromCayleyByOrderHSquared) {
+  expect_close_to_cayley<TypeParam::value>(40 + TypeParam::value);
 }
 
-TEST(ShtcDistortion, RejectsAnInvertedOrDegenerateDistortion) {
+TEST(ShtcDistortionSetup, RejectsAnInvertedOrDegenerateDistortion) {
   ExactDistortion<2> a;
   Matrix<2> flipped = Matrix<2>::Identity();
   flipped(0, 0) = -1.0;
