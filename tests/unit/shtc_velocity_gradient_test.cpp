@@ -1,0 +1,190 @@
+// The renormalised velocity gradient of SHTC-SPH (models/shtc/velocity_gradient.hpp): exact for
+// linear velocity fields on a disordered lattice (paper 2, Statement 2), odd in the velocities bit
+// for bit, and the same bits for any thread count.
+
+#include "core/cell_list.hpp"
+#include "core/pair_list.hpp"
+#include "core/threads.hpp"
+#include "models/shtc/velocity_gradient.hpp"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <random>
+#include <type_traits>
+
+namespace {
+
+using revsph::CoordinateArrays;
+using revsph::shtc::GradientMatrix;
+
+template <int D>
+struct Cloud {
+  revsph::CellList<D> cells;
+  CoordinateArrays<D> x; // slot order
+  std::vector<double> mass;
+  revsph::HalfPairList pairs;
+  double support = 0.0;
+};
+
+// A jittered square (2D) or cubic (3D) lattice of spacing dr, in cell order with its pair list.
+template <int D>
+Cloud<D> jittered_lattice(int per_axis, std::uint64_t seed) {
+  const double dr = 0.1;
+  const double support = 3.0 * dr;
+  revsph::Box<D> box;
+  for (int k = 0; k < D; ++k) {
+    box.min[k] = -dr;
+    box.max[k] = (per_axis + 1) * dr;
+  }
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> jitter(-0.2 * dr, 0.2 * dr);
+  CoordinateArrays<D> points;
+  int total = 1;
+  for (int k = 0; k < D; ++k) {
+    total *= per_axis;
+  }
+  for (int i = 0; i < total; ++i) {
+    int rest = i;
+    for (int k = 0; k < D; ++k) {
+      points[k].push_back((rest % per_axis) * dr + jitter(rng));
+      rest /= per_axis;
+    }
+  }
+  Cloud<D> cloud{revsph::CellList<D>(box, support, 1 << 20), {}, {}, {}, support};
+  cloud.cells.build(revsph::view_of<D>(points));
+  const auto order = cloud.cells.sorted_points();
+  for (int k = 0; k < D; ++k) {
+    for (const std::uint32_t p : order) {
+      cloud.x[k].push_back(points[k][p]);
+    }
+  }
+  std::uniform_real_distribution<double> mass(0.8, 1.2); // unequal masses: a and b differ
+  for (int i = 0; i < total; ++i) {
+    cloud.mass.push_back(mass(rng));
+  }
+  cloud.pairs.template build<D>(cloud.cells, revsph::view_of<D>(cloud.x), support);
+  return cloud;
+}
+
+// v = L0 x + c at every point.
+template <int D>
+CoordinateArrays<D> linear_velocity(const Cloud<D>& cloud, const GradientMatrix<D>& gradient) {
+  CoordinateArrays<D> v;
+  for (int k = 0; k < D; ++k) {
+    v[k].resize(cloud.x[0].size());
+    for (std::size_t a = 0; a < v[k].size(); ++a) {
+      double value = 0.7 * (k + 1);
+      for (int j = 0; j < D; ++j) {
+        value += gradient(k, j) * cloud.x[j][a];
+      }
+      v[k][a] = value;
+    }
+  }
+  return v;
+}
+
+template <int D>
+std::vector<GradientMatrix<D>> gradients_of(const Cloud<D>& cloud, const CoordinateArrays<D>& v) {
+  const revsph::WendlandQuintic<D> kernel(cloud.support);
+  std::vector<GradientMatrix<D>> h_matrix;
+  std::vector<GradientMatrix<D>> gradient;
+  revsph::shtc::velocity_gradients<D>(kernel, revsph::view_of<D>(cloud.x), revsph::view_of<D>(v),
+                                      cloud.mass, cloud.pairs, h_matrix, gradient);
+  return gradient;
+}
+
+template <class Dimension>
+class ShtcVelocityGradient : public ::testing::Test {};
+using Dimensions = ::testing::Types<std::integral_constant<int, 2>, std::integral_constant<int, 3>>;
+TYPED_TEST_SUITE(ShtcVelocityGradient, Dimensions);
+
+TYPED_TEST(ShtcVelocityGradient, IsExactForALinearField) {
+  constexpr int D = TypeParam::value;
+  const Cloud<D> cloud = jittered_lattice<D>(D == 2 ? 30 : 10, 5);
+  std::mt19937_64 rng(6);
+  std::normal_distribution<double> entry(0.0, 1.0);
+  GradientMatrix<D> exact;
+  for (int r = 0; r < D; ++r) {
+    for (int c = 0; c < D; ++c) {
+      exact(r, c) = entry(rng);
+    }
+  }
+  const auto gradient = gradients_of<D>(cloud, linear_velocity<D>(cloud, exact));
+  double worst = 0.0;
+  for (const auto& l : gradient) {
+    worst = std::max(worst, (l - exact).norm() / exact.norm());
+  }
+  EXPECT_LT(worst, 1e-12) << "Statement 2: least squares reproduce a linear field exactly";
+}
+
+TYPED_TEST(ShtcVelocityGradient, IsOddInTheVelocitiesBitForBit) {
+  constexpr int D = TypeParam::value;
+  const Cloud<D> cloud = jittered_lattice<D>(D == 2 ? 20 : 8, 7);
+  std::mt19937_64 rng(8);
+  std::normal_distribution<double> speed(0.0, 1.0);
+  CoordinateArrays<D> v;
+  CoordinateArrays<D> reversed;
+  for (int k = 0; k < D; ++k) {
+    for (std::size_t a = 0; a < cloud.x[0].size(); ++a) {
+      v[k].push_back(speed(rng));
+      reversed[k].push_back(-v[k].back());
+    }
+  }
+  const auto forward = gradients_of<D>(cloud, v);
+  const auto backward = gradients_of<D>(cloud, reversed);
+  for (std::size_t a = 0; a < forward.size(); ++a) {
+    for (int r = 0; r < D; ++r) {
+      for (int c = 0; c < D; ++c) {
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(backward[a](r, c)),
+                  std::bit_cast<std::uint64_t>(-forward[a](r, c)))
+            << "slot " << a;
+      }
+    }
+  }
+}
+
+TYPED_TEST(ShtcVelocityGradient, IsTheSameForAnyThreadCount) {
+  constexpr int D = TypeParam::value;
+  const Cloud<D> cloud = jittered_lattice<D>(D == 2 ? 40 : 12, 9);
+  std::mt19937_64 rng(10);
+  std::normal_distribution<double> speed(0.0, 1.0);
+  CoordinateArrays<D> v;
+  for (int k = 0; k < D; ++k) {
+    for (std::size_t a = 0; a < cloud.x[0].size(); ++a) {
+      v[k].push_back(speed(rng));
+    }
+  }
+  revsph::set_thread_count(1);
+  const auto one = gradients_of<D>(cloud, v);
+  revsph::set_thread_count(2);
+  const auto two = gradients_of<D>(cloud, v);
+  for (std::size_t a = 0; a < one.size(); ++a) {
+    for (int r = 0; r < D; ++r) {
+      for (int c = 0; c < D; ++c) {
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(one[a](r, c)),
+                  std::bit_cast<std::uint64_t>(two[a](r, c)))
+            << "slot " << a;
+      }
+    }
+  }
+}
+
+TEST(ShtcVelocityGradientSetup, IsZeroForAnIsolatedParticle) {
+  revsph::Box<2> box{{0.0, 0.0}, {10.0, 10.0}};
+  revsph::CellList<2> cells(box, 1.0, 1000);
+  CoordinateArrays<2> x{std::vector<double>{1.0, 8.0}, std::vector<double>{1.0, 8.0}};
+  cells.build(revsph::view_of<2>(x));
+  revsph::HalfPairList pairs;
+  pairs.build<2>(cells, revsph::view_of<2>(x), 1.0);
+  const revsph::WendlandQuintic<2> kernel(1.0);
+  std::vector<GradientMatrix<2>> h_matrix;
+  std::vector<GradientMatrix<2>> gradient;
+  const std::vector<double> mass{1.0, 1.0};
+  revsph::shtc::velocity_gradients<2>(kernel, revsph::view_of<2>(x), revsph::view_of<2>(x), mass,
+                                      pairs, h_matrix, gradient);
+  EXPECT_EQ(gradient[0], GradientMatrix<2>::Zero());
+  EXPECT_EQ(gradient[1], GradientMatrix<2>::Zero());
+}
+
+} // namespace
