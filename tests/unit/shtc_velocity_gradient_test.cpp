@@ -94,6 +94,36 @@ std::vector<GradientMatrix<D>> gradients_of(const Cloud<D>& cloud, const Coordin
   return gradient;
 }
 
+// Random velocities at the points of a cloud.
+template <int D>
+CoordinateArrays<D> random_velocity(const Cloud<D>& cloud, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> speed(0.0, 1.0);
+  CoordinateArrays<D> v;
+  for (int k = 0; k < D; ++k) {
+    for (std::size_t a = 0; a < cloud.x[0].size(); ++a) {
+      v[k].push_back(speed(rng));
+    }
+  }
+  return v;
+}
+
+// Every entry of `actual` has the bits of `sign` times the entry of `expected`.
+template <int D>
+void expect_same_bits(const std::vector<GradientMatrix<D>>& expected,
+                      const std::vector<GradientMatrix<D>>& actual, double sign) {
+  ASSERT_EQ(expected.size(), actual.size());
+  for (std::size_t a = 0; a < expected.size(); ++a) {
+    for (int r = 0; r < D; ++r) {
+      for (int c = 0; c < D; ++c) {
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(actual[a](r, c)),
+                  std::bit_cast<std::uint64_t>(sign * expected[a](r, c)))
+            << "slot " << a;
+      }
+    }
+  }
+}
+
 template <class Dimension>
 class ShtcVelocityGradient : public ::testing::Test {};
 using Dimensions = ::testing::Types<std::integral_constant<int, 2>, std::integral_constant<int, 3>>;
@@ -121,53 +151,24 @@ TYPED_TEST(ShtcVelocityGradient, IsExactForALinearField) {
 TYPED_TEST(ShtcVelocityGradient, IsOddInTheVelocitiesBitForBit) {
   constexpr int D = TypeParam::value;
   const Cloud<D> cloud = jittered_lattice<D>(D == 2 ? 20 : 8, 7);
-  std::mt19937_64 rng(8);
-  std::normal_distribution<double> speed(0.0, 1.0);
-  CoordinateArrays<D> v;
-  CoordinateArrays<D> reversed;
+  const CoordinateArrays<D> v = random_velocity<D>(cloud, 8);
+  CoordinateArrays<D> reversed = v;
   for (int k = 0; k < D; ++k) {
-    for (std::size_t a = 0; a < cloud.x[0].size(); ++a) {
-      v[k].push_back(speed(rng));
-      reversed[k].push_back(-v[k].back());
+    for (double& component : reversed[k]) {
+      component = -component;
     }
   }
-  const auto forward = gradients_of<D>(cloud, v);
-  const auto backward = gradients_of<D>(cloud, reversed);
-  for (std::size_t a = 0; a < forward.size(); ++a) {
-    for (int r = 0; r < D; ++r) {
-      for (int c = 0; c < D; ++c) {
-        ASSERT_EQ(std::bit_cast<std::uint64_t>(backward[a](r, c)),
-                  std::bit_cast<std::uint64_t>(-forward[a](r, c)))
-            << "slot " << a;
-      }
-    }
-  }
+  expect_same_bits<D>(gradients_of<D>(cloud, v), gradients_of<D>(cloud, reversed), -1.0);
 }
 
 TYPED_TEST(ShtcVelocityGradient, IsTheSameForAnyThreadCount) {
   constexpr int D = TypeParam::value;
   const Cloud<D> cloud = jittered_lattice<D>(D == 2 ? 40 : 12, 9);
-  std::mt19937_64 rng(10);
-  std::normal_distribution<double> speed(0.0, 1.0);
-  CoordinateArrays<D> v;
-  for (int k = 0; k < D; ++k) {
-    for (std::size_t a = 0; a < cloud.x[0].size(); ++a) {
-      v[k].push_back(speed(rng));
-    }
-  }
+  const CoordinateArrays<D> v = random_velocity<D>(cloud, 10);
   revsph::set_thread_count(1);
   const auto one = gradients_of<D>(cloud, v);
   revsph::set_thread_count(2);
-  const auto two = gradients_of<D>(cloud, v);
-  for (std::size_t a = 0; a < one.size(); ++a) {
-    for (int r = 0; r < D; ++r) {
-      for (int c = 0; c < D; ++c) {
-        ASSERT_EQ(std::bit_cast<std::uint64_t>(one[a](r, c)),
-                  std::bit_cast<std::uint64_t>(two[a](r, c)))
-            << "slot " << a;
-      }
-    }
-  }
+  expect_same_bits<D>(one, gradients_of<D>(cloud, v), 1.0);
 }
 
 TEST(ShtcVelocityGradientSetup, IsZeroForAnIsolatedParticle) {
