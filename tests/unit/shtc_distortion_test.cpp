@@ -7,6 +7,8 @@
 
 #include <unsupported/Eigen/MatrixFunctions>
 
+#include "dimensions.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -159,11 +161,9 @@ void expect_close_to_cayley(std::uint64_t seed) {
   EXPECT_LT(coarse / fine, 4.5);
 }
 
-// Every check in 2D and 3D.
 template <class Dimension>
-class ShtcDistortion : public ::testing::Test {};
-using Dimensions = ::testing::Types<std::integral_constant<int, 2>, std::integral_constant<int, 3>>;
-TYPED_TEST_SUITE(ShtcDistortion, Dimensions);
+class ShtcDistortion : public revsph::testing::DimensionTest<Dimension> {};
+TYPED_TEST_SUITE(ShtcDistortion, revsph::testing::Dimensions);
 
 TYPED_TEST(ShtcDistortion, EachUpdateIsUndoneBitForBit) {
   expect_single_steps_reverse_exactly<TypeParam::value>(10 + TypeParam::value);

@@ -4,6 +4,8 @@
 
 #include "models/shtc/elastic_energy.hpp"
 
+#include "dimensions.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -49,9 +51,8 @@ Tensor<D> random_rotation(std::mt19937_64& rng) {
 }
 
 template <class Dimension>
-class ShtcElasticEnergy : public ::testing::Test {};
-using Dimensions = ::testing::Types<std::integral_constant<int, 2>, std::integral_constant<int, 3>>;
-TYPED_TEST_SUITE(ShtcElasticEnergy, Dimensions);
+class ShtcElasticEnergy : public revsph::testing::DimensionTest<Dimension> {};
+TYPED_TEST_SUITE(ShtcElasticEnergy, revsph::testing::Dimensions);
 
 TYPED_TEST(ShtcElasticEnergy, VanishesAtRest) {
   constexpr int D = TypeParam::value;
@@ -62,47 +63,50 @@ TYPED_TEST(ShtcElasticEnergy, VanishesAtRest) {
   }
 }
 
-TYPED_TEST(ShtcElasticEnergy, DerivativeMatchesFiniteDifferences) {
-  constexpr int D = TypeParam::value;
-  std::mt19937_64 rng(3);
+// check(material, A, rng) for both shear energies and 20 random distortions each.
+template <int D, class Check>
+void for_random_distortions(std::uint64_t seed, Check&& check) {
+  std::mt19937_64 rng(seed);
   for (const ShearEnergy model : {ShearEnergy::dprz, ShearEnergy::neo_hookean}) {
-    const ElasticMaterial m = material(model);
     for (int trial = 0; trial < 20; ++trial) {
       const Tensor<D> a = random_distortion<D>(rng);
-      const Tensor<D> analytic = revsph::shtc::shear_energy_derivative<D>(m, a);
-      const double step = 1e-6;
-      for (int r = 0; r < D; ++r) {
-        for (int c = 0; c < D; ++c) {
-          Tensor<D> plus = a;
-          Tensor<D> minus = a;
-          plus(r, c) += step;
-          minus(r, c) -= step;
-          const double numeric =
-              (revsph::shtc::shear_energy<D>(m, plus) - revsph::shtc::shear_energy<D>(m, minus)) /
-              (2.0 * step);
-          // Central differences: O(step^2) truncation, O(eps * |eps_s| / step) rounding.
-          EXPECT_NEAR(analytic(r, c), numeric, 1e-5 * (1.0 + analytic.norm()))
-              << "entry " << r << c << (model == ShearEnergy::dprz ? " DPRZ" : " Neo-Hookean");
-        }
-      }
+      check(material(model), a, rng);
     }
   }
 }
 
+TYPED_TEST(ShtcElasticEnergy, DerivativeMatchesFiniteDifferences) {
+  constexpr int D = TypeParam::value;
+  for_random_distortions<D>(3, [](const ElasticMaterial& m, const Tensor<D>& a, auto&) {
+    const Tensor<D> analytic = revsph::shtc::shear_energy_derivative<D>(m, a);
+    const double step = 1e-6;
+    for (int r = 0; r < D; ++r) {
+      for (int c = 0; c < D; ++c) {
+        Tensor<D> plus = a;
+        Tensor<D> minus = a;
+        plus(r, c) += step;
+        minus(r, c) -= step;
+        const double numeric =
+            (revsph::shtc::shear_energy<D>(m, plus) - revsph::shtc::shear_energy<D>(m, minus)) /
+            (2.0 * step);
+        // Central differences: O(step^2) truncation, O(eps * |eps_s| / step) rounding.
+        EXPECT_NEAR(analytic(r, c), numeric, 1e-5 * (1.0 + analytic.norm()))
+            << "entry " << r << c
+            << (m.shear_energy == ShearEnergy::dprz ? " DPRZ" : " Neo-Hookean");
+      }
+    }
+  });
+}
+
 TYPED_TEST(ShtcElasticEnergy, IsFrameIndifferent) {
   constexpr int D = TypeParam::value;
-  std::mt19937_64 rng(4);
-  for (const ShearEnergy model : {ShearEnergy::dprz, ShearEnergy::neo_hookean}) {
-    const ElasticMaterial m = material(model);
-    for (int trial = 0; trial < 20; ++trial) {
-      const Tensor<D> a = random_distortion<D>(rng);
-      const Tensor<D> q = random_rotation<D>(rng);
-      // A = dX/dx: a rotation of the spatial frame, x' = Q x, gives A' = A Q^T.
-      const double original = revsph::shtc::shear_energy<D>(m, a);
-      const double rotated = revsph::shtc::shear_energy<D>(m, Tensor<D>(a * q.transpose()));
-      EXPECT_NEAR(rotated, original, 1e-10 * std::fabs(original));
-    }
-  }
+  for_random_distortions<D>(4, [](const ElasticMaterial& m, const Tensor<D>& a, auto& rng) {
+    const Tensor<D> q = random_rotation<D>(rng);
+    // A = dX/dx: a rotation of the spatial frame, x' = Q x, gives A' = A Q^T.
+    const double original = revsph::shtc::shear_energy<D>(m, a);
+    const double rotated = revsph::shtc::shear_energy<D>(m, Tensor<D>(a * q.transpose()));
+    EXPECT_NEAR(rotated, original, 1e-10 * std::fabs(original));
+  });
 }
 
 TEST(ShtcBulkEnergy, PressureIsRhoSquaredTimesTheDensityDerivative) {

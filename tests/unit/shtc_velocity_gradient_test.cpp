@@ -7,6 +7,8 @@
 #include "core/threads.hpp"
 #include "models/shtc/velocity_gradient.hpp"
 
+#include "dimensions.hpp"
+
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -125,9 +127,8 @@ void expect_same_bits(const std::vector<GradientMatrix<D>>& expected,
 }
 
 template <class Dimension>
-class ShtcVelocityGradient : public ::testing::Test {};
-using Dimensions = ::testing::Types<std::integral_constant<int, 2>, std::integral_constant<int, 3>>;
-TYPED_TEST_SUITE(ShtcVelocityGradient, Dimensions);
+class ShtcVelocityGradient : public revsph::testing::DimensionTest<Dimension> {};
+TYPED_TEST_SUITE(ShtcVelocityGradient, revsph::testing::Dimensions);
 
 TYPED_TEST(ShtcVelocityGradient, IsExactForALinearField) {
   constexpr int D = TypeParam::value;
