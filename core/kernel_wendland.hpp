@@ -47,6 +47,30 @@ public:
            inverse_support_;
   }
 
+  // Derivatives with respect to the kernel's length scale at fixed r (h d/dh, the same as
+  // S d/dS for the support S = 2h of paper 2), for the tensile penalty of SHTC-SPH (paper 2,
+  // eqs. 40–46). With w = alpha S^-D (1 - q)^4 (1 + 4q), q = r / S:
+  //   S dw/dS = alpha S^-D (1 - q)^3 (20 q^2 - D (1 - q)(1 + 4q))          (eqs. 43, 45)
+  double scale_derivative(double r) const {
+    const double q = r * inverse_support_;
+    if (q >= 1.0) {
+      return 0.0;
+    }
+    const double one_minus_q = 1.0 - q;
+    return normalisation_ * one_minus_q * one_minus_q * one_minus_q *
+           (20.0 * q * q - D * one_minus_q * (1.0 + 4.0 * q));
+  }
+  //   S d/dS (w'(r) / r) = -20 alpha S^-D-2 (1 - q)^2 ((D + 5) q - (D + 2))  (eqs. 44, 46)
+  double scale_derivative_of_derivative_over_r(double r) const {
+    const double q = r * inverse_support_;
+    if (q >= 1.0) {
+      return 0.0;
+    }
+    const double one_minus_q = 1.0 - q;
+    return -20.0 * normalisation_ * inverse_support_ * inverse_support_ * one_minus_q *
+           one_minus_q * ((D + 5) * q - (D + 2));
+  }
+
 private:
   double support_;
   double inverse_support_;

@@ -93,3 +93,59 @@ TEST(WendlandQuintic, DerivativeMatchesFiniteDifferences) {
 }
 
 } // namespace
+
+namespace {
+
+// h dw/dh and h d/dh (w'/r) at fixed r, against central differences in the support and against
+// the closed forms printed in paper 2 (eqs. 43–46, support 2h).
+template <int D>
+void expect_scale_derivatives(double h) {
+  const double support = 2.0 * h;
+  const WendlandQuintic<D> kernel(support);
+  const double step = 1e-6 * support;
+  const WendlandQuintic<D> wider(support + step);
+  const WendlandQuintic<D> narrower(support - step);
+  for (double r = 0.0; r < support; r += 0.037 * support) {
+    const double numeric_value = support * (wider.value(r) - narrower.value(r)) / (2.0 * step);
+    const double numeric_slope =
+        support * (wider.derivative_over_r(r) - narrower.derivative_over_r(r)) / (2.0 * step);
+    const double value_scale = std::fabs(kernel.value(0.0));
+    const double slope_scale = std::fabs(kernel.derivative_over_r(0.0));
+    EXPECT_NEAR(kernel.scale_derivative(r), numeric_value, 1e-7 * value_scale) << "r = " << r;
+    EXPECT_NEAR(kernel.scale_derivative_of_derivative_over_r(r), numeric_slope, 1e-7 * slope_scale)
+        << "r = " << r;
+
+    const double s = r / h;
+    const double u = 1.0 - r / (2.0 * h);
+    const double pi = std::numbers::pi;
+    if constexpr (D == 2) {
+      const double eq43 = 7.0 / (4.0 * pi * h * h) * u * u * u * (7.0 * s * s - 3.0 * s - 2.0);
+      EXPECT_NEAR(kernel.scale_derivative(r), eq43, 1e-12 * value_scale) << "eq. 43, r = " << r;
+      // Eq. (44) as printed is twice the derivative of eq. (43)'s kernel: the factor is 35/(8 pi)
+      // — found by this test; both the journal text and the preprint print 35/(4 pi).
+      const double eq44_corrected = -35.0 / (8.0 * pi * std::pow(h, 4)) * u * u * (7.0 * s - 8.0);
+      EXPECT_NEAR(kernel.scale_derivative_of_derivative_over_r(r), eq44_corrected,
+                  1e-12 * slope_scale)
+          << "eq. 44, r = " << r;
+    } else {
+      const double eq45 =
+          21.0 / (32.0 * pi * h * h * h) * u * u * u * (16.0 * s * s - 9.0 * s - 6.0);
+      const double eq46 = -105.0 / (16.0 * pi * std::pow(h, 5)) * u * u * (4.0 * s - 5.0);
+      EXPECT_NEAR(kernel.scale_derivative(r), eq45, 1e-12 * value_scale) << "eq. 45, r = " << r;
+      EXPECT_NEAR(kernel.scale_derivative_of_derivative_over_r(r), eq46, 1e-12 * slope_scale)
+          << "eq. 46, r = " << r;
+    }
+  }
+}
+
+TEST(WendlandQuintic, ScaleDerivativesIn2D) {
+  expect_scale_derivatives<2>(1.0);
+  expect_scale_derivatives<2>(0.013);
+}
+
+TEST(WendlandQuintic, ScaleDerivativesIn3D) {
+  expect_scale_derivatives<3>(1.0);
+  expect_scale_derivatives<3>(0.013);
+}
+
+} // namespace
