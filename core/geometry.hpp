@@ -29,6 +29,35 @@ CoordinateView<D> view_of(const CoordinateArrays<D>& arrays) {
   return view;
 }
 
+// |x_a - x_b|^2, summed over the axes in order (the same bits wherever it is used), for points
+// of two coordinate sets or of one.
+template <int D>
+double squared_distance(const CoordinateView<D>& a_points, std::size_t a,
+                        const CoordinateView<D>& b_points, std::size_t b) {
+  double sum = 0.0;
+  for (int k = 0; k < D; ++k) {
+    const double d = a_points[k][a] - b_points[k][b];
+    sum += d * d;
+  }
+  return sum;
+}
+template <int D>
+double squared_distance(const CoordinateView<D>& x, std::size_t a, std::size_t b) {
+  return squared_distance<D>(x, a, x, b);
+}
+
+// The same, also giving the separation d = x_a - x_b.
+template <int D>
+double squared_distance(const CoordinateView<D>& x, std::size_t a, std::size_t b,
+                        std::array<double, D>& d) {
+  double sum = 0.0;
+  for (int k = 0; k < D; ++k) {
+    d[k] = x[k][a] - x[k][b];
+    sum += d[k] * d[k];
+  }
+  return sum;
+}
+
 template <int D>
 struct Box {
   Vec<D> min{};

@@ -8,17 +8,6 @@ namespace revsph {
 namespace {
 
 template <int D>
-double squared_distance(const CoordinateView<D>& a_points, std::size_t a,
-                        const CoordinateView<D>& b_points, std::size_t b) {
-  double sum = 0.0;
-  for (int k = 0; k < D; ++k) {
-    const double d = a_points[k][a] - b_points[k][b];
-    sum += d * d;
-  }
-  return sum;
-}
-
-template <int D>
 Vec<D> point_of(const CoordinateView<D>& points, std::size_t i) {
   Vec<D> p{};
   for (int k = 0; k < D; ++k) {

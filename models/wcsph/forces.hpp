@@ -57,11 +57,7 @@ void compute_density(const WendlandQuintic<D>& kernel, const CoordinateView<D>& 
   pairs.for_each_slot([&](std::uint32_t a, std::span<const std::uint32_t> partners) {
     typename Arith::Sum own(sums.scale());
     for (const std::uint32_t b : partners) {
-      double r_squared = 0.0;
-      for (int k = 0; k < D; ++k) {
-        const double d = x[k][a] - x[k][b];
-        r_squared += d * d;
-      }
+      const double r_squared = squared_distance<D>(x, a, b);
       const double w = kernel.value(std::sqrt(r_squared));
       own.add(mass[b] * w);
       sums.add(b, mass[a] * w);
@@ -112,11 +108,7 @@ void compute_acceleration(const WendlandQuintic<D>& kernel, const CoordinateView
     const double pressure_a = pressure_over_density_squared[a];
     for (const std::uint32_t b : partners) {
       std::array<double, D> d{};
-      double r_squared = 0.0;
-      for (int k = 0; k < D; ++k) {
-        d[k] = x[k][a] - x[k][b];
-        r_squared += d[k] * d[k];
-      }
+      const double r_squared = squared_distance<D>(x, a, b, d);
       const double r = std::sqrt(r_squared);
       const double pressure_sum = pressure_a + pressure_over_density_squared[b];
       const double slope = kernel.derivative_over_r(r);
@@ -198,11 +190,7 @@ void shepard_filter(const WendlandQuintic<D>& kernel, const CoordinateView<D>& x
       if (!is_fluid(b)) {
         continue;
       }
-      double r_squared = 0.0;
-      for (int k = 0; k < D; ++k) {
-        const double d = x[k][a] - x[k][b];
-        r_squared += d * d;
-      }
+      const double r_squared = squared_distance<D>(x, a, b);
       const double w = kernel.value(std::sqrt(r_squared));
       const double to_a = mass[b] / density[b] * w;
       const double to_b = mass[a] / density[a] * w;

@@ -7,6 +7,7 @@
 #include "core/threads.hpp"
 #include "models/shtc/velocity_gradient.hpp"
 
+#include "cell_ordered_cloud.hpp"
 #include "dimensions.hpp"
 
 #include <gtest/gtest.h>
@@ -19,55 +20,8 @@ namespace {
 
 using revsph::CoordinateArrays;
 using revsph::shtc::GradientMatrix;
-
-template <int D>
-struct Cloud {
-  revsph::CellList<D> cells;
-  CoordinateArrays<D> x; // slot order
-  std::vector<double> mass;
-  revsph::HalfPairList pairs;
-  double support = 0.0;
-};
-
-// A jittered square (2D) or cubic (3D) lattice of spacing dr, in cell order with its pair list.
-template <int D>
-Cloud<D> jittered_lattice(int per_axis, std::uint64_t seed) {
-  const double dr = 0.1;
-  const double support = 3.0 * dr;
-  revsph::Box<D> box;
-  for (int k = 0; k < D; ++k) {
-    box.min[k] = -dr;
-    box.max[k] = (per_axis + 1) * dr;
-  }
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> jitter(-0.2 * dr, 0.2 * dr);
-  CoordinateArrays<D> points;
-  int total = 1;
-  for (int k = 0; k < D; ++k) {
-    total *= per_axis;
-  }
-  for (int i = 0; i < total; ++i) {
-    int rest = i;
-    for (int k = 0; k < D; ++k) {
-      points[k].push_back((rest % per_axis) * dr + jitter(rng));
-      rest /= per_axis;
-    }
-  }
-  Cloud<D> cloud{revsph::CellList<D>(box, support, 1 << 20), {}, {}, {}, support};
-  cloud.cells.build(revsph::view_of<D>(points));
-  const auto order = cloud.cells.sorted_points();
-  for (int k = 0; k < D; ++k) {
-    for (const std::uint32_t p : order) {
-      cloud.x[k].push_back(points[k][p]);
-    }
-  }
-  std::uniform_real_distribution<double> mass(0.8, 1.2); // unequal masses: a and b differ
-  for (int i = 0; i < total; ++i) {
-    cloud.mass.push_back(mass(rng));
-  }
-  cloud.pairs.template build<D>(cloud.cells, revsph::view_of<D>(cloud.x), support);
-  return cloud;
-}
+using revsph::testing::Cloud;
+using revsph::testing::jittered_lattice;
 
 // v = L0 x + c at every point.
 template <int D>

@@ -1,0 +1,80 @@
+#pragma once
+// The tensile penalty of SHTC-SPH (paper 2, eqs. 39–42): an energy that keeps d rho / d h small,
+//   lambda_a = sum_b m_b h dw_ab/dh + C_lambda,a                    (40, the sum includes b = a)
+//   P_h      = 1/2 sum_a m_a cp^2 (lambda_a / rho0)^2               (39)
+//   a_a      = -sum_b m_b cp^2 (lambda_a + lambda_b) / rho0^2 (h/r) d2w/(dr dh) x_ab   (41, 42)
+// over the pairs of a HalfPairList (arrays indexed by slot). The acceleration is exactly
+// -grad_a P_h / m_a (tests/unit/shtc_tensile_penalty_test.cpp checks it against finite
+// differences of P_h). Sums in double, in the pair list's order (the same for any thread count).
+
+#include "core/geometry.hpp"
+#include "core/kernel_wendland.hpp"
+#include "core/pair_list.hpp"
+
+#include <cmath>
+#include <span>
+#include <vector>
+
+namespace revsph::shtc {
+
+struct PenaltyParameters {
+  double penalty_speed = 0.0; // cp
+  double rest_density = 1.0;  // rho0
+};
+
+template <int D>
+void penalty_lambda(const WendlandQuintic<D>& kernel, const CoordinateView<D>& x,
+                    std::span<const double> mass, std::span<const double> lambda_constant,
+                    const HalfPairList& pairs, std::vector<double>& lambda) {
+  const std::size_t n = mass.size();
+  const double self_term = kernel.scale_derivative(0.0);
+  lambda.resize(n);
+  for (std::size_t a = 0; a < n; ++a) {
+    lambda[a] = mass[a] * self_term + lambda_constant[a];
+  }
+  pairs.for_each_slot([&](std::uint32_t a, std::span<const std::uint32_t> partners) {
+    for (const std::uint32_t b : partners) {
+      const double r_squared = squared_distance<D>(x, a, b);
+      const double g = kernel.scale_derivative(std::sqrt(r_squared));
+      lambda[a] += mass[b] * g;
+      lambda[b] += mass[a] * g;
+    }
+  });
+}
+
+template <int D>
+double penalty_energy(const PenaltyParameters& parameters, std::span<const double> mass,
+                      std::span<const double> lambda) {
+  double energy = 0.0;
+  for (std::size_t a = 0; a < mass.size(); ++a) {
+    const double relative = lambda[a] / parameters.rest_density;
+    energy +=
+        0.5 * mass[a] * parameters.penalty_speed * parameters.penalty_speed * relative * relative;
+  }
+  return energy;
+}
+
+// Adds the penalty acceleration (eq. 42, second line) to `acceleration`.
+template <int D>
+void add_penalty_acceleration(const WendlandQuintic<D>& kernel, const PenaltyParameters& parameters,
+                              const CoordinateView<D>& x, std::span<const double> mass,
+                              std::span<const double> lambda, const HalfPairList& pairs,
+                              CoordinateArrays<D>& acceleration) {
+  const double strength = parameters.penalty_speed * parameters.penalty_speed /
+                          (parameters.rest_density * parameters.rest_density);
+  pairs.for_each_slot([&](std::uint32_t a, std::span<const std::uint32_t> partners) {
+    for (const std::uint32_t b : partners) {
+      std::array<double, D> d{};
+      const double r_squared = squared_distance<D>(x, a, b, d);
+      // Common factor of the pair; a gets -m_b factor x_ab, b gets -m_a factor x_ba.
+      const double factor = strength * (lambda[a] + lambda[b]) *
+                            kernel.scale_derivative_of_derivative_over_r(std::sqrt(r_squared));
+      for (int k = 0; k < D; ++k) {
+        acceleration[k][a] -= mass[b] * factor * d[k];
+        acceleration[k][b] += mass[a] * factor * d[k];
+      }
+    }
+  });
+}
+
+} // namespace revsph::shtc
