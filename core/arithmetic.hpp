@@ -80,9 +80,6 @@ struct FloatArithmetic {
         totals_[i] = 0.0;
       }
     }
-    std::size_t size() const {
-      return totals_.size();
-    }
     void add(std::size_t i, double term) {
       totals_[i] += term;
     }

@@ -48,14 +48,20 @@ double squared_distance(const CoordinateView<D>& x, std::size_t a, std::size_t b
 
 // The same, also giving the separation d = x_a - x_b.
 template <int D>
-double squared_distance(const CoordinateView<D>& x, std::size_t a, std::size_t b,
+double squared_distance(const CoordinateView<D>& a_points, std::size_t a,
+                        const CoordinateView<D>& b_points, std::size_t b,
                         std::array<double, D>& d) {
   double sum = 0.0;
   for (int k = 0; k < D; ++k) {
-    d[k] = x[k][a] - x[k][b];
+    d[k] = a_points[k][a] - b_points[k][b];
     sum += d[k] * d[k];
   }
   return sum;
+}
+template <int D>
+double squared_distance(const CoordinateView<D>& x, std::size_t a, std::size_t b,
+                        std::array<double, D>& d) {
+  return squared_distance<D>(x, a, x, b, d);
 }
 
 template <int D>

@@ -58,7 +58,7 @@ int forward_rows(std::span<const std::uint32_t> cell_start, const std::array<int
 std::size_t HalfPairList::pair_count() const {
   std::size_t total = 0;
   for (const Stripe& stripe : stripes_) {
-    total += stripe.used;
+    total += stripe.offsets.back();
   }
   return total;
 }
@@ -76,7 +76,6 @@ void HalfPairList::build(const CellList<D>& cells, const CoordinateView<D>& x, d
   }
   const int layers = per_axis[D - 1];
   const double radius_squared = radius * radius;
-  slot_count_ = x[0].size();
   stripes_.resize(static_cast<std::size_t>(layers));
 
 #pragma omp parallel for schedule(dynamic, 1)
@@ -88,8 +87,8 @@ void HalfPairList::build(const CellList<D>& cells, const CoordinateView<D>& x, d
     stripe.slot_count = cell_start[end_cell] - stripe.first_slot;
     stripe.offsets.resize(stripe.slot_count + 1);
     stripe.offsets[0] = 0;
-    // Counted in a local: neighbouring stripes' counters share a cache line, and two threads
-    // updating them per slot would serialise on it.
+    // Counted in a local, not in the stripe: neighbouring stripes share cache lines, and two
+    // threads updating them per slot would serialise on them.
     std::size_t used = 0;
 
     for (std::size_t c = first_cell; c < end_cell; ++c) {
@@ -148,7 +147,6 @@ void HalfPairList::build(const CellList<D>& cells, const CoordinateView<D>& x, d
         stripe.offsets[a - stripe.first_slot + 1] = static_cast<std::uint32_t>(used);
       }
     }
-    stripe.used = used;
   }
 }
 

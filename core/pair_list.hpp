@@ -30,11 +30,9 @@ public:
     std::uint32_t slot_count = 0;
     // Partners of slot first_slot + i: partners[offsets[i], offsets[i + 1]), ascending.
     std::vector<std::uint32_t> offsets;
-    std::vector<std::uint32_t> partners; // capacity kept between builds; `used` entries valid
-    std::size_t used = 0;
+    std::vector<std::uint32_t> partners; // capacity kept between builds; offsets.back() valid
   };
 
-  std::size_t slot_count() const { return slot_count_; }
   std::size_t pair_count() const;
   const std::vector<Stripe>& stripes() const { return stripes_; }
 
@@ -50,7 +48,6 @@ public:
   void build(const CellList<D>& cells, const CoordinateView<D>& slot_coordinates, double radius);
 
 private:
-  std::size_t slot_count_ = 0;
   std::vector<Stripe> stripes_;
 };
 

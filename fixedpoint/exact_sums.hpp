@@ -28,9 +28,6 @@ public:
       valid_[i] = 1;
     }
   }
-  std::size_t size() const {
-    return totals_.size();
-  }
 
   void add(std::size_t i, double term) {
     std::int64_t raw = 0;

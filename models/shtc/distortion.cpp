@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <numbers>
-#include <vector>
 
 namespace revsph::shtc {
 
@@ -80,15 +79,25 @@ struct Factor {
   double parameter; // odd in h L
 };
 
-// exp(M) for M = -dev(h L), split into plane generators: the antisymmetric part into rotations
-// (exp of [[0, w], [-w, 0]] is the rotation by -w), the symmetric off-diagonal part into boosts,
-// the traceless diagonal into stretches of the pairs (0, 1) and, in 3D, (1, 2).
+// Rotations and boosts, one per plane, and D - 1 stretches: 3 factors in 2D, 8 in 3D.
 template <int D>
-std::vector<Factor> factors_of(const Matrix<D>& h_l) {
+constexpr std::size_t factor_count = D*(D - 1) + (D - 1);
+
+// tr(h L), summed in a fixed order so that -h L gives exactly the negative.
+template <int D>
+double trace_of(const Matrix<D>& h_l) {
   double trace = 0.0;
   for (int k = 0; k < D; ++k) {
     trace += h_l(k, k);
   }
+  return trace;
+}
+
+// exp(M) for M = -dev(h L), split into plane generators: the antisymmetric part into rotations
+// (exp of [[0, w], [-w, 0]] is the rotation by -w), the symmetric off-diagonal part into boosts,
+// the traceless diagonal into stretches of the pairs (0, 1) and, in 3D, (1, 2).
+template <int D>
+std::array<Factor, factor_count<D>> factors_of(const Matrix<D>& h_l, double trace) {
   const double trace_part = trace / D;
   Matrix<D> m;
   for (int r = 0; r < D; ++r) {
@@ -96,20 +105,22 @@ std::vector<Factor> factors_of(const Matrix<D>& h_l) {
       m(r, c) = -(h_l(r, c) - (r == c ? trace_part : 0.0));
     }
   }
-  std::vector<Factor> factors;
+  // No allocation: this runs for every particle in every step.
+  std::array<Factor, factor_count<D>> factors{};
+  std::size_t next = 0;
   for (int i = 0; i < D; ++i) {
     for (int j = i + 1; j < D; ++j) {
-      factors.push_back({Generator::rotation, i, j, -(0.5 * (m(i, j) - m(j, i)))});
+      factors[next++] = {Generator::rotation, i, j, -(0.5 * (m(i, j) - m(j, i)))};
     }
   }
   for (int i = 0; i < D; ++i) {
     for (int j = i + 1; j < D; ++j) {
-      factors.push_back({Generator::boost, i, j, 0.5 * (m(i, j) + m(j, i))});
+      factors[next++] = {Generator::boost, i, j, 0.5 * (m(i, j) + m(j, i))};
     }
   }
-  factors.push_back({Generator::stretch, 0, 1, m(0, 0)});
+  factors[next++] = {Generator::stretch, 0, 1, m(0, 0)};
   if constexpr (D == 3) {
-    factors.push_back({Generator::stretch, 1, 2, -m(2, 2)});
+    factors[next++] = {Generator::stretch, 1, 2, -m(2, 2)};
   }
   return factors;
 }
@@ -168,10 +179,7 @@ Matrix<D> to_matrix(const ExactDistortion<D>& a, const DistortionScales& scales)
 template <int D>
 bool try_update_distortion(ExactDistortion<D>& a, const Matrix<D>& h_l,
                            const DistortionScales& scales) {
-  double trace = 0.0;
-  for (int k = 0; k < D; ++k) {
-    trace += h_l(k, k);
-  }
+  const double trace = trace_of<D>(h_l);
   // d(log det A)/dt = -tr L (eq. 47): exact and additive, hence exactly invertible.
   std::int64_t log_det_change = 0;
   if (!fixedpoint::try_to_fixed(-trace, scales.log_det, log_det_change) ||
@@ -179,7 +187,7 @@ bool try_update_distortion(ExactDistortion<D>& a, const Matrix<D>& h_l,
     return false;
   }
   // Strang: half of every factor but the last, the last whole, the halves again in reverse.
-  const std::vector<Factor> factors = factors_of<D>(h_l);
+  const auto factors = factors_of<D>(h_l, trace);
   ColumnLifts<D> lifts(a.unimodular);
   const std::size_t last = factors.size() - 1;
   for (std::size_t k = 0; k < last; ++k) {

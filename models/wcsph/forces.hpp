@@ -128,11 +128,7 @@ void compute_acceleration(const WendlandQuintic<D>& kernel, const CoordinateView
     if (carrier_of_slot[a] < fluid_count) {
       for (const std::uint32_t w : wall_neighbours.of(a)) {
         std::array<double, D> d{};
-        double r_squared = 0.0;
-        for (int k = 0; k < D; ++k) {
-          d[k] = x[k][a] - wall_x[k][w];
-          r_squared += d[k] * d[k];
-        }
+        const double r_squared = squared_distance<D>(x, a, wall_x, w, d);
         const double factor = wall.acceleration_over_distance(r_squared);
         for (int k = 0; k < D; ++k) {
           own[k].add(factor * d[k]);

@@ -298,6 +298,8 @@ typename Model<D, Arith>::ParticleEnergies Model<D, Arith>::particle_energies() 
   }
   // eq. (7), attributed to the fluid particle; the wall lists are per slot.
   const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  const CoordinateView<D> x = view_of<D>(slot_position_);
+  const CoordinateView<D> wall_x = view_of<D>(wall_position_);
   for (std::size_t s = 0; s < carrier_of_slot.size(); ++s) {
     const std::uint32_t a = carrier_of_slot[s];
     if (a >= n) {
@@ -305,12 +307,7 @@ typename Model<D, Arith>::ParticleEnergies Model<D, Arith>::particle_energies() 
     }
     double wall_energy = 0.0;
     for (const std::uint32_t w : wall_neighbours_.of(s)) {
-      double r_squared = 0.0;
-      for (int k = 0; k < D; ++k) {
-        const double d = real_position(k, a) - wall_position_[k][w];
-        r_squared += d * d;
-      }
-      wall_energy += mass_[a] * wall.energy_per_fluid_mass(r_squared);
+      wall_energy += mass_[a] * wall.energy_per_fluid_mass(squared_distance<D>(x, s, wall_x, w));
     }
     energies.wall[a] = wall_energy;
   }

@@ -91,7 +91,7 @@ private:
   WendlandQuintic<D> kernel_;
   std::optional<WendlandQuintic<D>> anti_clump_kernel_;
 
-  // Constant parts (wall and dummy positions, masses, density constants), converted once.
+  // Constant parts (wall and dummy positions, masses), converted once.
   bool constants_valid_ = false;
   CoordinateArrays<D> wall_position_;
   std::vector<double> mass_; // carriers: fluid then dummies

@@ -12,6 +12,18 @@
 
 namespace revsph::testing {
 
+// The points, which `cells` was built from, in the cell list's slot order.
+template <int D>
+CoordinateArrays<D> in_cell_order(const CellList<D>& cells, const CoordinateArrays<D>& points) {
+  CoordinateArrays<D> slot_points;
+  for (int k = 0; k < D; ++k) {
+    for (const std::uint32_t p : cells.sorted_points()) {
+      slot_points[k].push_back(points[k][p]);
+    }
+  }
+  return slot_points;
+}
+
 template <int D>
 struct Cloud {
   CellList<D> cells;
@@ -47,12 +59,7 @@ Cloud<D> jittered_lattice(int per_axis, std::uint64_t seed) {
   }
   Cloud<D> cloud{CellList<D>(box, support, 1 << 20), {}, {}, {}, support};
   cloud.cells.build(view_of<D>(points));
-  const auto order = cloud.cells.sorted_points();
-  for (int k = 0; k < D; ++k) {
-    for (const std::uint32_t p : order) {
-      cloud.x[k].push_back(points[k][p]);
-    }
-  }
+  cloud.x = in_cell_order<D>(cloud.cells, points);
   std::uniform_real_distribution<double> mass(0.8, 1.2); // unequal masses: a and b differ
   for (int i = 0; i < total; ++i) {
     cloud.mass.push_back(mass(rng));

@@ -8,6 +8,8 @@
 #include "core/threads.hpp"
 #include "fixedpoint/exact_sums.hpp"
 
+#include "cell_ordered_cloud.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -50,13 +52,7 @@ CellOrdered<D> cell_ordered_points(std::size_t n, const Box<D>& box, double cell
   }
   CellOrdered<D> result{CellList<D>(box, cell_size, 1 << 22), {}};
   result.cells.build(revsph::view_of<D>(points));
-  const auto order = result.cells.sorted_points();
-  for (int k = 0; k < D; ++k) {
-    result.slot_points[k].resize(n);
-    for (std::size_t s = 0; s < n; ++s) {
-      result.slot_points[k][s] = points[k][order[s]];
-    }
-  }
+  result.slot_points = revsph::testing::in_cell_order<D>(result.cells, points);
   return result;
 }
 
