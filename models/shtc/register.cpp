@@ -1,10 +1,13 @@
 #include "core/model_registry.hpp"
+#include "models/shtc/setup.hpp"
 
 namespace revsph {
 
-// SHTC-SPH (issue 6) is being built: so far the exactly invertible distortion update
-// (distortion.hpp). The model registers itself here once its time step and cases exist; until
-// then `revsph cases` does not list it.
-void register_model_shtc(ModelRegistry&) {}
+void register_model_shtc(ModelRegistry& registry) {
+  registry.add({"shtc",
+                "SHTC-SPH for elastic solids and viscous fluids with a bit-reversible distortion "
+                "step (Kincl, Peshkov, Pavelka, Klika 2023)",
+                &shtc::create});
+}
 
 } // namespace revsph

@@ -1,6 +1,6 @@
 #pragma once
 // The tensile penalty of SHTC-SPH (paper 2, eqs. 39–42): an energy that keeps d rho / d h small,
-//   lambda_a = sum_b m_b h dw_ab/dh + C_lambda,a                    (40, the sum includes b = a)
+//   lambda_a = sum_b m_b h dw_ab/dh + C_lambda,a   (40, the sum includes b = a; kernel_sums.hpp)
 //   P_h      = 1/2 sum_a m_a cp^2 (lambda_a / rho0)^2               (39)
 //   a_a      = -sum_b m_b cp^2 (lambda_a + lambda_b) / rho0^2 (h/r) d2w/(dr dh) x_ab   (41, 42)
 // over the pairs of a HalfPairList (arrays indexed by slot). The acceleration is exactly
@@ -23,26 +23,6 @@ struct PenaltyParameters {
 };
 
 template <int D>
-void penalty_lambda(const WendlandQuintic<D>& kernel, const CoordinateView<D>& x,
-                    std::span<const double> mass, std::span<const double> lambda_constant,
-                    const HalfPairList& pairs, std::vector<double>& lambda) {
-  const std::size_t n = mass.size();
-  const double self_term = kernel.scale_derivative(0.0);
-  lambda.resize(n);
-  for (std::size_t a = 0; a < n; ++a) {
-    lambda[a] = mass[a] * self_term + lambda_constant[a];
-  }
-  pairs.for_each_slot([&](std::uint32_t a, std::span<const std::uint32_t> partners) {
-    for (const std::uint32_t b : partners) {
-      const double r_squared = squared_distance<D>(x, a, b);
-      const double g = kernel.scale_derivative(std::sqrt(r_squared));
-      lambda[a] += mass[b] * g;
-      lambda[b] += mass[a] * g;
-    }
-  });
-}
-
-template <int D>
 double penalty_energy(const PenaltyParameters& parameters, std::span<const double> mass,
                       std::span<const double> lambda) {
   double energy = 0.0;
@@ -54,21 +34,34 @@ double penalty_energy(const PenaltyParameters& parameters, std::span<const doubl
   return energy;
 }
 
-// Adds the penalty acceleration (eq. 42, second line) to `acceleration`.
+// The pair factor F of the penalty acceleration: a_a -= m_b F x_ab, a_b += m_a F x_ab.
+template <int D>
+double penalty_pair_factor(const WendlandQuintic<D>& kernel, double strength, double lambda_a,
+                           double lambda_b, double r) {
+  return strength * (lambda_a + lambda_b) * kernel.scale_derivative_of_derivative_over_r(r);
+}
+
+// cp^2 / rho0^2, the strength of the penalty force.
+inline double penalty_strength(const PenaltyParameters& parameters) {
+  return parameters.penalty_speed * parameters.penalty_speed /
+         (parameters.rest_density * parameters.rest_density);
+}
+
+// Adds the penalty acceleration (eq. 42, second line) to `acceleration` (forces.hpp adds it with
+// the stress force in one pass; this one alone is tested against -grad P_h).
 template <int D>
 void add_penalty_acceleration(const WendlandQuintic<D>& kernel, const PenaltyParameters& parameters,
                               const CoordinateView<D>& x, std::span<const double> mass,
                               std::span<const double> lambda, const HalfPairList& pairs,
                               CoordinateArrays<D>& acceleration) {
-  const double strength = parameters.penalty_speed * parameters.penalty_speed /
-                          (parameters.rest_density * parameters.rest_density);
+  const double strength = penalty_strength(parameters);
   pairs.for_each_slot([&](std::uint32_t a, std::span<const std::uint32_t> partners) {
     for (const std::uint32_t b : partners) {
       std::array<double, D> d{};
       const double r_squared = squared_distance<D>(x, a, b, d);
       // Common factor of the pair; a gets -m_b factor x_ab, b gets -m_a factor x_ba.
-      const double factor = strength * (lambda[a] + lambda[b]) *
-                            kernel.scale_derivative_of_derivative_over_r(std::sqrt(r_squared));
+      const double factor =
+          penalty_pair_factor<D>(kernel, strength, lambda[a], lambda[b], std::sqrt(r_squared));
       for (int k = 0; k < D; ++k) {
         acceleration[k][a] -= mass[b] * factor * d[k];
         acceleration[k][b] += mass[a] * factor * d[k];

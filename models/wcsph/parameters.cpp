@@ -1,42 +1,11 @@
 #include "models/wcsph/parameters.hpp"
 
+#include "core/case_values.hpp"
 #include "core/particle_blocks.hpp"
 
 #include <cmath>
-#include <sstream>
 
 namespace revsph::wcsph {
-
-namespace {
-
-// A quantity derived from valid inputs can still overflow to infinity or underflow to zero
-// (dr = 1e300 with support_radius_over_dr = 1e10, say): refused with the key that sets it.
-void require_positive_finite(const CaseFile& case_file, const char* key, const char* what,
-                             double value) {
-  if (!(value > 0.0) || !std::isfinite(value)) {
-    std::ostringstream reason;
-    reason << what << " is " << value << ": it must be positive and finite";
-    case_file.fail(key, reason.str());
-  }
-}
-
-fixedpoint::Scale scale_or(const CaseFile& case_file, const char* key, double magnitude,
-                           int fraction_bits) {
-  if (case_file.has(key)) {
-    const std::int64_t exponent = case_file.integer(key);
-    if (exponent < -1000 || exponent > 1000) {
-      case_file.fail(key, "a power-of-two exponent between -1000 and 1000");
-    }
-    return fixedpoint::Scale(static_cast<int>(exponent));
-  }
-  require_positive_finite(case_file, key,
-                          "the magnitude its default scale must cover (from [physics] and "
-                          "[discretisation])",
-                          magnitude);
-  return fixedpoint::Scale::covering(magnitude, fraction_bits);
-}
-
-} // namespace
 
 template <int D>
 Parameters<D> read_parameters(const CaseFile& case_file) {

@@ -9,6 +9,7 @@
 
 #include "cell_ordered_cloud.hpp"
 #include "dimensions.hpp"
+#include "shtc_sums.hpp"
 
 #include <gtest/gtest.h>
 
@@ -43,11 +44,7 @@ CoordinateArrays<D> linear_velocity(const Cloud<D>& cloud, const GradientMatrix<
 template <int D>
 std::vector<GradientMatrix<D>> gradients_of(const Cloud<D>& cloud, const CoordinateArrays<D>& v) {
   const revsph::WendlandQuintic<D> kernel(cloud.support);
-  std::vector<GradientMatrix<D>> h_matrix;
-  std::vector<GradientMatrix<D>> gradient;
-  revsph::shtc::velocity_gradients<D>(kernel, revsph::view_of<D>(cloud.x), revsph::view_of<D>(v),
-                                      cloud.mass, cloud.pairs, h_matrix, gradient);
-  return gradient;
+  return revsph::testing::velocity_gradients_of<D>(kernel, cloud.x, v, cloud.mass, cloud.pairs);
 }
 
 // Random velocities at the points of a cloud.
@@ -134,11 +131,8 @@ TEST(ShtcVelocityGradientSetup, IsZeroForAnIsolatedParticle) {
   revsph::HalfPairList pairs;
   pairs.build<2>(cells, revsph::view_of<2>(x), 1.0);
   const revsph::WendlandQuintic<2> kernel(1.0);
-  std::vector<GradientMatrix<2>> h_matrix;
-  std::vector<GradientMatrix<2>> gradient;
   const std::vector<double> mass{1.0, 1.0};
-  revsph::shtc::velocity_gradients<2>(kernel, revsph::view_of<2>(x), revsph::view_of<2>(x), mass,
-                                      pairs, h_matrix, gradient);
+  const auto gradient = revsph::testing::velocity_gradients_of<2>(kernel, x, x, mass, pairs);
   EXPECT_EQ(gradient[0], GradientMatrix<2>::Zero());
   EXPECT_EQ(gradient[1], GradientMatrix<2>::Zero());
 }

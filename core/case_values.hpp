@@ -1,0 +1,19 @@
+#pragma once
+// Checks and defaults that every model's case reader needs beyond core/case_file.hpp.
+
+#include "core/case_file.hpp"
+#include "fixedpoint/scale.hpp"
+
+namespace revsph {
+
+// A quantity derived from valid inputs can still overflow to infinity or underflow to zero
+// (dr = 1e300 with support_radius_over_dr = 1e10, say): refused with the key that sets it.
+void require_positive_finite(const CaseFile& case_file, const char* key, const char* what,
+                             double value);
+
+// The fixed-point scale given as a power-of-two exponent under `key`, or by default the scale
+// that covers `magnitude` with `fraction_bits` bits below it.
+fixedpoint::Scale scale_or(const CaseFile& case_file, const char* key, double magnitude,
+                           int fraction_bits);
+
+} // namespace revsph

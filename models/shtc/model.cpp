@@ -1,0 +1,417 @@
+#include "models/shtc/model.hpp"
+
+#include "core/verlet.hpp"
+#include "models/shtc/elastic_energy.hpp"
+#include "models/shtc/forces.hpp"
+#include "models/shtc/tensile_penalty.hpp"
+#include "models/shtc/velocity_gradient.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace revsph::shtc {
+
+namespace {
+
+// At most a few cells per particle, so a large empty domain cannot exhaust memory.
+std::size_t cell_budget(std::size_t particles) {
+  return 4 * particles + 4096;
+}
+
+constexpr int mass_fraction_bits = 52; // masses are constants; their double view stays exact
+
+} // namespace
+
+template <int D>
+Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state,
+                std::optional<std::size_t> probe_particle)
+    : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
+      probe_particle_(probe_particle), kernel_(parameters_.support_radius()),
+      carrier_cells_(parameters_.domain,
+                     parameters_.support_radius() * parameters_.cell_size_factor,
+                     cell_budget(state_.position.count() + state_.boundary_position.count())) {}
+
+template <int D>
+std::span<const Substep<Model<D>>> Model<D>::palindrome() {
+  static constexpr Substep<Model> sequence[] = {
+      {"kick", 0.5, &Model::kick_substep},
+      {"drift", 0.5, &Model::drift_substep},
+      {"distortion", 1.0, &Model::distortion_substep},
+      {"drift", 0.5, &Model::drift_substep},
+      {"kick", 0.5, &Model::kick_substep},
+  };
+  return sequence;
+}
+
+template <int D>
+double Model<D>::real_position(int axis, std::size_t a) const {
+  return a < material_count()
+             ? fixedpoint::to_real(state_.position.at(axis, a), state_.position.info().scale)
+             : fixedpoint::to_real(state_.boundary_position.at(axis, a - material_count()),
+                                   state_.boundary_position.info().scale);
+}
+
+template <int D>
+ExactDistortion<D> Model<D>::distortion_of(std::size_t a) {
+  const ParticleSetState<D>& set = set_of(a);
+  const std::size_t i = index_in_set(a);
+  ExactDistortion<D> distortion;
+  distortion.log_det = set.log_det.at(0, i);
+  for (int c = 0; c < D * D; ++c) {
+    distortion.unimodular[c] = set.unimodular.at(c, i);
+  }
+  return distortion;
+}
+
+template <int D>
+void Model<D>::initialise_constants() {
+  const std::size_t n = carrier_count();
+  // Unit masses and no constants: the density sums are then sum_b w_ab.
+  mass_.assign(n, 1.0);
+  density_constant_.assign(n, 0.0);
+  lambda_constant_.assign(n, 0.0);
+  constants_valid_ = true;
+  geometry_valid_ = false;
+  update_geometry();
+  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  std::vector<double> mass(n);
+  for (std::size_t s = 0; s < n; ++s) {
+    mass[carrier_of_slot[s]] = parameters_.material.rest_density / sums_.density[s];
+  }
+  const double largest = *std::max_element(mass.begin(), mass.end());
+  const fixedpoint::Scale mass_scale = fixedpoint::Scale::covering(largest, mass_fraction_bits);
+  for (ParticleSetState<D>* set : {&state_.material, &state_.boundary}) {
+    set->mass.info().scale = mass_scale;
+    set->density_constant.info().scale = parameters_.density_scale;
+    set->lambda_constant.info().scale = parameters_.density_scale;
+    std::fill(set->density_constant.all().begin(), set->density_constant.all().end(), 0);
+    std::fill(set->lambda_constant.all().begin(), set->lambda_constant.all().end(), 0);
+  }
+  for (std::size_t a = 0; a < n; ++a) {
+    fixedpoint::try_to_fixed(mass[a], mass_scale, set_of(a).mass.at(0, index_in_set(a)));
+  }
+  // The sums with the stored masses give the constants.
+  invalidate_derived();
+  update_geometry();
+  for (std::size_t s = 0; s < n; ++s) {
+    const std::size_t a = carrier_of_slot[s];
+    ParticleSetState<D>& set = set_of(a);
+    const std::size_t i = index_in_set(a);
+    if (!fixedpoint::try_to_fixed(parameters_.material.rest_density - sums_.density[s],
+                                  parameters_.density_scale, set.density_constant.at(0, i)) ||
+        !fixedpoint::try_to_fixed(-sums_.lambda[s], parameters_.density_scale,
+                                  set.lambda_constant.at(0, i))) {
+      throw SimulationFault({set_name(a), i, "density_constant", "does not fit its scale"}, 0);
+    }
+  }
+  invalidate_derived();
+}
+
+template <int D>
+void Model<D>::kick(double dt) {
+  update_force();
+  FaultRecorder faults;
+  add_rate<FixedArithmetic, D>(state_.velocity, acceleration_, dt, faults);
+}
+
+template <int D>
+void Model<D>::drift(double dt) {
+  FaultRecorder faults;
+  revsph::drift<FixedArithmetic>(state_.position, state_.velocity, dt, faults);
+  geometry_valid_ = false;
+  force_valid_ = false;
+}
+
+template <int D>
+void Model<D>::update_distortion(double dt) {
+  update_geometry();
+  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  const std::size_t n = carrier_count();
+  const std::size_t material = material_count();
+  const auto& v_scale = state_.velocity.info().scale;
+  for (int k = 0; k < D; ++k) {
+    slot_velocity_[k].resize(n);
+  }
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < n; ++s) {
+    const std::uint32_t a = carrier_of_slot[s];
+    for (int k = 0; k < D; ++k) {
+      slot_velocity_[k][s] =
+          a < material ? fixedpoint::to_real(state_.velocity.at(k, a), v_scale) : 0.0;
+    }
+  }
+  velocity_gradients<D>(kernel_, view_of<D>(slot_position_), view_of<D>(slot_velocity_), slot_mass_,
+                        carrier_pairs_, sums_.h_inverse, velocity_sum_, velocity_gradient_);
+  FaultRecorder faults;
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < n; ++s) {
+    const std::uint32_t a = carrier_of_slot[s];
+    ExactDistortion<D> distortion = distortion_of(a);
+    // dt L is odd in v bit for bit: the update with -dt L undoes this one exactly.
+    const Matrix<D> step = dt * velocity_gradient_[s];
+    if (!try_update_distortion<D>(distortion, step, parameters_.distortion_scales)) {
+      faults.record(index_in_set(a), set_name(a), "distortion",
+                    "overflow or non-finite value in the distortion update");
+      continue;
+    }
+    ParticleSetState<D>& set = set_of(a);
+    const std::size_t i = index_in_set(a);
+    set.log_det.at(0, i) = distortion.log_det;
+    for (int c = 0; c < D * D; ++c) {
+      set.unimodular.at(c, i) = distortion.unimodular[c];
+    }
+  }
+  faults.throw_if_any();
+  force_valid_ = false;
+}
+
+template <int D>
+void Model<D>::reverse_time() {
+  apply_time_reversal<FixedArithmetic>(state_);
+}
+
+template <int D>
+void Model<D>::update_constants() {
+  if (constants_valid_) {
+    return;
+  }
+  const std::size_t n = carrier_count();
+  mass_.resize(n);
+  density_constant_.resize(n);
+  lambda_constant_.resize(n);
+  for (std::size_t a = 0; a < n; ++a) {
+    const ParticleSetState<D>& set = set_of(a);
+    const std::size_t i = index_in_set(a);
+    mass_[a] = fixedpoint::to_real(set.mass.at(0, i), set.mass.info().scale);
+    density_constant_[a] =
+        fixedpoint::to_real(set.density_constant.at(0, i), set.density_constant.info().scale);
+    lambda_constant_[a] =
+        fixedpoint::to_real(set.lambda_constant.at(0, i), set.lambda_constant.info().scale);
+  }
+  constants_valid_ = true;
+}
+
+template <int D>
+void Model<D>::update_geometry() {
+  if (geometry_valid_) {
+    return;
+  }
+  update_constants();
+  const std::size_t n = carrier_count();
+  auto coordinate = [&](int axis, std::size_t a) { return real_position(axis, a); };
+  try {
+    carrier_cells_.build(n, coordinate);
+  } catch (const PointOutsideDomain& outside) {
+    const std::size_t a = outside.index();
+    throw SimulationFault({set_name(a), index_in_set(a), "position",
+                           "left the domain: " + std::string(outside.what())},
+                          -1);
+  }
+  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  for (int k = 0; k < D; ++k) {
+    slot_position_[k].resize(n);
+  }
+  slot_mass_.resize(n);
+  slot_density_constant_.resize(n);
+  slot_lambda_constant_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < n; ++s) {
+    const std::uint32_t a = carrier_of_slot[s];
+    for (int k = 0; k < D; ++k) {
+      slot_position_[k][s] = real_position(k, a);
+    }
+    slot_mass_[s] = mass_[a];
+    slot_density_constant_[s] = density_constant_[a];
+    slot_lambda_constant_[s] = lambda_constant_[a];
+  }
+  const CoordinateView<D> x = view_of<D>(slot_position_);
+  carrier_pairs_.build<D>(carrier_cells_, x, parameters_.support_radius());
+  compute_kernel_sums<D>(kernel_, x, slot_mass_, slot_density_constant_, slot_lambda_constant_,
+                         carrier_pairs_, sums_);
+  FaultRecorder faults;
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < n; ++s) {
+    if (!(sums_.density[s] > 0.0) || !std::isfinite(sums_.density[s]) ||
+        !std::isfinite(sums_.lambda[s])) {
+      const std::uint32_t a = carrier_of_slot[s];
+      faults.record(index_in_set(a), set_name(a), "density", "density non-finite or not positive");
+    }
+  }
+  faults.throw_if_any();
+  geometry_valid_ = true;
+}
+
+template <int D>
+void Model<D>::update_force() {
+  if (force_valid_) {
+    return;
+  }
+  update_geometry();
+  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  const std::size_t n = carrier_count();
+  slot_distortion_.resize(n);
+  slot_stress_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < n; ++s) {
+    slot_distortion_[s] =
+        to_matrix<D>(distortion_of(carrier_of_slot[s]), parameters_.distortion_scales);
+    slot_stress_[s] = stress<D>(parameters_.material, sums_.density[s], slot_distortion_[s],
+                                sums_.h_inverse[s]); // eq. (21b)
+  }
+  const PenaltyParameters penalty{parameters_.penalty_speed, parameters_.material.rest_density};
+  compute_acceleration<D>(kernel_, penalty_strength(penalty), view_of<D>(slot_position_),
+                          slot_mass_, slot_stress_, sums_.lambda, carrier_pairs_,
+                          slot_acceleration_);
+  const std::size_t material = material_count();
+  FaultRecorder faults;
+  for (int k = 0; k < D; ++k) {
+    acceleration_[k].resize(material);
+  }
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < n; ++s) {
+    const std::uint32_t a = carrier_of_slot[s];
+    if (a >= material) {
+      continue; // boundary particles are held in place
+    }
+    for (int k = 0; k < D; ++k) {
+      acceleration_[k][a] = slot_acceleration_[k][s];
+      if (!std::isfinite(slot_acceleration_[k][s])) {
+        faults.record(a, "material", "acceleration", "non-finite acceleration");
+      }
+    }
+  }
+  faults.throw_if_any();
+  force_valid_ = true;
+}
+
+template <int D>
+const CoordinateArrays<D>& Model<D>::acceleration() {
+  update_force();
+  return acceleration_;
+}
+
+template <int D>
+typename Model<D>::CarrierValues Model<D>::carrier_values() {
+  update_force();
+  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  const std::size_t n = carrier_count();
+  CarrierValues values{std::vector<double>(n), std::vector<double>(n), std::vector<Matrix<D>>(n)};
+  for (std::size_t s = 0; s < n; ++s) {
+    const std::uint32_t a = carrier_of_slot[s];
+    values.density[a] = sums_.density[s];
+    values.lambda[a] = sums_.lambda[s];
+    values.distortion[a] = slot_distortion_[s];
+  }
+  return values;
+}
+
+template <int D>
+typename Model<D>::ParticleEnergies Model<D>::particle_energies() {
+  const CarrierValues values = carrier_values();
+  const std::size_t n = carrier_count();
+  const ElasticMaterial& material = parameters_.material;
+  const double cp = parameters_.penalty_speed;
+  ParticleEnergies energies{std::vector<double>(n, 0.0), std::vector<double>(n),
+                            std::vector<double>(n), std::vector<double>(n)};
+  const auto& v_scale = state_.velocity.info().scale;
+  for (std::size_t a = 0; a < n; ++a) {
+    const double m = mass_[a];
+    if (a < material_count()) {
+      double v_squared = 0.0;
+      for (int k = 0; k < D; ++k) {
+        const double v = fixedpoint::to_real(state_.velocity.at(k, a), v_scale);
+        v_squared += v * v;
+      }
+      energies.kinetic[a] = 0.5 * m * v_squared;
+    }
+    energies.bulk[a] = m * bulk_energy(material, values.density[a]);         // eq. (29)
+    energies.shear[a] = m * shear_energy<D>(material, values.distortion[a]); // eq. (31), (35)
+    const double relative = values.lambda[a] / material.rest_density;
+    energies.penalty[a] = 0.5 * m * cp * cp * relative * relative; // eq. (39)
+  }
+  return energies;
+}
+
+template <int D>
+EnergyBudget Model<D>::energy() {
+  const ParticleEnergies energies = particle_energies();
+  // Serial sums in particle order: the same value for any thread count.
+  auto total = [](const std::vector<double>& values) {
+    double sum = 0.0;
+    for (const double value : values) {
+      sum += value;
+    }
+    return sum;
+  };
+  return EnergyBudget{{{"kinetic", total(energies.kinetic)},
+                       {"volumetric", total(energies.bulk)},
+                       {"shear", total(energies.shear)},
+                       {"penalty", total(energies.penalty)}}};
+}
+
+template <int D>
+void Model<D>::derived_views(const ViewSink& sink) {
+  ParticleEnergies energies = particle_energies();
+  const CarrierValues values = carrier_values();
+  const std::string energy_unit = D == 2 ? "J/m" : "J";
+  const std::size_t material = material_count();
+  const std::size_t n = carrier_count();
+  struct Range {
+    const char* set;
+    std::size_t first, end;
+  };
+  for (const Range range : {Range{"material", 0, material}, Range{"boundary", material, n}}) {
+    if (range.first == range.end) {
+      continue;
+    }
+    auto slice = [&](const std::vector<double>& all) {
+      return std::vector<double>(all.begin() + range.first, all.begin() + range.end);
+    };
+    const std::size_t count = range.end - range.first;
+    std::vector<double> pressure_values(count);
+    std::vector<double> distortion(count * D * D);
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::size_t a = range.first + i;
+      pressure_values[i] = pressure(parameters_.material, values.density[a]); // eq. (30)
+      for (int r = 0; r < D; ++r) {
+        for (int c = 0; c < D; ++c) {
+          distortion[static_cast<std::size_t>(r * D + c) * count + i] = values.distortion[a](r, c);
+        }
+      }
+    }
+    sink(ParticleView{range.set, "density", "kg/m^3", 1, slice(values.density)});
+    sink(ParticleView{range.set, "pressure", "Pa", 1, std::move(pressure_values)});
+    sink(ParticleView{range.set, "lambda", "kg/m^3", 1, slice(values.lambda)});
+    sink(ParticleView{range.set, "distortion", "1", D * D, std::move(distortion)});
+    if (range.first == 0) {
+      std::vector<double> acceleration_values;
+      for (int k = 0; k < D; ++k) {
+        acceleration_values.insert(acceleration_values.end(), acceleration_[k].begin(),
+                                   acceleration_[k].end());
+      }
+      sink(ParticleView{range.set, "acceleration", "m/s^2", D, std::move(acceleration_values)});
+      sink(ParticleView{range.set, "kinetic_energy", energy_unit, 1, slice(energies.kinetic)});
+    }
+    sink(ParticleView{range.set, "volumetric_energy", energy_unit, 1, slice(energies.bulk)});
+    sink(ParticleView{range.set, "shear_energy", energy_unit, 1, slice(energies.shear)});
+    sink(ParticleView{range.set, "penalty_energy", energy_unit, 1, slice(energies.penalty)});
+  }
+}
+
+template <int D>
+std::vector<EnergyTerm> Model<D>::diagnostics() {
+  if (!probe_particle_) {
+    return {};
+  }
+  static constexpr const char* names[] = {"probe_x", "probe_y", "probe_z"};
+  std::vector<EnergyTerm> terms;
+  for (int k = 0; k < D; ++k) {
+    terms.push_back({names[k], real_position(k, *probe_particle_)});
+  }
+  return terms;
+}
+
+template class Model<2>;
+template class Model<3>;
+
+} // namespace revsph::shtc

@@ -1,0 +1,132 @@
+#pragma once
+// SHTC-SPH (paper 2) in fixed point: the reversible step of eq. (49) made bitwise reversible.
+//   kick(dt/2)       v += dt/2 a(x, A)                       (eq. 48 / m, forces.hpp)
+//   drift(dt/2)      x += dt/2 v
+//   distortion(dt)   A <- A exp(-dt L(x, v))                  (eq. 47; distortion.hpp, exactly
+//                                                             invertible, L of eq. 10 odd in v)
+//   drift(dt/2), kick(dt/2)
+// Each sub-step is undone bit for bit by itself after a time reversal (v -> -v), and the
+// sequence is a palindrome: the step is bitwise reversible (design note §2, §4). The distortion
+// update replaces the paper's Cayley form (same second order; tests compare them).
+//
+// Particles: "material" (moving) then "boundary" (fixed, zero velocity; state.hpp), together the
+// carriers. The neighbour loops run over the carriers in cell order (slots); the state and every
+// output stay in canonical order.
+
+#include "core/cell_list.hpp"
+#include "core/energy.hpp"
+#include "core/kernel_wendland.hpp"
+#include "core/pair_list.hpp"
+#include "core/particle_view.hpp"
+#include "core/simulation.hpp"
+#include "core/step_composition.hpp"
+#include "models/shtc/kernel_sums.hpp"
+#include "models/shtc/parameters.hpp"
+#include "models/shtc/state.hpp"
+
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace revsph::shtc {
+
+template <int D>
+class Model {
+public:
+  // `state` holds positions, velocities and distortions with their scales; masses and the
+  // integration constants are set by initialise_constants, or come with a restored snapshot.
+  Model(Parameters<D> parameters, SimulationInfo info, State<D> state,
+        std::optional<std::size_t> probe_particle);
+
+  // Paper 2 §3.1: m_a = rho0 V_a with V_a = 1 / sum_b w_ab; then C_rho,a = rho0 - sum_b m_b w_ab
+  // (eq. 7) and C_lambda,a = -sum_b m_b h dw_ab/dh (eq. 40), so that rho = rho0 and lambda = 0
+  // at t = 0.
+  void initialise_constants();
+
+  static std::span<const Substep<Model>> palindrome();
+
+  State<D>& state() { return state_; }
+  const SimulationInfo& info() const { return info_; }
+  const Parameters<D>& parameters() const { return parameters_; }
+  // Kinetic, volumetric (eq. 29), shear (eq. 31 or 35) and penalty (eq. 39) energy, eq. (24).
+  EnergyBudget energy();
+  void derived_views(const ViewSink& sink);
+  // The probe particle's position, if the case names a probe point.
+  std::vector<EnergyTerm> diagnostics();
+  void invalidate_derived() {
+    constants_valid_ = false;
+    geometry_valid_ = false;
+    force_valid_ = false;
+  }
+  void reverse_time();
+
+  void kick(double dt);
+  void drift(double dt);
+  void update_distortion(double dt);
+
+  // Per material particle, canonical order (for tests).
+  const CoordinateArrays<D>& acceleration();
+  std::size_t material_count() const { return state_.position.count(); }
+  std::size_t carrier_count() const { return material_count() + state_.boundary_position.count(); }
+
+private:
+  static void kick_substep(Model& model, double dt) { model.kick(dt); }
+  static void drift_substep(Model& model, double dt) { model.drift(dt); }
+  static void distortion_substep(Model& model, double dt) { model.update_distortion(dt); }
+
+  // Per carrier, canonical order.
+  struct ParticleEnergies {
+    std::vector<double> kinetic, bulk, shear, penalty;
+  };
+  struct CarrierValues {
+    std::vector<double> density, lambda;
+    std::vector<Matrix<D>> distortion;
+  };
+
+  double real_position(int axis, std::size_t a) const;
+  ParticleSetState<D>& set_of(std::size_t a) {
+    return a < material_count() ? state_.material : state_.boundary;
+  }
+  const char* set_name(std::size_t a) const {
+    return a < material_count() ? "material" : "boundary";
+  }
+  std::size_t index_in_set(std::size_t a) const {
+    return a < material_count() ? a : a - material_count();
+  }
+  ExactDistortion<D> distortion_of(std::size_t a);
+  void update_constants();
+  void update_geometry();
+  void update_force();
+  CarrierValues carrier_values();
+  ParticleEnergies particle_energies();
+
+  Parameters<D> parameters_;
+  SimulationInfo info_;
+  State<D> state_;
+  std::optional<std::size_t> probe_particle_;
+  WendlandQuintic<D> kernel_;
+
+  bool constants_valid_ = false;
+  std::vector<double> mass_, density_constant_, lambda_constant_; // carriers
+  // Derived from the positions.
+  bool geometry_valid_ = false;
+  CellList<D> carrier_cells_; // its sorted_points() maps a slot to its carrier
+  CoordinateArrays<D> slot_position_;
+  std::vector<double> slot_mass_, slot_density_constant_, slot_lambda_constant_;
+  HalfPairList carrier_pairs_;
+  KernelSums<D> sums_; // slots
+  // Derived from the positions and the distortions.
+  bool force_valid_ = false;
+  std::vector<GradientMatrix<D>> slot_distortion_;
+  std::vector<GradientMatrix<D>> slot_stress_;
+  CoordinateArrays<D> slot_acceleration_;
+  CoordinateArrays<D> acceleration_; // material, canonical order
+  // Scratch of the distortion sub-step.
+  CoordinateArrays<D> slot_velocity_;
+  std::vector<GradientMatrix<D>> velocity_sum_, velocity_gradient_;
+};
+
+extern template class Model<2>;
+extern template class Model<3>;
+
+} // namespace revsph::shtc

@@ -1,0 +1,146 @@
+#include "models/shtc/parameters.hpp"
+
+#include "core/case_values.hpp"
+#include "core/particle_blocks.hpp"
+
+#include <cmath>
+
+namespace revsph::shtc {
+
+namespace {
+
+// Sound speeds from Young's modulus and Poisson's ratio (paper 2 eq. 61):
+// rho0 cs^2 = Y / (1 + nu), rho0 c0^2 = nu Y / ((1 + nu)(1 - 2 nu)).
+void speeds_from_moduli(const CaseFile& case_file, ElasticMaterial& material) {
+  const double young = case_file.positive_number("material.young_modulus");
+  const double poisson = case_file.number_or("material.poisson_ratio", -1.0);
+  if (!(poisson > 0.0 && poisson < 0.5)) {
+    case_file.fail("material.poisson_ratio", "required with young_modulus, between 0 and 0.5");
+  }
+  material.shear_speed = std::sqrt(young / ((1.0 + poisson) * material.rest_density));
+  material.sound_speed = std::sqrt(
+      poisson * young / ((1.0 + poisson) * (1.0 - 2.0 * poisson) * material.rest_density));
+}
+
+void read_material(const CaseFile& case_file, ElasticMaterial& material) {
+  material.rest_density = case_file.positive_number("material.rest_density");
+  const bool from_moduli = case_file.has("material.young_modulus");
+  if (from_moduli &&
+      (case_file.has("material.sound_speed") || case_file.has("material.shear_speed"))) {
+    case_file.fail("material.young_modulus",
+                   "give either young_modulus and poisson_ratio or sound_speed and shear_speed");
+  }
+  if (from_moduli) {
+    speeds_from_moduli(case_file, material);
+  } else {
+    material.sound_speed = case_file.positive_number("material.sound_speed");
+    material.shear_speed = case_file.number_or("material.shear_speed", 0.0);
+    if (!(material.shear_speed >= 0.0) || !std::isfinite(material.shear_speed)) {
+      case_file.fail("material.shear_speed", "must be >= 0 and finite");
+    }
+  }
+  const std::string energy = case_file.string_or("material.shear_energy", "dprz");
+  if (energy == "dprz") {
+    material.shear_energy = ShearEnergy::dprz;
+  } else if (energy == "neo_hookean") {
+    material.shear_energy = ShearEnergy::neo_hookean;
+  } else {
+    case_file.fail("material.shear_energy",
+                   "expected \"dprz\" (eq. 31) or \"neo_hookean\" (eq. 35), got \"" + energy +
+                       "\"");
+  }
+}
+
+template <int D>
+void read_initial_field(const CaseFile& case_file, Parameters<D>& p) {
+  const std::string field = case_file.string_or("initial.field", "rest");
+  if (field == "rest") {
+    p.initial_field = InitialField::rest;
+  } else if (field == "bending_plate") {
+    if (D != 2) {
+      case_file.fail("initial.field", "the bending plate (eq. 55) is two-dimensional");
+    }
+    p.initial_field = InitialField::bending_plate;
+    p.plate.amplitude = case_file.positive_number("initial.amplitude");
+    p.plate.omega = case_file.positive_number("initial.omega");
+    p.plate.alpha = case_file.positive_number("initial.alpha");
+    p.plate.a1 = case_file.number_or("initial.a1", 0.0);
+    p.plate.a2 = case_file.number_or("initial.a2", 0.0);
+    p.plate.x0 = case_file.number_or("initial.x0", 0.0);
+  } else if (field == "twisting_column") {
+    if (D != 3) {
+      case_file.fail("initial.field", "the twisting column (eq. 60) is three-dimensional");
+    }
+    p.initial_field = InitialField::twisting_column;
+    p.column.omega = case_file.number_or("initial.omega", 0.0);
+    p.column.height = case_file.positive_number("initial.height");
+  } else {
+    case_file.fail("initial.field",
+                   "expected \"rest\", \"bending_plate\" or \"twisting_column\", got \"" + field +
+                       "\"");
+  }
+}
+
+} // namespace
+
+template <int D>
+Parameters<D> read_parameters(const CaseFile& case_file) {
+  Parameters<D> p;
+  read_material(case_file, p.material);
+  p.penalty_speed = case_file.number_or("penalty.speed", 0.0);
+  if (!(p.penalty_speed >= 0.0) || !std::isfinite(p.penalty_speed)) {
+    case_file.fail("penalty.speed", "must be >= 0 and finite (0: no tensile penalty)");
+  }
+
+  p.dr = case_file.positive_number("discretisation.dr");
+  p.smoothing_length = p.dr * case_file.positive_number("discretisation.smoothing_length_over_dr");
+  require_positive_finite(case_file, "discretisation.smoothing_length_over_dr",
+                          "the smoothing length h = dr * smoothing_length_over_dr",
+                          p.smoothing_length);
+  const bool has_factor = case_file.has("discretisation.time_step_factor");
+  const bool has_dt = case_file.has("discretisation.dt");
+  if (has_factor == has_dt) {
+    case_file.fail("discretisation.dt",
+                   has_dt ? "give either dt or time_step_factor, not both"
+                          : "missing required key (or give discretisation.time_step_factor, "
+                            "dt = time_step_factor * dr / sqrt(c0^2 + 4/3 cs^2), eq. 58)");
+  }
+  const double wave_speed = std::sqrt(p.material.sound_speed * p.material.sound_speed +
+                                      4.0 / 3.0 * p.material.shear_speed * p.material.shear_speed);
+  p.dt = has_dt ? case_file.positive_number("discretisation.dt")
+                : case_file.positive_number("discretisation.time_step_factor") * p.dr / wave_speed;
+  require_positive_finite(case_file,
+                          has_dt ? "discretisation.dt" : "discretisation.time_step_factor",
+                          "the time step dt", p.dt);
+  p.cell_size_factor = case_file.number_or("discretisation.cell_size_factor", 1.0);
+  if (!(p.cell_size_factor >= 1.0 && p.cell_size_factor <= 100.0)) {
+    case_file.fail("discretisation.cell_size_factor", "must be between 1 and 100");
+  }
+
+  read_initial_field<D>(case_file, p);
+  if (case_file.has("probe.point")) {
+    const std::vector<double> point = case_file.numbers("probe.point", D);
+    Vec<D> probe{};
+    std::copy(point.begin(), point.end(), probe.begin());
+    p.probe = probe;
+  }
+  p.domain = read_domain<D>(case_file);
+
+  // Default scales: positions keep 52 fraction bits below the domain size (their double view is
+  // exact); velocities resolve c0 * 2^-50 and reach 2^13 c0; the constants resolve rho0 * 2^-48;
+  // log det A resolves 2^-50 and U 2^-48 (|U_ij| < 2^15).
+  p.position_scale =
+      scale_or(case_file, "fixed_point.position_exponent", p.domain.max_abs_coordinate(), 52);
+  p.velocity_scale =
+      scale_or(case_file, "fixed_point.velocity_exponent", p.material.sound_speed, 50);
+  p.density_scale =
+      scale_or(case_file, "fixed_point.density_exponent", p.material.rest_density, 48);
+  p.distortion_scales.log_det = scale_or(case_file, "fixed_point.log_det_exponent", 1.0, 50);
+  p.distortion_scales.unimodular = scale_or(case_file, "fixed_point.unimodular_exponent", 1.0, 48);
+  return p;
+}
+
+template Parameters<2> read_parameters<2>(const CaseFile&);
+template Parameters<3> read_parameters<3>(const CaseFile&);
+
+} // namespace revsph::shtc

@@ -1,0 +1,68 @@
+#pragma once
+// Parameters of an SHTC-SPH case, read from its case file (reference in models/shtc/README.md).
+
+#include "core/case_file.hpp"
+#include "core/geometry.hpp"
+#include "fixedpoint/scale.hpp"
+#include "models/shtc/distortion.hpp"
+#include "models/shtc/elastic_energy.hpp"
+
+#include <optional>
+
+namespace revsph::shtc {
+
+// The initial velocity field.
+enum class InitialField {
+  rest,
+  // Paper 2 eq. (55): v_y = A omega (a1 (sinh s + sin s) - a2 (cosh s + cos s)), s = alpha (x - x0)
+  bending_plate,
+  // Paper 2 eq. (60): v = omega sin(pi z / (2 H)) (y, -x, 0)
+  twisting_column,
+};
+
+struct BendingPlateField {
+  double amplitude = 0.0; // A (m)
+  double omega = 0.0;     // omega (1/s)
+  double alpha = 0.0;     // alpha (1/m)
+  double a1 = 0.0;
+  double a2 = 0.0;
+  double x0 = 0.0; // left end of the plate (m): s = alpha (x - x0)
+};
+
+struct TwistingColumnField {
+  double omega = 0.0;  // omega (1/s)
+  double height = 0.0; // H (m)
+};
+
+template <int D>
+struct Parameters {
+  // [material]
+  ElasticMaterial material;
+  // [penalty]: the tensile penalty of eqs. (39)–(42); cp = 0 switches it off
+  double penalty_speed = 0.0;
+  // [discretisation]
+  double dr = 0.0;
+  double smoothing_length = 0.0; // h of paper 2; the kernel's support radius is 2 h
+  double dt = 0.0;
+  double cell_size_factor = 1.0;
+  // [initial]
+  InitialField initial_field = InitialField::rest;
+  BendingPlateField plate;
+  TwistingColumnField column;
+  // [probe]: the material particle nearest to this point at t = 0 is reported in diagnostics.csv
+  std::optional<Vec<D>> probe;
+  Box<D> domain;
+  // [fixed_point]
+  fixedpoint::Scale position_scale;
+  fixedpoint::Scale velocity_scale;
+  fixedpoint::Scale density_scale; // of the constants C_rho and C_lambda
+  fixedpoint::Scale mass_scale;    // set at setup from the largest mass
+  DistortionScales distortion_scales;
+
+  double support_radius() const { return 2.0 * smoothing_length; }
+};
+
+template <int D>
+Parameters<D> read_parameters(const CaseFile& case_file);
+
+} // namespace revsph::shtc

@@ -1,0 +1,177 @@
+#include "models/shtc/setup.hpp"
+
+#include "core/particle_blocks.hpp"
+#include "core/run_settings.hpp"
+#include "models/shtc/model.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+namespace revsph::shtc {
+
+namespace {
+
+constexpr std::string_view particle_kinds[] = {"material", "boundary"};
+
+// Memory per particle, generously: state (~(2 D + D^2 + 5) * 8 B), slot copies, the matrices H,
+// H^-1, stress, L and its sum (5 D^2 doubles), cell list, plus 4 B per neighbour in the half list
+// and as much again while it is built.
+double bytes_per_particle(int dimension, double support_radius_over_dr) {
+  const double r = support_radius_over_dr;
+  const double neighbours =
+      dimension == 2 ? std::numbers::pi * r * r : 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  return 300.0 + 56.0 * dimension * dimension + 8.0 * neighbours;
+}
+
+// Paper 2 eqs. (55) and (60).
+template <int D>
+Vec<D> initial_velocity(const Parameters<D>& p, const Vec<D>& x) {
+  Vec<D> v{};
+  if (p.initial_field == InitialField::bending_plate) {
+    const BendingPlateField& f = p.plate;
+    const double s = f.alpha * (x[0] - f.x0);
+    v[1] = f.amplitude * f.omega *
+           (f.a1 * (std::sinh(s) + std::sin(s)) - f.a2 * (std::cosh(s) + std::cos(s)));
+  } else if (p.initial_field == InitialField::twisting_column) {
+    if constexpr (D == 3) {
+      const double factor =
+          p.column.omega * std::sin(std::numbers::pi * x[2] / (2.0 * p.column.height));
+      v[0] = factor * x[1];
+      v[1] = -factor * x[0];
+    }
+  }
+  return v;
+}
+
+template <int D>
+void fill_vectors(const CaseFile& case_file, const std::vector<Vec<D>>& values,
+                  StateField<std::int64_t>& field, const char* what) {
+  field.resize(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    for (int k = 0; k < D; ++k) {
+      if (!fixedpoint::try_to_fixed(values[i][k], field.info().scale, field.at(k, i))) {
+        case_file.fail("particles", std::string("a particle ") + what +
+                                        " does not fit its fixed-point scale (see [fixed_point])");
+      }
+    }
+  }
+}
+
+// A = I for every particle: the material starts undistorted.
+template <int D>
+void set_undistorted(const CaseFile& case_file, const DistortionScales& scales,
+                     ParticleSetState<D>& set, std::size_t count) {
+  set.log_det.info().scale = scales.log_det;
+  set.unimodular.info().scale = scales.unimodular;
+  set.resize(count);
+  ExactDistortion<D> identity;
+  if (!try_make_distortion<D>(Matrix<D>::Identity(), scales, identity)) {
+    case_file.fail("fixed_point.unimodular_exponent", "the identity does not fit this scale");
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    set.log_det.at(0, i) = identity.log_det;
+    for (int c = 0; c < D * D; ++c) {
+      set.unimodular.at(c, i) = identity.unimodular[c];
+    }
+  }
+}
+
+std::string scientific(double value) {
+  std::ostringstream text;
+  text.precision(6);
+  text << std::scientific << value;
+  return text.str();
+}
+
+template <int D>
+std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const SimulationOptions& options) {
+  const Parameters<D> parameters = read_parameters<D>(case_file);
+  const auto blocks =
+      read_particle_blocks<D>(case_file, parameters.dr, parameters.domain, particle_kinds,
+                              {bytes_per_particle(D, parameters.support_radius() / parameters.dr),
+                               options.memory_budget_bytes});
+  std::vector<Vec<D>> material_positions, boundary_positions;
+  for (const auto& block : blocks) {
+    auto& positions = block.kind == "material" ? material_positions : boundary_positions;
+    positions.insert(positions.end(), block.positions.begin(), block.positions.end());
+  }
+  if (material_positions.empty()) {
+    case_file.fail("particles", "the case has no material particles");
+  }
+  std::vector<Vec<D>> velocities;
+  for (const Vec<D>& x : material_positions) {
+    velocities.push_back(initial_velocity<D>(parameters, x));
+  }
+
+  State<D> state;
+  state.position.info().scale = parameters.position_scale;
+  state.velocity.info().scale = parameters.velocity_scale;
+  state.boundary_position.info().scale = parameters.position_scale;
+  fill_vectors<D>(case_file, material_positions, state.position, "position");
+  fill_vectors<D>(case_file, velocities, state.velocity, "velocity");
+  fill_vectors<D>(case_file, boundary_positions, state.boundary_position, "position");
+  set_undistorted<D>(case_file, parameters.distortion_scales, state.material,
+                     material_positions.size());
+  set_undistorted<D>(case_file, parameters.distortion_scales, state.boundary,
+                     boundary_positions.size());
+
+  SimulationInfo info;
+  info.case_name = case_name(case_file);
+  info.model = "shtc";
+  info.dimension = D;
+  info.arithmetic = Arithmetic::fixed;
+  info.dt = parameters.dt;
+  info.particles = {{"material", material_positions.size(), true},
+                    {"boundary", boundary_positions.size(), false}};
+  info.setup_report.emplace_back("dt", scientific(parameters.dt));
+  info.setup_report.emplace_back("sound_speed", scientific(parameters.material.sound_speed));
+  info.setup_report.emplace_back("shear_speed", scientific(parameters.material.shear_speed));
+
+  std::optional<std::size_t> probe;
+  if (parameters.probe) {
+    // The material particle nearest to the point at t = 0 (the lowest index among equals).
+    double best = INFINITY;
+    for (std::size_t a = 0; a < material_positions.size(); ++a) {
+      double distance = 0.0;
+      for (int k = 0; k < D; ++k) {
+        const double d = material_positions[a][k] - (*parameters.probe)[k];
+        distance += d * d;
+      }
+      if (distance < best) {
+        best = distance;
+        probe = a;
+      }
+    }
+    std::string where;
+    for (int k = 0; k < D; ++k) {
+      where += (k == 0 ? "" : " ") + scientific(material_positions[*probe][k]);
+    }
+    info.setup_report.emplace_back("probe.particle", std::to_string(*probe));
+    info.setup_report.emplace_back("probe.initial_position", where);
+  }
+  Model<D> model(parameters, std::move(info), std::move(state), probe);
+  model.initialise_constants();
+  return std::make_unique<ModelSimulation<Model<D>>>(std::move(model));
+}
+
+} // namespace
+
+std::unique_ptr<Simulation> create(const CaseFile& case_file, const SimulationOptions& options) {
+  if (options.arithmetic != Arithmetic::fixed) {
+    throw std::invalid_argument(
+        "SHTC-SPH runs in fixed point only: its distortion update is exact in integers "
+        "(models/shtc/README.md)");
+  }
+  const std::int64_t dimension = case_file.integer("dimension");
+  if (dimension == 2) {
+    return create_in<2>(case_file, options);
+  }
+  if (dimension == 3) {
+    return create_in<3>(case_file, options);
+  }
+  case_file.fail("dimension", "must be 2 or 3 (got " + std::to_string(dimension) + ")");
+}
+
+} // namespace revsph::shtc

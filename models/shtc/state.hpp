@@ -1,0 +1,72 @@
+#pragma once
+// The state of an SHTC-SPH simulation, declared once (core/state_field.hpp). Fixed point only:
+// the distortion's exact update (distortion.hpp) works on integers.
+//
+// Two particle sets. "material" particles move (eq. 47). "boundary" particles are held in place
+// with zero velocity (the clamped base of the twisting column, §4.2): they take part in every
+// sum like material particles and their distortion evolves with the velocity gradient their
+// moving neighbours give them, so the energy of eq. (24) summed over both sets is conserved and
+// the step stays reversible (the paper resets velocities instead, which dissipates).
+
+#include "core/state_field.hpp"
+
+#include <cstdint>
+
+namespace revsph::shtc {
+
+template <int D>
+struct ParticleSetState {
+  // The distortion A = exp(l / d) U (distortion.hpp): l = log det A and the unimodular U
+  // (row-major, D * D components).
+  StateField<std::int64_t> log_det;
+  StateField<std::int64_t> unimodular;
+  // Constants of the setup: masses and the integration constants C_rho (eq. 7), C_lambda (eq. 40).
+  StateField<std::int64_t> mass;
+  StateField<std::int64_t> density_constant;
+  StateField<std::int64_t> lambda_constant;
+
+  explicit ParticleSetState(const char* set)
+      : log_det({set, "distortion_log_det", "1", Parity::even, 1, {}, true}),
+        unimodular({set, "distortion_unimodular", "1", Parity::even, D * D, {}, true}),
+        mass({set, "mass", D == 2 ? "kg/m" : "kg", Parity::even, 1, {}, false}),
+        density_constant({set, "density_constant", "kg/m^3", Parity::even, 1, {}, false}),
+        lambda_constant({set, "lambda_constant", "kg/m^3", Parity::even, 1, {}, false}) {}
+
+  template <class Visit>
+  void for_each_field(Visit& visit) {
+    visit(log_det);
+    visit(unimodular);
+    visit(mass);
+    visit(density_constant);
+    visit(lambda_constant);
+  }
+
+  void resize(std::size_t count) {
+    log_det.resize(count);
+    unimodular.resize(count);
+    mass.resize(count);
+    density_constant.resize(count);
+    lambda_constant.resize(count);
+  }
+};
+
+template <int D>
+struct State {
+  StateField<std::int64_t> position{{"material", "position", "m", Parity::even, D, {}, true}};
+  StateField<std::int64_t> velocity{{"material", "velocity", "m/s", Parity::odd, D, {}, true}};
+  ParticleSetState<D> material{"material"};
+  StateField<std::int64_t> boundary_position{
+      {"boundary", "position", "m", Parity::even, D, {}, false}};
+  ParticleSetState<D> boundary{"boundary"};
+
+  template <class Visit>
+  void for_each_field(Visit&& visit) {
+    visit(position);
+    visit(velocity);
+    material.for_each_field(visit);
+    visit(boundary_position);
+    boundary.for_each_field(visit);
+  }
+};
+
+} // namespace revsph::shtc
