@@ -24,6 +24,9 @@ Vec<D> lattice_periods(Lattice lattice, double spacing) {
       period[2] = spacing * std::sqrt(2.0 / 3.0);
     }
   }
+  if (lattice == Lattice::body_centred_cubic) {
+    period[D - 1] = 0.5 * spacing; // corner layers and centre layers alternate
+  }
   return period;
 }
 
@@ -104,6 +107,11 @@ std::vector<Vec<D>> lattice_points_outside(Lattice lattice, const Box<D>& region
         p[0] += 0.5 * spacing;
         p[1] += period[1] / 3.0;
       }
+    }
+    if (lattice == Lattice::body_centred_cubic && layer % 2 == 1) {
+      // Cube centres: half a spacing along x and y from the corner layers.
+      p[0] += 0.5 * spacing;
+      p[1] += 0.5 * spacing;
     }
     return p;
   };
@@ -246,9 +254,15 @@ BlockSpec<D> read_block(const CaseFile& case_file, std::size_t index, double def
     if (D != 2) {
       case_file.fail(field("lattice"), "the \"vogel\" spiral lattice is two-dimensional");
     }
+  } else if (lattice_name == "bcc") {
+    spec.lattice = Lattice::body_centred_cubic;
+    if (D != 3) {
+      case_file.fail(field("lattice"), "the \"bcc\" lattice is three-dimensional");
+    }
   } else if (lattice_name != "square") {
     case_file.fail(field("lattice"),
-                   "expected \"square\", \"hexagonal\" or \"vogel\", got \"" + lattice_name + "\"");
+                   "expected \"square\", \"hexagonal\", \"bcc\" or \"vogel\", got \"" +
+                       lattice_name + "\"");
   }
   spec.spacing = default_spacing;
   if (case_file.has(field("spacing"))) {
@@ -265,7 +279,7 @@ BlockSpec<D> read_block(const CaseFile& case_file, std::size_t index, double def
   const std::string shape = case_file.string_or(field("shape"), "box");
   if (shape == "container") {
     spec.shape = Shape::container;
-    if (spec.lattice == Lattice::vogel) {
+    if (spec.lattice == Lattice::vogel || spec.lattice == Lattice::body_centred_cubic) {
       case_file.fail(field("lattice"), "a container's walls are on a square or hexagonal lattice");
     }
     const std::int64_t layers = case_file.integer_or(field("layers"), 1);

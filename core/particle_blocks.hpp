@@ -7,8 +7,10 @@
 //                                "container": `layers` lattice layers around the box [min, max]
 //                                (its walls), with `open_top = true` leaving the top open
 //   lattice = "square"           "square", "hexagonal" (2D: triangular; 3D: hexagonal close
-//                                packed) or "vogel" (2D: a Vogel spiral about the region's
-//                                centre, one particle per spacing^2, no lattice directions)
+//                                packed), "bcc" (3D: body-centred cubic, cube side `spacing`,
+//                                two particles per cube) or "vogel" (2D: a Vogel spiral about
+//                                the region's centre, one particle per spacing^2, no lattice
+//                                directions)
 //   min, max                     corners of the region (m)
 //   spacing                      lattice spacing (m), default the case's dr
 //
@@ -25,7 +27,7 @@
 
 namespace revsph {
 
-enum class Lattice { square, hexagonal, vogel };
+enum class Lattice { square, hexagonal, body_centred_cubic, vogel };
 
 template <int D>
 struct ParticleBlock {

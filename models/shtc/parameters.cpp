@@ -9,15 +9,17 @@ namespace revsph::shtc {
 
 namespace {
 
-// Sound speeds from Young's modulus and Poisson's ratio (paper 2 eq. 61):
-// rho0 cs^2 = Y / (1 + nu), rho0 c0^2 = nu Y / ((1 + nu)(1 - 2 nu)).
+// Sound speeds from Young's modulus and Poisson's ratio (paper 2 eq. 61, corrected):
+// rho0 cs^2 = Y / (2 (1 + nu)), the shear modulus, and rho0 c0^2 = nu Y / ((1 + nu)(1 - 2 nu)).
+// Eq. (61) prints rho0 cs^2 = Y / (1 + nu); Table 1 (cs = 71.9 m/s for the twisting column)
+// and the Neo-Hookean energy (eq. 35, shear modulus rho0 cs^2) need the factor 2.
 void speeds_from_moduli(const CaseFile& case_file, ElasticMaterial& material) {
   const double young = case_file.positive_number("material.young_modulus");
   const double poisson = case_file.number_or("material.poisson_ratio", -1.0);
   if (!(poisson > 0.0 && poisson < 0.5)) {
     case_file.fail("material.poisson_ratio", "required with young_modulus, between 0 and 0.5");
   }
-  material.shear_speed = std::sqrt(young / ((1.0 + poisson) * material.rest_density));
+  material.shear_speed = std::sqrt(young / (2.0 * (1.0 + poisson) * material.rest_density));
   material.sound_speed = std::sqrt(
       poisson * young / ((1.0 + poisson) * (1.0 - 2.0 * poisson) * material.rest_density));
 }

@@ -55,4 +55,44 @@ TEST(Lattice, HexagonalBlockHasNearestNeighboursAtTheSpacing) {
               std::pow(spacing, 3) / std::sqrt(2.0), 1e-15);
 }
 
+TEST(Lattice, BodyCentredCubicHasEightNearestNeighboursAndTwoParticlesPerCube) {
+  const double spacing = 0.1;
+  const auto bcc = revsph::lattice_points<3>(Lattice::body_centred_cubic,
+                                             Box<3>{{-0.5, -0.5, 0.0}, {0.5, 0.5, 1.0}}, spacing);
+  // 10 x 10 corner points and 9 x 9 centre points per cube layer, 10 cube layers (20 layers).
+  EXPECT_EQ(bcc.size(), 10u * (100u + 81u));
+  // An interior point: the one nearest to the block's centre.
+  auto distance = [](const revsph::Vec<3>& p, const revsph::Vec<3>& q) {
+    return std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
+  };
+  revsph::Vec<3> centre = bcc.front();
+  for (const auto& p : bcc) {
+    if (distance(p, {0.0, 0.0, 0.5}) < distance(centre, {0.0, 0.0, 0.5})) {
+      centre = p;
+    }
+  }
+  int nearest_count = 0;
+  double nearest = 1e9;
+  for (const auto& p : bcc) {
+    const double d = std::hypot(p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]);
+    if (d > 0) {
+      nearest = std::min(nearest, d);
+    }
+  }
+  for (const auto& p : bcc) {
+    const double d = std::hypot(p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]);
+    nearest_count += std::fabs(d - nearest) < 1e-12 ? 1 : 0;
+  }
+  EXPECT_NEAR(nearest, spacing * std::sqrt(3.0) / 2.0, 1e-12);
+  EXPECT_EQ(nearest_count, 8);
+  EXPECT_NEAR(revsph::lattice_cell_volume<3>(Lattice::body_centred_cubic, spacing),
+              std::pow(spacing, 3) / 2.0, 1e-15);
+  // Symmetric about the block's axis: both kinds of layer are centred.
+  double mean_x = 0.0;
+  for (const auto& p : bcc) {
+    mean_x += p[0];
+  }
+  EXPECT_NEAR(mean_x / static_cast<double>(bcc.size()), 0.0, 1e-12);
+}
+
 } // namespace
