@@ -3,6 +3,7 @@
 #include "core/verlet.hpp"
 #include "models/shtc/elastic_energy.hpp"
 #include "models/shtc/forces.hpp"
+#include "models/shtc/relaxation.hpp"
 #include "models/shtc/tensile_penalty.hpp"
 #include "models/shtc/velocity_gradient.hpp"
 
@@ -156,6 +157,10 @@ void Model<D>::update_distortion(double dt) {
     }
     ParticleSetState<D>& set = set_of(a);
     const std::size_t i = index_in_set(a);
+    if (parameters_.relaxation_time && !relax(distortion, set.dissipated_energy.at(0, i), dt)) {
+      faults.record(i, set_name(a), "distortion", "overflow or non-finite value in the relaxation");
+      continue;
+    }
     set.log_det.at(0, i) = distortion.log_det;
     for (int c = 0; c < D * D; ++c) {
       set.unimodular.at(c, i) = distortion.unimodular[c];
@@ -163,6 +168,18 @@ void Model<D>::update_distortion(double dt) {
   }
   faults.throw_if_any();
   force_valid_ = false;
+}
+
+template <int D>
+bool Model<D>::relax(ExactDistortion<D>& distortion, std::int64_t& dissipated, double dt) const {
+  // Eq. (52d) after the reversible update (52c); the shear energy it removes is added to the
+  // particle's dissipated energy, so that the budget of energy() closes.
+  const ElasticMaterial& material = parameters_.material;
+  const Matrix<D> before = to_matrix<D>(distortion, parameters_.distortion_scales);
+  const Matrix<D> after = relax_distortion<D>(material, *parameters_.relaxation_time, before, dt);
+  const double removed = shear_energy<D>(material, before) - shear_energy<D>(material, after);
+  return try_make_distortion<D>(after, parameters_.distortion_scales, distortion) &&
+         FixedArithmetic::try_increment(dissipated, removed, parameters_.dissipated_scale);
 }
 
 template <int D>
@@ -312,7 +329,7 @@ typename Model<D>::ParticleEnergies Model<D>::particle_energies() {
   const ElasticMaterial& material = parameters_.material;
   const double cp = parameters_.penalty_speed;
   ParticleEnergies energies{std::vector<double>(n, 0.0), std::vector<double>(n),
-                            std::vector<double>(n), std::vector<double>(n)};
+                            std::vector<double>(n), std::vector<double>(n), std::vector<double>(n)};
   const auto& v_scale = state_.velocity.info().scale;
   for (std::size_t a = 0; a < n; ++a) {
     const double m = mass_[a];
@@ -328,6 +345,9 @@ typename Model<D>::ParticleEnergies Model<D>::particle_energies() {
     energies.shear[a] = m * shear_energy<D>(material, values.distortion[a]); // eq. (31), (35)
     const double relative = values.lambda[a] / material.rest_density;
     energies.penalty[a] = 0.5 * m * cp * cp * relative * relative; // eq. (39)
+    const auto& dissipated = set_of(a).dissipated_energy;
+    energies.dissipated[a] =
+        m * fixedpoint::to_real(dissipated.at(0, index_in_set(a)), dissipated.info().scale);
   }
   return energies;
 }
@@ -343,10 +363,14 @@ EnergyBudget Model<D>::energy() {
     }
     return sum;
   };
-  return EnergyBudget{{{"kinetic", total(energies.kinetic)},
+  EnergyBudget budget{{{"kinetic", total(energies.kinetic)},
                        {"volumetric", total(energies.bulk)},
                        {"shear", total(energies.shear)},
                        {"penalty", total(energies.penalty)}}};
+  if (parameters_.relaxation_time) {
+    budget.terms.push_back({"dissipated", total(energies.dissipated)});
+  }
+  return budget;
 }
 
 template <int D>
@@ -395,18 +419,45 @@ void Model<D>::derived_views(const ViewSink& sink) {
     sink(ParticleView{range.set, "volumetric_energy", energy_unit, 1, slice(energies.bulk)});
     sink(ParticleView{range.set, "shear_energy", energy_unit, 1, slice(energies.shear)});
     sink(ParticleView{range.set, "penalty_energy", energy_unit, 1, slice(energies.penalty)});
+    if (parameters_.relaxation_time) {
+      sink(
+          ParticleView{range.set, "dissipated_energy", energy_unit, 1, slice(energies.dissipated)});
+    }
   }
 }
 
 template <int D>
 std::vector<EnergyTerm> Model<D>::diagnostics() {
-  if (!probe_particle_) {
-    return {};
-  }
-  static constexpr const char* names[] = {"probe_x", "probe_y", "probe_z"};
   std::vector<EnergyTerm> terms;
-  for (int k = 0; k < D; ++k) {
-    terms.push_back({names[k], real_position(k, *probe_particle_)});
+  if (probe_particle_) {
+    static constexpr const char* names[] = {"probe_x", "probe_y", "probe_z"};
+    for (int k = 0; k < D; ++k) {
+      terms.push_back({names[k], real_position(k, *probe_particle_)});
+    }
+  }
+  // Angular momentum of the material about the origin, eq. (26) (conserved without boundary
+  // particles; the twisting column's changes sign when its rotation reverses). Serial sum in
+  // particle order: the same for any thread count.
+  update_constants();
+  Vec<3> angular{};
+  const auto& v_scale = state_.velocity.info().scale;
+  for (std::size_t a = 0; a < material_count(); ++a) {
+    Vec<3> x{};
+    Vec<3> v{};
+    for (int k = 0; k < D; ++k) {
+      x[k] = real_position(k, a);
+      v[k] = fixedpoint::to_real(state_.velocity.at(k, a), v_scale);
+    }
+    angular[0] += mass_[a] * (x[1] * v[2] - x[2] * v[1]);
+    angular[1] += mass_[a] * (x[2] * v[0] - x[0] * v[2]);
+    angular[2] += mass_[a] * (x[0] * v[1] - x[1] * v[0]);
+  }
+  if constexpr (D == 2) {
+    terms.push_back({"angular_momentum", angular[2]});
+  } else {
+    terms.push_back({"angular_momentum_x", angular[0]});
+    terms.push_back({"angular_momentum_y", angular[1]});
+    terms.push_back({"angular_momentum_z", angular[2]});
   }
   return terms;
 }

@@ -48,10 +48,11 @@ public:
   State<D>& state() { return state_; }
   const SimulationInfo& info() const { return info_; }
   const Parameters<D>& parameters() const { return parameters_; }
-  // Kinetic, volumetric (eq. 29), shear (eq. 31 or 35) and penalty (eq. 39) energy, eq. (24).
+  // Kinetic, volumetric (eq. 29), shear (eq. 31 or 35) and penalty (eq. 39) energy, eq. (24);
+  // with relaxation also the energy it has removed ("dissipated"), so that the total is conserved.
   EnergyBudget energy();
   void derived_views(const ViewSink& sink);
-  // The probe particle's position, if the case names a probe point.
+  // The probe particle's position (if the case names a probe point) and the angular momentum.
   std::vector<EnergyTerm> diagnostics();
   void invalidate_derived() {
     constants_valid_ = false;
@@ -76,7 +77,7 @@ private:
 
   // Per carrier, canonical order.
   struct ParticleEnergies {
-    std::vector<double> kinetic, bulk, shear, penalty;
+    std::vector<double> kinetic, bulk, shear, penalty, dissipated;
   };
   struct CarrierValues {
     std::vector<double> density, lambda;
@@ -94,6 +95,8 @@ private:
     return a < material_count() ? a : a - material_count();
   }
   ExactDistortion<D> distortion_of(std::size_t a);
+  // The relaxation of eqs. (51)-(53) over dt, adding the energy per mass it removes.
+  bool relax(ExactDistortion<D>& distortion, std::int64_t& dissipated, double dt) const;
   void update_constants();
   void update_geometry();
   void update_force();

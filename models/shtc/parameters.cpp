@@ -53,6 +53,31 @@ void read_material(const CaseFile& case_file, ElasticMaterial& material) {
   }
 }
 
+// tau from relaxation_time or from the kinematic viscosity (eqs. 65, 69); absent: elastic.
+std::optional<double> read_relaxation_time(const CaseFile& case_file,
+                                           const ElasticMaterial& material) {
+  const bool has_tau = case_file.has("material.relaxation_time");
+  const bool has_viscosity = case_file.has("material.kinematic_viscosity");
+  if (has_tau && has_viscosity) {
+    case_file.fail("material.relaxation_time",
+                   "give either relaxation_time or kinematic_viscosity, not both");
+  }
+  if (!has_tau && !has_viscosity) {
+    return std::nullopt;
+  }
+  if (!(material.shear_speed > 0.0)) {
+    case_file.fail(has_tau ? "material.relaxation_time" : "material.kinematic_viscosity",
+                   "relaxation needs a shear energy: shear_speed must be > 0");
+  }
+  const double tau = has_tau ? case_file.positive_number("material.relaxation_time")
+                             : 6.0 * case_file.positive_number("material.kinematic_viscosity") /
+                                   (material.shear_speed * material.shear_speed);
+  require_positive_finite(case_file,
+                          has_tau ? "material.relaxation_time" : "material.kinematic_viscosity",
+                          "the relaxation time tau", tau);
+  return tau;
+}
+
 template <int D>
 void read_initial_field(const CaseFile& case_file, Parameters<D>& p) {
   const std::string field = case_file.string_or("initial.field", "rest");
@@ -89,6 +114,7 @@ template <int D>
 Parameters<D> read_parameters(const CaseFile& case_file) {
   Parameters<D> p;
   read_material(case_file, p.material);
+  p.relaxation_time = read_relaxation_time(case_file, p.material);
   p.penalty_speed = case_file.number_or("penalty.speed", 0.0);
   if (!(p.penalty_speed >= 0.0) || !std::isfinite(p.penalty_speed)) {
     case_file.fail("penalty.speed", "must be >= 0 and finite (0: no tensile penalty)");
@@ -130,13 +156,15 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
 
   // Default scales: positions keep 52 fraction bits below the domain size (their double view is
   // exact); velocities resolve c0 * 2^-50 and reach 2^13 c0; the constants resolve rho0 * 2^-48;
-  // log det A resolves 2^-50 and U 2^-48 (|U_ij| < 2^15).
+  // the dissipated energy per mass c0^2 2^-48; log det A resolves 2^-50 and U 2^-48 (|U| < 2^15).
   p.position_scale =
       scale_or(case_file, "fixed_point.position_exponent", p.domain.max_abs_coordinate(), 52);
   p.velocity_scale =
       scale_or(case_file, "fixed_point.velocity_exponent", p.material.sound_speed, 50);
   p.density_scale =
       scale_or(case_file, "fixed_point.density_exponent", p.material.rest_density, 48);
+  p.dissipated_scale = scale_or(case_file, "fixed_point.dissipated_exponent",
+                                p.material.sound_speed * p.material.sound_speed, 48);
   p.distortion_scales.log_det = scale_or(case_file, "fixed_point.log_det_exponent", 1.0, 50);
   p.distortion_scales.unimodular = scale_or(case_file, "fixed_point.unimodular_exponent", 1.0, 48);
   return p;

@@ -38,6 +38,9 @@ template <int D>
 struct Parameters {
   // [material]
   ElasticMaterial material;
+  // tau of eqs. (51)-(53), from relaxation_time or kinematic_viscosity (tau = 6 nu / cs^2,
+  // eqs. 65, 69); none: an elastic solid (tau = infinity)
+  std::optional<double> relaxation_time;
   // [penalty]: the tensile penalty of eqs. (39)–(42); cp = 0 switches it off
   double penalty_speed = 0.0;
   // [discretisation]
@@ -55,8 +58,9 @@ struct Parameters {
   // [fixed_point]
   fixedpoint::Scale position_scale;
   fixedpoint::Scale velocity_scale;
-  fixedpoint::Scale density_scale; // of the constants C_rho and C_lambda
-  fixedpoint::Scale mass_scale;    // set at setup from the largest mass
+  fixedpoint::Scale density_scale;    // of the constants C_rho and C_lambda
+  fixedpoint::Scale dissipated_scale; // of the energy per mass removed by the relaxation
+  fixedpoint::Scale mass_scale;       // set at setup from the largest mass
   DistortionScales distortion_scales;
 
   double support_radius() const { return 2.0 * smoothing_length; }

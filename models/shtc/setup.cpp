@@ -62,8 +62,10 @@ void fill_vectors(const CaseFile& case_file, const std::vector<Vec<D>>& values,
 // A = I for every particle: the material starts undistorted.
 template <int D>
 void set_undistorted(const CaseFile& case_file, const DistortionScales& scales,
-                     ParticleSetState<D>& set, std::size_t count) {
+                     const fixedpoint::Scale& dissipated_scale, ParticleSetState<D>& set,
+                     std::size_t count) {
   set.log_det.info().scale = scales.log_det;
+  set.dissipated_energy.info().scale = dissipated_scale;
   set.unimodular.info().scale = scales.unimodular;
   set.resize(count);
   ExactDistortion<D> identity;
@@ -112,10 +114,10 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   fill_vectors<D>(case_file, material_positions, state.position, "position");
   fill_vectors<D>(case_file, velocities, state.velocity, "velocity");
   fill_vectors<D>(case_file, boundary_positions, state.boundary_position, "position");
-  set_undistorted<D>(case_file, parameters.distortion_scales, state.material,
-                     material_positions.size());
-  set_undistorted<D>(case_file, parameters.distortion_scales, state.boundary,
-                     boundary_positions.size());
+  set_undistorted<D>(case_file, parameters.distortion_scales, parameters.dissipated_scale,
+                     state.material, material_positions.size());
+  set_undistorted<D>(case_file, parameters.distortion_scales, parameters.dissipated_scale,
+                     state.boundary, boundary_positions.size());
 
   SimulationInfo info;
   info.case_name = case_name(case_file);
@@ -128,6 +130,12 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   info.setup_report.emplace_back("dt", scientific(parameters.dt));
   info.setup_report.emplace_back("sound_speed", scientific(parameters.material.sound_speed));
   info.setup_report.emplace_back("shear_speed", scientific(parameters.material.shear_speed));
+  if (parameters.relaxation_time) {
+    info.setup_report.emplace_back("relaxation_time", scientific(*parameters.relaxation_time));
+    info.irreversible_terms.push_back(
+        "relaxation of the distortion, tau = " + scientific(*parameters.relaxation_time) +
+        " s (paper 2 eqs. 51-53)");
+  }
 
   std::optional<std::size_t> probe;
   if (parameters.probe) {

@@ -20,6 +20,9 @@ struct ParticleSetState {
   // (row-major, D * D components).
   StateField<std::int64_t> log_det;
   StateField<std::int64_t> unimodular;
+  // Energy per mass removed by the relaxation so far (eqs. 51-53; zero for an elastic solid): with
+  // it the energy budget closes in a dissipative case.
+  StateField<std::int64_t> dissipated_energy;
   // Constants of the setup: masses and the integration constants C_rho (eq. 7), C_lambda (eq. 40).
   StateField<std::int64_t> mass;
   StateField<std::int64_t> density_constant;
@@ -28,6 +31,7 @@ struct ParticleSetState {
   explicit ParticleSetState(const char* set)
       : log_det({set, "distortion_log_det", "1", Parity::even, 1, {}, true}),
         unimodular({set, "distortion_unimodular", "1", Parity::even, D * D, {}, true}),
+        dissipated_energy({set, "dissipated_specific_energy", "J/kg", Parity::even, 1, {}, true}),
         mass({set, "mass", D == 2 ? "kg/m" : "kg", Parity::even, 1, {}, false}),
         density_constant({set, "density_constant", "kg/m^3", Parity::even, 1, {}, false}),
         lambda_constant({set, "lambda_constant", "kg/m^3", Parity::even, 1, {}, false}) {}
@@ -36,6 +40,7 @@ struct ParticleSetState {
   void for_each_field(Visit& visit) {
     visit(log_det);
     visit(unimodular);
+    visit(dissipated_energy);
     visit(mass);
     visit(density_constant);
     visit(lambda_constant);
@@ -44,6 +49,7 @@ struct ParticleSetState {
   void resize(std::size_t count) {
     log_det.resize(count);
     unimodular.resize(count);
+    dissipated_energy.resize(count);
     mass.resize(count);
     density_constant.resize(count);
     lambda_constant.resize(count);
