@@ -303,7 +303,7 @@ const std::vector<Defect>& defects() {
        "shape = \"box\"\nlattice = \"square\"",
        "shape = \"box\"\nlattice = \"hexagnal\"",
        "particles[0].lattice",
-       {"\"square\", \"hexagonal\" or \"vogel\"", "hexagnal"}},
+       {"\"square\", \"hexagonal\", \"bcc\" or \"vogel\"", "hexagnal"}},
       {"unknown_shape",
        "shape = \"box\"",
        "shape = \"sphere\"",

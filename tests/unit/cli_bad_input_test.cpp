@@ -241,7 +241,7 @@ const std::vector<Defect>& defects() {
        "shape = \"box\"\nlattice = \"square\"",
        "shape = \"box\"\nlattice = \"hexagnal\"",
        "particles[0].lattice",
-       {"expected \"square\", \"hexagonal\" or \"vogel\", got \"hexagnal\""}},
+       {"expected \"square\", \"hexagonal\", \"bcc\" or \"vogel\", got \"hexagnal\""}},
       {"min_with_three_components",
        "min = [-0.1, -0.1]",
        "min = [-0.1, -0.1, -0.1]",
