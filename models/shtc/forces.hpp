@@ -37,12 +37,7 @@ void compute_acceleration(const WendlandQuintic<D>& kernel, double penalty_stren
   pairs.for_each_slot([&](std::uint32_t a, std::span<const std::uint32_t> partners) {
     for (const std::uint32_t b : partners) {
       Eigen::Matrix<double, D, 1> x_ab;
-      double r_squared = 0.0;
-      for (int k = 0; k < D; ++k) {
-        x_ab(k) = x[k][a] - x[k][b];
-        r_squared += x_ab(k) * x_ab(k);
-      }
-      const double r = std::sqrt(r_squared);
+      const double r = std::sqrt(separation<D>(x, a, b, x_ab));
       const Eigen::Matrix<double, D, 1> kernel_gradient = kernel.derivative_over_r(r) * x_ab;
       const double penalty =
           penalty_pair_factor<D>(kernel, penalty_strength, lambda[a], lambda[b], r);

@@ -33,6 +33,18 @@ struct KernelSums {
   std::vector<GradientMatrix<D>> h_inverse;
 };
 
+// x_ab = x_a - x_b and |x_ab|^2 (summed over the axes in order), for the pair loops.
+template <int D>
+double separation(const CoordinateView<D>& x, std::uint32_t a, std::uint32_t b,
+                  Eigen::Matrix<double, D, 1>& x_ab) {
+  double r_squared = 0.0;
+  for (int k = 0; k < D; ++k) {
+    x_ab(k) = x[k][a] - x[k][b];
+    r_squared += x_ab(k) * x_ab(k);
+  }
+  return r_squared;
+}
+
 // H^-1, or zero when H is singular relative to its own scale (too few neighbours, not a small
 // kernel).
 template <int D>
@@ -66,12 +78,7 @@ void compute_kernel_sums(const WendlandQuintic<D>& kernel, const CoordinateView<
   pairs.for_each_slot([&](std::uint32_t a, std::span<const std::uint32_t> partners) {
     for (const std::uint32_t b : partners) {
       Eigen::Matrix<double, D, 1> x_ab;
-      double r_squared = 0.0;
-      for (int k = 0; k < D; ++k) {
-        x_ab(k) = x[k][a] - x[k][b];
-        r_squared += x_ab(k) * x_ab(k);
-      }
-      const double r = std::sqrt(r_squared);
+      const double r = std::sqrt(separation<D>(x, a, b, x_ab));
       const double w = kernel.value(r);
       const double scale_derivative = kernel.scale_derivative(r);
       const GradientMatrix<D> position_term =

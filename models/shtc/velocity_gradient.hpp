@@ -34,14 +34,10 @@ void velocity_gradients(const WendlandQuintic<D>& kernel, const CoordinateView<D
     for (const std::uint32_t b : partners) {
       Eigen::Matrix<double, D, 1> x_ab;
       Eigen::Matrix<double, D, 1> v_ab;
-      double r_squared = 0.0;
-      for (int k = 0; k < D; ++k) {
-        x_ab(k) = x[k][a] - x[k][b];
-        v_ab(k) = v[k][a] - v[k][b];
-        r_squared += x_ab(k) * x_ab(k);
-      }
+      const double r = std::sqrt(separation<D>(x, a, b, x_ab));
+      separation<D>(v, a, b, v_ab);
       const GradientMatrix<D> velocity_term =
-          v_ab * (kernel.derivative_over_r(std::sqrt(r_squared)) * x_ab).transpose();
+          v_ab * (kernel.derivative_over_r(r) * x_ab).transpose();
       velocity_sum[a] += mass[b] * velocity_term;
       velocity_sum[b] += mass[a] * velocity_term;
     }
