@@ -1,5 +1,6 @@
 #include "models/shtc/model.hpp"
 
+#include "core/cell_order.hpp"
 #include "core/verlet.hpp"
 #include "models/shtc/elastic_energy.hpp"
 #include "models/shtc/forces.hpp"
@@ -215,28 +216,19 @@ void Model<D>::update_geometry() {
   }
   update_constants();
   const std::size_t n = carrier_count();
-  auto coordinate = [&](int axis, std::size_t a) { return real_position(axis, a); };
-  try {
-    carrier_cells_.build(n, coordinate);
-  } catch (const PointOutsideDomain& outside) {
-    const std::size_t a = outside.index();
-    throw SimulationFault({set_name(a), index_in_set(a), "position",
-                           "left the domain: " + std::string(outside.what())},
-                          -1);
-  }
+  sort_into_cells<D>(
+      carrier_cells_, n, [&](int axis, std::size_t a) { return real_position(axis, a); },
+      [&](std::size_t a) {
+        return std::pair{set_name(a), index_in_set(a)};
+      },
+      slot_position_);
   const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
-  for (int k = 0; k < D; ++k) {
-    slot_position_[k].resize(n);
-  }
   slot_mass_.resize(n);
   slot_density_constant_.resize(n);
   slot_lambda_constant_.resize(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < n; ++s) {
     const std::uint32_t a = carrier_of_slot[s];
-    for (int k = 0; k < D; ++k) {
-      slot_position_[k][s] = real_position(k, a);
-    }
     slot_mass_[s] = mass_[a];
     slot_density_constant_[s] = density_constant_[a];
     slot_lambda_constant_[s] = lambda_constant_[a];
@@ -323,8 +315,7 @@ typename Model<D>::CarrierValues Model<D>::carrier_values() {
 }
 
 template <int D>
-typename Model<D>::ParticleEnergies Model<D>::particle_energies() {
-  const CarrierValues values = carrier_values();
+typename Model<D>::ParticleEnergies Model<D>::particle_energies(const CarrierValues& values) {
   const std::size_t n = carrier_count();
   const ElasticMaterial& material = parameters_.material;
   const double cp = parameters_.penalty_speed;
@@ -354,7 +345,7 @@ typename Model<D>::ParticleEnergies Model<D>::particle_energies() {
 
 template <int D>
 EnergyBudget Model<D>::energy() {
-  const ParticleEnergies energies = particle_energies();
+  const ParticleEnergies energies = particle_energies(carrier_values());
   // Serial sums in particle order: the same value for any thread count.
   auto total = [](const std::vector<double>& values) {
     double sum = 0.0;
@@ -375,8 +366,8 @@ EnergyBudget Model<D>::energy() {
 
 template <int D>
 void Model<D>::derived_views(const ViewSink& sink) {
-  ParticleEnergies energies = particle_energies();
   const CarrierValues values = carrier_values();
+  ParticleEnergies energies = particle_energies(values);
   const std::string energy_unit = D == 2 ? "J/m" : "J";
   const std::size_t material = material_count();
   const std::size_t n = carrier_count();

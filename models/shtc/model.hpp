@@ -101,7 +101,7 @@ private:
   void update_geometry();
   void update_force();
   CarrierValues carrier_values();
-  ParticleEnergies particle_energies();
+  ParticleEnergies particle_energies(const CarrierValues& values);
 
   Parameters<D> parameters_;
   SimulationInfo info_;

@@ -3,17 +3,13 @@
 //   lambda_a = sum_b m_b h dw_ab/dh + C_lambda,a   (40, the sum includes b = a; kernel_sums.hpp)
 //   P_h      = 1/2 sum_a m_a cp^2 (lambda_a / rho0)^2               (39)
 //   a_a      = -sum_b m_b cp^2 (lambda_a + lambda_b) / rho0^2 (h/r) d2w/(dr dh) x_ab   (41, 42)
-// over the pairs of a HalfPairList (arrays indexed by slot). The acceleration is exactly
-// -grad_a P_h / m_a (tests/unit/shtc_tensile_penalty_test.cpp checks it against finite
-// differences of P_h). Sums in double, in the pair list's order (the same for any thread count).
+// The pair loop that adds the acceleration is forces.hpp's, with the stress; the acceleration is
+// exactly -grad_a P_h / m_a (tests/unit/shtc_tensile_penalty_test.cpp checks it against finite
+// differences of P_h).
 
-#include "core/geometry.hpp"
 #include "core/kernel_wendland.hpp"
-#include "core/pair_list.hpp"
 
-#include <cmath>
 #include <span>
-#include <vector>
 
 namespace revsph::shtc {
 
@@ -45,29 +41,6 @@ double penalty_pair_factor(const WendlandQuintic<D>& kernel, double strength, do
 inline double penalty_strength(const PenaltyParameters& parameters) {
   return parameters.penalty_speed * parameters.penalty_speed /
          (parameters.rest_density * parameters.rest_density);
-}
-
-// Adds the penalty acceleration (eq. 42, second line) to `acceleration` (forces.hpp adds it with
-// the stress force in one pass; this one alone is tested against -grad P_h).
-template <int D>
-void add_penalty_acceleration(const WendlandQuintic<D>& kernel, const PenaltyParameters& parameters,
-                              const CoordinateView<D>& x, std::span<const double> mass,
-                              std::span<const double> lambda, const HalfPairList& pairs,
-                              CoordinateArrays<D>& acceleration) {
-  const double strength = penalty_strength(parameters);
-  pairs.for_each_slot([&](std::uint32_t a, std::span<const std::uint32_t> partners) {
-    for (const std::uint32_t b : partners) {
-      std::array<double, D> d{};
-      const double r_squared = squared_distance<D>(x, a, b, d);
-      // Common factor of the pair; a gets -m_b factor x_ab, b gets -m_a factor x_ba.
-      const double factor =
-          penalty_pair_factor<D>(kernel, strength, lambda[a], lambda[b], std::sqrt(r_squared));
-      for (int k = 0; k < D; ++k) {
-        acceleration[k][a] -= mass[b] * factor * d[k];
-        acceleration[k][b] += mass[a] * factor * d[k];
-      }
-    }
-  });
 }
 
 } // namespace revsph::shtc

@@ -1,5 +1,6 @@
 #include "models/wcsph/model.hpp"
 
+#include "core/cell_order.hpp"
 #include "core/verlet.hpp"
 #include "models/wcsph/equations.hpp"
 #include "models/wcsph/forces.hpp"
@@ -135,28 +136,19 @@ void Model<D, Arith>::update_derived() {
   const std::size_t fluid = fluid_count();
   const std::size_t carriers = mass_.size();
   // Straight from the fixed-point state: no copy of all coordinates in doubles.
-  auto coordinate = [&](int axis, std::size_t a) { return real_position(axis, a); };
-  try {
-    carrier_cells_.build(carriers, coordinate);
-  } catch (const PointOutsideDomain& outside) {
-    const std::size_t a = outside.index();
-    throw SimulationFault({carrier_set(a, fluid), index_in_set(a, fluid), "position",
-                           "left the domain: " + std::string(outside.what())},
-                          -1);
-  }
-  // Gather the carriers into cell order.
+  sort_into_cells<D>(
+      carrier_cells_, carriers, [&](int axis, std::size_t a) { return real_position(axis, a); },
+      [&](std::size_t a) {
+        return std::pair{carrier_set(a, fluid), index_in_set(a, fluid)};
+      },
+      slot_position_);
+  // Gather the other carrier arrays into cell order.
   const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
-  for (int k = 0; k < D; ++k) {
-    slot_position_[k].resize(carriers);
-  }
   slot_mass_.resize(carriers);
   slot_density_constant_.resize(carriers);
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < carriers; ++s) {
     const std::uint32_t a = carrier_of_slot[s];
-    for (int k = 0; k < D; ++k) {
-      slot_position_[k][s] = real_position(k, a);
-    }
     slot_mass_[s] = mass_[a];
     slot_density_constant_[s] = a < fluid ? state_.density_constant.at(0, a)
                                           : state_.dummy_density_constant.at(0, a - fluid);

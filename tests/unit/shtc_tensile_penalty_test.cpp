@@ -1,7 +1,9 @@
 // The tensile penalty of SHTC-SPH (models/shtc/tensile_penalty.hpp): lambda against an all-pairs
-// sum, and the penalty acceleration against central differences of the penalty energy P_h
+// sum, and the penalty acceleration (the force loop of forces.hpp with zero stress) against
+// central differences of the penalty energy P_h
 // (eqs. 39–42): the force must be exactly -grad P_h for the energy to be conserved.
 
+#include "models/shtc/forces.hpp"
 #include "models/shtc/tensile_penalty.hpp"
 
 #include "cell_ordered_cloud.hpp"
@@ -62,12 +64,13 @@ TYPED_TEST(ShtcTensilePenalty, AccelerationIsMinusTheEnergyGradient) {
         << "slot " << a;
   }
 
+  // The force loop with zero stress leaves the penalty acceleration alone.
+  const std::vector<revsph::shtc::GradientMatrix<D>> no_stress(
+      n, revsph::shtc::GradientMatrix<D>::Zero());
   CoordinateArrays<D> acceleration;
-  for (int k = 0; k < D; ++k) {
-    acceleration[k].assign(n, 0.0);
-  }
-  revsph::shtc::add_penalty_acceleration<D>(kernel, parameters, revsph::view_of<D>(cloud.x),
-                                            cloud.mass, lambda, cloud.pairs, acceleration);
+  revsph::shtc::compute_acceleration<D>(kernel, revsph::shtc::penalty_strength(parameters),
+                                        revsph::view_of<D>(cloud.x), cloud.mass, no_stress, lambda,
+                                        cloud.pairs, acceleration);
 
   auto energy_at = [&](const CoordinateArrays<D>& x) {
     return revsph::shtc::penalty_energy<D>(parameters, cloud.mass,
