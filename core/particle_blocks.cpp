@@ -2,6 +2,7 @@
 
 #include "core/memory.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -206,7 +207,37 @@ Box<D> read_domain(const CaseFile& case_file) {
 
 namespace {
 
-enum class Shape { box, container };
+enum class Shape { box, container, annulus };
+
+// Concentric rings filling the annulus inner_radius < |x - centre| < outer_radius (2D): as many
+// rings as spacings fit across it, each at the middle of its band, with round(2 pi r / spacing)
+// equally spaced points, odd rings turned by half a step. Every point then stands for about
+// spacing^2, and the walls of a circular domain are smooth circles (a lattice cut by a circle
+// leaves steps a fluid would feel as roughness).
+struct AnnulusSpec {
+  Vec<2> centre{};
+  double inner_radius = 0.0;
+  double outer_radius = 0.0;
+};
+
+std::vector<Vec<2>> ring_points(const AnnulusSpec& annulus, double spacing) {
+  const double width = annulus.outer_radius - annulus.inner_radius;
+  const long rings = std::max(1L, std::lround(width / spacing));
+  std::vector<Vec<2>> points;
+  for (long ring = 0; ring < rings; ++ring) {
+    const double radius = annulus.inner_radius +
+                          (static_cast<double>(ring) + 0.5) * width / static_cast<double>(rings);
+    const long count = std::max(1L, std::lround(2.0 * std::numbers::pi * radius / spacing));
+    const double step = 2.0 * std::numbers::pi / static_cast<double>(count);
+    const double offset = ring % 2 == 1 ? 0.5 * step : 0.0;
+    for (long k = 0; k < count; ++k) {
+      const double angle = offset + static_cast<double>(k) * step;
+      points.push_back(Vec<2>{annulus.centre[0] + radius * std::cos(angle),
+                              annulus.centre[1] + radius * std::sin(angle)});
+    }
+  }
+  return points;
+}
 
 // A block as read from the case, before its particles are generated.
 template <int D>
@@ -218,6 +249,7 @@ struct BlockSpec {
   double spacing = 0.0;
   Box<D> region;
   Box<D> outer; // the region grown by a container's layers (the region itself for a box)
+  AnnulusSpec annulus;
 };
 
 template <int D>
@@ -227,6 +259,35 @@ double volume_of(const Box<D>& box) {
     volume *= box.max[k] - box.min[k];
   }
   return volume;
+}
+
+template <int D>
+void read_annulus(const CaseFile& case_file, BlockSpec<D>& spec) {
+  auto field = [&](const char* name) { return spec.key + "." + name; };
+  if constexpr (D != 2) {
+    case_file.fail(field("shape"), "an \"annulus\" block is two-dimensional");
+  } else {
+    if (case_file.has(field("lattice"))) {
+      case_file.fail(field("lattice"), "an annulus is filled with concentric rings, not a lattice");
+    }
+    spec.shape = Shape::annulus;
+    spec.annulus.centre = to_vec<2>(case_file.numbers(field("centre"), 2));
+    spec.annulus.inner_radius = case_file.number(field("inner_radius"));
+    spec.annulus.outer_radius = case_file.positive_number(field("outer_radius"));
+    if (!(spec.annulus.inner_radius >= 0.0) ||
+        !(spec.annulus.inner_radius < spec.annulus.outer_radius)) {
+      case_file.fail(field("inner_radius"), "must be at least 0 and less than outer_radius");
+    }
+    if (!(spec.annulus.outer_radius - spec.annulus.inner_radius >= spec.spacing)) {
+      case_file.fail(field("outer_radius"),
+                     "the annulus must be at least one spacing wide (outer - inner radius)");
+    }
+    for (int k = 0; k < 2; ++k) {
+      spec.region.min[k] = spec.annulus.centre[k] - spec.annulus.outer_radius;
+      spec.region.max[k] = spec.annulus.centre[k] + spec.annulus.outer_radius;
+    }
+    spec.outer = spec.region;
+  }
 }
 
 template <int D>
@@ -268,6 +329,11 @@ BlockSpec<D> read_block(const CaseFile& case_file, std::size_t index, double def
   if (case_file.has(field("spacing"))) {
     spec.spacing = case_file.positive_number(field("spacing"));
   }
+  const std::string shape = case_file.string_or(field("shape"), "box");
+  if (shape == "annulus") {
+    read_annulus<D>(case_file, spec);
+    return spec;
+  }
   spec.region = Box<D>{to_vec<D>(case_file.numbers(field("min"), D)),
                        to_vec<D>(case_file.numbers(field("max"), D))};
   for (int k = 0; k < D; ++k) {
@@ -276,7 +342,6 @@ BlockSpec<D> read_block(const CaseFile& case_file, std::size_t index, double def
     }
   }
   spec.outer = spec.region;
-  const std::string shape = case_file.string_or(field("shape"), "box");
   if (shape == "container") {
     spec.shape = Shape::container;
     if (spec.lattice == Lattice::vogel || spec.lattice == Lattice::body_centred_cubic) {
@@ -296,7 +361,8 @@ BlockSpec<D> read_block(const CaseFile& case_file, std::size_t index, double def
       }
     }
   } else if (shape != "box") {
-    case_file.fail(field("shape"), "expected \"box\" or \"container\", got \"" + shape + "\"");
+    case_file.fail(field("shape"),
+                   "expected \"box\", \"container\" or \"annulus\", got \"" + shape + "\"");
   } else if (case_file.has(field("layers")) || case_file.has(field("open_top"))) {
     case_file.fail(case_file.has(field("layers")) ? field("layers") : field("open_top"),
                    "only a \"container\" block has layers and open_top");
@@ -313,6 +379,15 @@ double estimated_particles(const BlockSpec<D>& spec) {
   const Vec<D> period = lattice_periods<D>(spec.lattice, spec.spacing);
   for (int k = 0; k < D; ++k) {
     padded.max[k] += period[k];
+  }
+  if constexpr (D == 2) {
+    if (spec.shape == Shape::annulus) {
+      const AnnulusSpec& a = spec.annulus;
+      const double width = a.outer_radius - a.inner_radius;
+      return std::numbers::pi * (a.outer_radius + a.inner_radius + 2.0 * spec.spacing) *
+                 (width + spec.spacing) / (spec.spacing * spec.spacing) +
+             1.0;
+    }
   }
   const double hollow = spec.shape == Shape::container ? volume_of<D>(spec.region) : 0.0;
   return (volume_of<D>(padded) - hollow) / lattice_cell_volume<D>(spec.lattice, spec.spacing);
@@ -347,6 +422,14 @@ ParticleBlock<D> generate_block(const CaseFile& case_file, const BlockSpec<D>& s
   block.volume_per_particle = lattice_cell_volume<D>(spec.lattice, spec.spacing);
   if (spec.shape == Shape::box) {
     block.positions = lattice_points<D>(spec.lattice, spec.region, spec.spacing);
+  } else if (spec.shape == Shape::annulus) {
+    if constexpr (D == 2) {
+      block.positions = ring_points(spec.annulus, spec.spacing);
+      block.volume_per_particle = std::numbers::pi *
+                                  (spec.annulus.outer_radius * spec.annulus.outer_radius -
+                                   spec.annulus.inner_radius * spec.annulus.inner_radius) /
+                                  static_cast<double>(block.positions.size());
+    }
   } else {
     block.positions =
         lattice_points_outside<D>(spec.lattice, spec.outer, spec.spacing, &spec.region);

@@ -5,7 +5,10 @@
 //   kind    = "fluid"            which particle set (the model says which kinds exist)
 //   shape   = "box"              "box": the region [min, max] filled;
 //                                "container": `layers` lattice layers around the box [min, max]
-//                                (its walls), with `open_top = true` leaving the top open
+//                                (its walls), with `open_top = true` leaving the top open;
+//                                "annulus" (2D): concentric rings filling inner_radius < |x -
+//                                centre| < outer_radius (keys centre, inner_radius, outer_radius;
+//                                no lattice, no min/max)
 //   lattice = "square"           "square", "hexagonal" (2D: triangular; 3D: hexagonal close
 //                                packed), "bcc" (3D: body-centred cubic, cube side `spacing`,
 //                                two particles per cube) or "vogel" (2D: a Vogel spiral about

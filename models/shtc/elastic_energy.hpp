@@ -94,13 +94,20 @@ Tensor<D> shear_energy_derivative(const ElasticMaterial& material, const Tensor<
   return derivative.topLeftCorner<D, D>();
 }
 
+// The part A^T eps_A H^-1 of T that comes from the distortion: its force is the one paired with
+// the velocities in L (eq. 10), hence the power a wall with a prescribed velocity feeds in.
+template <int D>
+Tensor<D> shear_stress(const ElasticMaterial& material, const Tensor<D>& distortion,
+                       const Tensor<D>& h_inverse) {
+  return distortion.transpose() * shear_energy_derivative<D>(material, distortion) * h_inverse;
+}
+
 // T = -eps_rho I + A^T eps_A H^-1 (eq. 21b), with eps_rho = p / rho^2.
 template <int D>
 Tensor<D> stress(const ElasticMaterial& material, double density, const Tensor<D>& distortion,
                  const Tensor<D>& h_inverse) {
   const double eps_rho = pressure(material, density) / (density * density);
-  return -eps_rho * Tensor<D>::Identity() +
-         distortion.transpose() * shear_energy_derivative<D>(material, distortion) * h_inverse;
+  return -eps_rho * Tensor<D>::Identity() + shear_stress<D>(material, distortion, h_inverse);
 }
 
 } // namespace revsph::shtc

@@ -66,6 +66,29 @@ ExactDistortion<D> Model<D>::distortion_of(std::size_t a) {
 }
 
 template <int D>
+Vec<D> Model<D>::wall_velocity_now(std::size_t i) const {
+  const std::int64_t clock = state_.drive_time.at(0, i);
+  Vec<D> v{};
+  if (clock == 0) {
+    return v;
+  }
+  const double time = fixedpoint::to_real(clock, state_.drive_time.info().scale);
+  // Odd in the clock: a reversed run pretends the opposite velocity at the same |t|.
+  const double factor = std::copysign(parameters_.drive_ramp(std::fabs(time)), time);
+  for (int k = 0; k < D; ++k) {
+    v[k] = factor *
+           fixedpoint::to_real(state_.wall_velocity.at(k, i), state_.wall_velocity.info().scale);
+  }
+  return v;
+}
+
+template <int D>
+bool Model<D>::walls_move() const {
+  return std::any_of(state_.wall_velocity.all().begin(), state_.wall_velocity.all().end(),
+                     [](std::int64_t v) { return v != 0; });
+}
+
+template <int D>
 void Model<D>::initialise_constants() {
   const std::size_t n = carrier_count();
   // Unit masses and no constants: the density sums are then sum_b w_ab.
@@ -120,6 +143,13 @@ template <int D>
 void Model<D>::drift(double dt) {
   FaultRecorder faults;
   revsph::drift<FixedArithmetic>(state_.position, state_.velocity, dt, faults);
+  // The walls' clock runs forward by dt whatever the direction of time: drive_time holds the
+  // direction in its sign (state.hpp), so R drift R drift = id holds for it too.
+  const auto tick = static_cast<std::int64_t>(
+      std::llround(dt / fixedpoint::to_real(1, state_.drive_time.info().scale)));
+  for (std::int64_t& clock : state_.drive_time.all()) {
+    clock += tick;
+  }
   geometry_valid_ = false;
   force_valid_ = false;
 }
@@ -140,6 +170,12 @@ void Model<D>::update_distortion(double dt) {
     for (int k = 0; k < D; ++k) {
       slot_velocity_[k][s] =
           a < material ? fixedpoint::to_real(state_.velocity.at(k, a), v_scale) : 0.0;
+    }
+    if (a >= material) {
+      const Vec<D> wall = wall_velocity_now(a - material); // eq. (10) with the wall's velocity
+      for (int k = 0; k < D; ++k) {
+        slot_velocity_[k][s] = wall[k];
+      }
     }
   }
   velocity_gradients<D>(kernel_, view_of<D>(slot_position_), view_of<D>(slot_velocity_), slot_mass_,
@@ -177,7 +213,8 @@ bool Model<D>::relax(ExactDistortion<D>& distortion, std::int64_t& dissipated, d
   // particle's dissipated energy, so that the budget of energy() closes.
   const ElasticMaterial& material = parameters_.material;
   const Matrix<D> before = to_matrix<D>(distortion, parameters_.distortion_scales);
-  const Matrix<D> after = relax_distortion<D>(material, *parameters_.relaxation_time, before, dt);
+  const Matrix<D> after =
+      relax_distortion<D>(material, parameters_.relaxation_splitting, before, dt);
   const double removed = shear_energy<D>(material, before) - shear_energy<D>(material, after);
   return try_make_distortion<D>(after, parameters_.distortion_scales, distortion) &&
          FixedArithmetic::try_increment(dissipated, removed, parameters_.dissipated_scale);
@@ -398,6 +435,16 @@ void Model<D>::derived_views(const ViewSink& sink) {
     sink(ParticleView{range.set, "pressure", "Pa", 1, std::move(pressure_values)});
     sink(ParticleView{range.set, "lambda", "kg/m^3", 1, slice(values.lambda)});
     sink(ParticleView{range.set, "distortion", "1", D * D, std::move(distortion)});
+    if (range.first != 0 && walls_move()) {
+      std::vector<double> wall(count * D);
+      for (std::size_t i = 0; i < count; ++i) {
+        const Vec<D> v = wall_velocity_now(i);
+        for (int k = 0; k < D; ++k) {
+          wall[static_cast<std::size_t>(k) * count + i] = v[k];
+        }
+      }
+      sink(ParticleView{range.set, "velocity", "m/s", D, std::move(wall)});
+    }
     if (range.first == 0) {
       std::vector<double> acceleration_values;
       for (int k = 0; k < D; ++k) {
@@ -415,6 +462,38 @@ void Model<D>::derived_views(const ViewSink& sink) {
           ParticleView{range.set, "dissipated_energy", energy_unit, 1, slice(energies.dissipated)});
     }
   }
+}
+
+template <int D>
+double Model<D>::wall_power() {
+  update_force();
+  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  const std::size_t n = carrier_count();
+  const std::size_t material = material_count();
+  std::vector<GradientMatrix<D>> shear(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < n; ++s) {
+    shear[s] = shear_stress<D>(parameters_.material, slot_distortion_[s], sums_.h_inverse[s]);
+  }
+  CoordinateArrays<D> shear_acceleration;
+  compute_acceleration<D>(kernel_, 0.0, view_of<D>(slot_position_), slot_mass_, shear, sums_.lambda,
+                          carrier_pairs_, shear_acceleration);
+  std::vector<double> power(n - material, 0.0);
+  for (std::size_t s = 0; s < n; ++s) {
+    const std::uint32_t a = carrier_of_slot[s];
+    if (a < material) {
+      continue;
+    }
+    const Vec<D> v = wall_velocity_now(a - material);
+    for (int k = 0; k < D; ++k) {
+      power[a - material] -= slot_mass_[s] * shear_acceleration[k][s] * v[k];
+    }
+  }
+  double total = 0.0; // serial, in canonical order: the same for any thread count
+  for (const double p : power) {
+    total += p;
+  }
+  return total;
 }
 
 template <int D>
@@ -449,6 +528,9 @@ std::vector<EnergyTerm> Model<D>::diagnostics() {
     terms.push_back({"angular_momentum_x", angular[0]});
     terms.push_back({"angular_momentum_y", angular[1]});
     terms.push_back({"angular_momentum_z", angular[2]});
+  }
+  if (walls_move()) {
+    terms.push_back({"wall_power", wall_power()});
   }
   return terms;
 }

@@ -52,7 +52,8 @@ public:
   // with relaxation also the energy it has removed ("dissipated"), so that the total is conserved.
   EnergyBudget energy();
   void derived_views(const ViewSink& sink);
-  // The probe particle's position (if the case names a probe point) and the angular momentum.
+  // The probe particle's position (if the case names a probe point), the angular momentum and,
+  // with moving walls, the power they feed in.
   std::vector<EnergyTerm> diagnostics();
   void invalidate_derived() {
     constants_valid_ = false;
@@ -95,6 +96,13 @@ private:
     return a < material_count() ? a : a - material_count();
   }
   ExactDistortion<D> distortion_of(std::size_t a);
+  // The velocity boundary particle i pretends now (state.hpp), and whether any wall moves.
+  Vec<D> wall_velocity_now(std::size_t i) const;
+  bool walls_move() const;
+  // P = -sum_b v_b . F_b over the boundary particles, F_b the force of the distortion's stress
+  // on b: with L linear in every velocity, the elastic energy changes by -sum_c v_c . F_c over
+  // all carriers, so this is the rate at which the walls' pretended motion adds energy.
+  double wall_power();
   // The relaxation of eqs. (51)-(53) over dt, adding the energy per mass it removes.
   bool relax(ExactDistortion<D>& distortion, std::int64_t& dissipated, double dt) const;
   void update_constants();

@@ -4,6 +4,7 @@
 #include "core/particle_blocks.hpp"
 
 #include <cmath>
+#include <numbers>
 
 namespace revsph::shtc {
 
@@ -145,7 +146,26 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
     case_file.fail("discretisation.cell_size_factor", "must be between 1 and 100");
   }
 
+  const std::string splitting = case_file.string_or("material.relaxation_splitting", "paper");
+  if (splitting != "paper" && splitting != "matched") {
+    case_file.fail("material.relaxation_splitting",
+                   "expected \"paper\" (eq. 52) or \"matched\", got \"" + splitting + "\"");
+  }
+  if (p.relaxation_time) {
+    p.relaxation_splitting = splitting == "paper" ? paper_splitting(*p.relaxation_time)
+                                                  : matched_splitting(*p.relaxation_time, p.dt);
+  } else if (case_file.has("material.relaxation_splitting")) {
+    case_file.fail(
+        "material.relaxation_splitting",
+        "needs relaxation_time or kinematic_viscosity (an elastic solid does not relax)");
+  }
+
   read_initial_field<D>(case_file, p);
+  p.ramp_time = case_file.number_or("walls.ramp_time", 0.0);
+  if (!(p.ramp_time >= 0.0) || !std::isfinite(p.ramp_time)) {
+    case_file.fail("walls.ramp_time",
+                   "must be >= 0 and finite (0: walls move at full speed at once)");
+  }
   if (case_file.has("probe.point")) {
     const std::vector<double> point = case_file.numbers("probe.point", D);
     Vec<D> probe{};
@@ -167,8 +187,23 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
                                 p.material.sound_speed * p.material.sound_speed, 48);
   p.distortion_scales.log_det = scale_or(case_file, "fixed_point.log_det_exponent", 1.0, 50);
   p.distortion_scales.unimodular = scale_or(case_file, "fixed_point.unimodular_exponent", 1.0, 48);
+  // The walls' clock resolves dt 2^-28 and runs 2^34 steps.
+  p.drive_time_scale =
+      scale_or(case_file, "fixed_point.drive_time_exponent", std::ldexp(p.dt, 24), 52);
   return p;
 }
+
+template <int D>
+double Parameters<D>::drive_ramp(double t) const {
+  if (!(t < ramp_time)) {
+    return 1.0;
+  }
+  const double s = std::sin(0.5 * std::numbers::pi * t / ramp_time);
+  return s * s;
+}
+
+template struct Parameters<2>;
+template struct Parameters<3>;
 
 template Parameters<2> read_parameters<2>(const CaseFile&);
 template Parameters<3> read_parameters<3>(const CaseFile&);

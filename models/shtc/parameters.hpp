@@ -6,6 +6,7 @@
 #include "fixedpoint/scale.hpp"
 #include "models/shtc/distortion.hpp"
 #include "models/shtc/elastic_energy.hpp"
+#include "models/shtc/relaxation.hpp"
 
 #include <optional>
 
@@ -41,6 +42,9 @@ struct Parameters {
   // tau of eqs. (51)-(53), from relaxation_time or kinematic_viscosity (tau = 6 nu / cs^2,
   // eqs. 65, 69); none: an elastic solid (tau = infinity)
   std::optional<double> relaxation_time;
+  // How the relaxation is split from the reversible step: [material] relaxation_splitting =
+  // "paper" (eq. 52, the default) or "matched" (relaxation.hpp: nu kept at any dt / tau)
+  RelaxationSplitting relaxation_splitting;
   // [penalty]: the tensile penalty of eqs. (39)–(42); cp = 0 switches it off
   double penalty_speed = 0.0;
   // [discretisation]
@@ -52,6 +56,9 @@ struct Parameters {
   InitialField initial_field = InitialField::rest;
   BendingPlateField plate;
   TwistingColumnField column;
+  // [walls]: moving walls reach their velocity over ramp_time, as
+  // sin^2(pi t / (2 ramp_time)) (0: at once)
+  double ramp_time = 0.0;
   // [probe]: the material particle nearest to this point at t = 0 is reported in diagnostics.csv
   std::optional<Vec<D>> probe;
   Box<D> domain;
@@ -61,9 +68,12 @@ struct Parameters {
   fixedpoint::Scale density_scale;    // of the constants C_rho and C_lambda
   fixedpoint::Scale dissipated_scale; // of the energy per mass removed by the relaxation
   fixedpoint::Scale mass_scale;       // set at setup from the largest mass
+  fixedpoint::Scale drive_time_scale; // of the walls' clock
   DistortionScales distortion_scales;
 
   double support_radius() const { return 2.0 * smoothing_length; }
+  // The fraction of its full velocity a moving wall has at drive time t >= 0.
+  double drive_ramp(double t) const;
 };
 
 template <int D>

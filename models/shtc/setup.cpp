@@ -4,6 +4,7 @@
 #include "core/run_settings.hpp"
 #include "models/shtc/model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -80,6 +81,50 @@ void set_undistorted(const CaseFile& case_file, const DistortionScales& scales,
   }
 }
 
+// The velocity a boundary block's particle has at full drive: `velocity = [...]` (a translating
+// wall, the cavity's lid) or `angular_velocity = omega` (rad/s) about `rotation_centre` (default
+// the origin; in 3D about the z axis through it), v = omega e_z x (x - c): a rigidly rotating wall
+// (Taylor-Couette's outer ring). Neither: a wall at rest.
+template <int D>
+std::vector<Vec<D>> wall_velocities(const CaseFile& case_file, const ParticleBlock<D>& block) {
+  const std::string velocity_key = block.key + ".velocity";
+  const std::string omega_key = block.key + ".angular_velocity";
+  const std::string centre_key = block.key + ".rotation_centre";
+  const bool translates = case_file.has(velocity_key);
+  const bool rotates = case_file.has(omega_key);
+  if (block.kind != "boundary" && (translates || rotates || case_file.has(centre_key))) {
+    case_file.fail(translates ? velocity_key
+                   : rotates  ? omega_key
+                              : centre_key,
+                   "only a \"boundary\" block is a wall with a prescribed velocity");
+  }
+  if (translates && rotates) {
+    case_file.fail(omega_key, "give a wall either a velocity or an angular_velocity, not both");
+  }
+  if (case_file.has(centre_key) && !rotates) {
+    case_file.fail(centre_key, "rotation_centre needs angular_velocity");
+  }
+  std::vector<Vec<D>> velocities(block.positions.size(), Vec<D>{});
+  if (translates) {
+    const std::vector<double> given = case_file.numbers(velocity_key, D);
+    Vec<D> v{};
+    std::copy(given.begin(), given.end(), v.begin());
+    std::fill(velocities.begin(), velocities.end(), v);
+  } else if (rotates) {
+    const double omega = case_file.number(omega_key);
+    Vec<2> centre{};
+    if (case_file.has(centre_key)) {
+      const std::vector<double> c = case_file.numbers(centre_key, 2);
+      centre = {c[0], c[1]};
+    }
+    for (std::size_t i = 0; i < velocities.size(); ++i) {
+      velocities[i][0] = -omega * (block.positions[i][1] - centre[1]);
+      velocities[i][1] = omega * (block.positions[i][0] - centre[0]);
+    }
+  }
+  return velocities;
+}
+
 std::string scientific(double value) {
   std::ostringstream text;
   text.precision(6);
@@ -94,10 +139,20 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
       read_particle_blocks<D>(case_file, parameters.dr, parameters.domain, particle_kinds,
                               {bytes_per_particle(D, parameters.support_radius() / parameters.dr),
                                options.memory_budget_bytes});
-  std::vector<Vec<D>> material_positions, boundary_positions;
+  std::vector<Vec<D>> material_positions, boundary_positions, boundary_velocities;
+  bool moving_walls = false;
   for (const auto& block : blocks) {
     auto& positions = block.kind == "material" ? material_positions : boundary_positions;
     positions.insert(positions.end(), block.positions.begin(), block.positions.end());
+    const std::vector<Vec<D>> velocities = wall_velocities<D>(case_file, block);
+    if (block.kind == "boundary") {
+      boundary_velocities.insert(boundary_velocities.end(), velocities.begin(), velocities.end());
+      for (const Vec<D>& v : velocities) {
+        for (int k = 0; k < D; ++k) {
+          moving_walls = moving_walls || v[k] != 0.0;
+        }
+      }
+    }
   }
   if (material_positions.empty()) {
     case_file.fail("particles", "the case has no material particles");
@@ -114,6 +169,10 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   fill_vectors<D>(case_file, material_positions, state.position, "position");
   fill_vectors<D>(case_file, velocities, state.velocity, "velocity");
   fill_vectors<D>(case_file, boundary_positions, state.boundary_position, "position");
+  state.wall_velocity.info().scale = parameters.velocity_scale;
+  fill_vectors<D>(case_file, boundary_velocities, state.wall_velocity, "wall velocity");
+  state.drive_time.info().scale = parameters.drive_time_scale;
+  state.drive_time.resize(boundary_positions.size());
   set_undistorted<D>(case_file, parameters.distortion_scales, parameters.dissipated_scale,
                      state.material, material_positions.size());
   set_undistorted<D>(case_file, parameters.distortion_scales, parameters.dissipated_scale,
@@ -130,8 +189,17 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   info.setup_report.emplace_back("dt", scientific(parameters.dt));
   info.setup_report.emplace_back("sound_speed", scientific(parameters.material.sound_speed));
   info.setup_report.emplace_back("shear_speed", scientific(parameters.material.shear_speed));
+  if (moving_walls) {
+    info.setup_report.emplace_back("walls.ramp_time", scientific(parameters.ramp_time));
+  }
   if (parameters.relaxation_time) {
     info.setup_report.emplace_back("relaxation_time", scientific(*parameters.relaxation_time));
+    info.setup_report.emplace_back("dt_over_relaxation_time",
+                                   scientific(parameters.dt / *parameters.relaxation_time));
+    info.setup_report.emplace_back("relaxation_splitting.relaxation_time",
+                                   scientific(parameters.relaxation_splitting.relaxation_time));
+    info.setup_report.emplace_back("relaxation_splitting.substeps",
+                                   std::to_string(parameters.relaxation_splitting.substeps));
     info.irreversible_terms.push_back(
         "relaxation of the distortion, tau = " + scientific(*parameters.relaxation_time) +
         " s (paper 2 eqs. 51-53)");

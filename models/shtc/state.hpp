@@ -3,7 +3,7 @@
 // the distortion's exact update (distortion.hpp) works on integers.
 //
 // Two particle sets. "material" particles move (eq. 47). "boundary" particles are held in place
-// with zero velocity (the clamped base of the twisting column, §4.2): they take part in every
+// (the clamped base of the twisting column §4.2; no-slip and moving walls §4.3-4.4): they take part in every
 // sum like material particles and their distortion evolves with the velocity gradient their
 // moving neighbours give them, so the energy of eq. (24) summed over both sets is conserved and
 // the step stays reversible (the paper resets velocities instead, which dissipates).
@@ -64,6 +64,16 @@ struct State {
   StateField<std::int64_t> boundary_position{
       {"boundary", "position", "m", Parity::even, D, {}, false}};
   ParticleSetState<D> boundary{"boundary"};
+  // Moving walls (the rotating ring of Taylor-Couette, the cavity's lid, §4.3-4.4) stay in place
+  // and "pretend" a velocity in L (eq. 10), as the paper's lid does: the wall velocity at full
+  // drive, and the signed time since the drive started. Time reversal negates drive_time, and the
+  // velocity a wall pretends is wall_velocity * sign(drive_time) * ramp(|drive_time|): odd, so a
+  // reversed run sees the walls move backwards and ramp down at the same instants (models/shtc/
+  // README.md). Every boundary particle keeps its own copy of the clock (a set's fields share
+  // one length); the drift advances them all alike.
+  StateField<std::int64_t> wall_velocity{
+      {"boundary", "wall_velocity", "m/s", Parity::even, D, {}, false}};
+  StateField<std::int64_t> drive_time{{"boundary", "drive_time", "s", Parity::odd, 1, {}, true}};
 
   template <class Visit>
   void for_each_field(Visit&& visit) {
@@ -72,6 +82,8 @@ struct State {
     material.for_each_field(visit);
     visit(boundary_position);
     boundary.for_each_field(visit);
+    visit(wall_velocity);
+    visit(drive_time);
   }
 };
 

@@ -32,16 +32,12 @@ Writes:
 Exit status 0 only if every figure was made.
 """
 
-import csv
-import os
-import shlex
-import shutil
-import subprocess
 import sys
-import tomllib
 from pathlib import Path
 
 from docstring_cli import parser_from_docstring
+from revsph_runs import (REPO, case_of, find_revsph, make_missing_runs, missing_runs, read_csv,
+                         write_csv, write_report)
 
 import matplotlib
 
@@ -50,44 +46,12 @@ import h5py  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-REPO = Path(__file__).resolve().parents[2]
 DPI = 110
 RUNS = {
     "beryllium-plate": ["run", "beryllium-plate"],
     "beryllium-plate-no-penalty": ["run", "beryllium-plate", "--set", "penalty.speed=0"],
     "twisting-column": ["run", "twisting-column"],
 }
-
-
-def find_revsph(given):
-    if given:
-        return Path(given)
-    for candidate in [REPO / "build" / "bin" / "revsph", *sorted(REPO.glob("build-*/bin/revsph"))]:
-        if candidate.is_file():
-            return candidate
-    sys.exit("no revsph binary: build it or pass --revsph")
-
-
-def read_csv(path):
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    return {name: np.array([float(r[name]) for r in rows]) for name in rows[0]}
-
-
-def write_csv(path, columns):
-    names = list(columns)
-    with open(path, "w", newline="") as f:
-        writer = csv.writer(f)
-        writer.writerow(names)
-        for row in zip(*(columns[n] for n in names)):
-            writer.writerow([f"{v:.10g}" for v in row])
-
-
-def case_of(run):
-    """The case file (with overrides applied by revsph) from the run's first snapshot."""
-    first = sorted((run / "snapshots").glob("step_*.h5"))[0]
-    with h5py.File(first) as f:
-        return tomllib.loads(f.attrs["case_text"])
 
 
 def last_snapshot(run):
@@ -296,30 +260,19 @@ def main():
     runs, out = Path(args.runs), Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     if args.make_runs:
-        revsph = find_revsph(args.revsph)
-        for name, arguments in RUNS.items():
-            if (runs / name / "summary.json").is_file():
-                continue
-            command = [str(revsph), *arguments, "--out", str(runs / name), "--force"]
-            if args.threads:
-                command += ["--threads", args.threads]
-            print("+", shlex.join(command), flush=True)
-            subprocess.run(command, check=True)
+        make_missing_runs(runs, RUNS, find_revsph(args.revsph), args.threads)
     report = []
     made = True
     for needed, make in ((["beryllium-plate", "beryllium-plate-no-penalty"], plate_figures),
                          (["twisting-column"], column_figures)):
-        missing = [n for n in needed if not (runs / n / "summary.json").is_file()]
+        missing = missing_runs(runs, needed)
         if missing:
             print(f"skipped {make.__name__}: missing runs {', '.join(missing)} in {runs} "
                   "(use --make-runs)")
             made = False
             continue
         make(runs, out, report)
-    lines = ["| quantity | value |", "|---|---|"] + [f"| {k} | {v} |" for k, v in report]
-    (out / "shtc_solids.md").write_text("\n".join(lines) + "\n")
-    for key, value in report:
-        print(f"{key}: {value}")
+    write_report(out / "shtc_solids.md", report)
     print(f"wrote {out}/")
     return 0 if made else 1
 

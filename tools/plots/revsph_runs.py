@@ -1,0 +1,71 @@
+"""Helpers the figure scripts share: finding revsph, making runs, reading their CSV and snapshots."""
+
+import csv
+import shlex
+import subprocess
+import sys
+import tomllib
+from pathlib import Path
+
+import h5py
+import numpy as np
+
+REPO = Path(__file__).resolve().parents[2]
+
+
+def find_revsph(given):
+    """The revsph binary: `given`, else build/bin/revsph, else build-*/bin/revsph."""
+    if given:
+        return Path(given)
+    for candidate in [REPO / "build" / "bin" / "revsph", *sorted(REPO.glob("build-*/bin/revsph"))]:
+        if candidate.is_file():
+            return candidate
+    sys.exit("no revsph binary: build it or pass --revsph")
+
+
+def make_missing_runs(runs, commands, revsph, threads=None):
+    """Runs `revsph ARGS --out RUNS/NAME --force` for each NAME whose summary.json is missing."""
+    for name, arguments in commands.items():
+        if (runs / name / "summary.json").is_file():
+            continue
+        command = [str(revsph), *arguments, "--out", str(runs / name), "--force"]
+        if threads:
+            command += ["--threads", threads]
+        print("+", shlex.join(command), flush=True)
+        subprocess.run(command, check=True)
+
+
+def missing_runs(runs, names):
+    return [n for n in names if not (runs / n / "summary.json").is_file()]
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(row for row in f if not row.startswith("#")))
+    return {name: np.array([float(r[name]) for r in rows]) for name in rows[0]}
+
+
+def write_csv(path, columns):
+    names = list(columns)
+    with open(path, "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(names)
+        for row in zip(*(columns[n] for n in names)):
+            writer.writerow([f"{v:.10g}" for v in row])
+
+
+def snapshots(run):
+    return sorted((run / "snapshots").glob("step_*.h5"))
+
+
+def case_of(run):
+    """The case file (with overrides applied by revsph) from the run's first snapshot."""
+    with h5py.File(snapshots(run)[0]) as f:
+        return tomllib.loads(f.attrs["case_text"])
+
+
+def write_report(path, report):
+    lines = ["| quantity | value |", "|---|---|"] + [f"| {k} | {v} |" for k, v in report]
+    path.write_text("\n".join(lines) + "\n")
+    for key, value in report:
+        print(f"{key}: {value}")

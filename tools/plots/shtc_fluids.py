@@ -1,0 +1,276 @@
+#!/usr/bin/python3
+"""The viscous-fluid benchmarks of paper 2 (SHTC-SPH, §4.3-4.4) from revsph runs: CSV + figures.
+
+Usage: /usr/bin/python3 tools/plots/shtc_fluids.py [--runs DIR] [--out DIR] [--make-runs]
+           [--revsph PATH] [--threads N]
+
+  --runs DIR   where the runs live, one subdirectory per run (default: out/shtc)
+  --out DIR    where the CSV files and figures go (default: docs/figures/shtc)
+  --make-runs  first make every missing run (present = its summary.json exists), printing each
+               revsph command; about 90 min on 2 cores in all
+  --revsph     the revsph binary (default: build/bin/revsph, else build-*/bin/revsph)
+  --threads N  passed to revsph (default: revsph's own, all cores)
+
+Runs: taylor-couette-coarse (dr = 1/20) and taylor-couette (dr = 1/30), both with the matched
+relaxation splitting; taylor-couette-paper (dr = 1/20 with the paper's splitting and dt of eq. 58);
+cavity-re100, cavity-re400 (dr = 1/50), cavity-re1000 (dr = 1/80), matched splitting;
+cavity-re100-paper (dr = 1/50, the paper's splitting at its dt = tau / 10).
+
+Writes:
+  couette_profile.csv/.png   Fig. 8: tangential velocity against r at t = 10 of the particles on
+                             the segment y = 0, 1 <= x <= 2 (|y| < dr / 2), with the exact
+                             profile of eq. (64); right: v - omega r, as the paper's right panel
+  couette_energy.csv/.png    Fig. 10 (right): energies over the final total, and the budget
+                             E(t) - E(0) against the work of the wall, integral of wall_power
+  cavity_centrelines.csv/.png  Fig. 14: u on x = 1/2 and v on y = 1/2 at the end of each cavity
+                             run (kernel-weighted average of the particles, walls included with
+                             the velocity they pretend), with Ghia et al. (1982)
+  cavity_energy.png          Fig. 13 (right): the cavity energies over the final total
+  shtc_fluids.md             the numbers printed below, as a table
+Exit status 0 only if every figure was made.
+"""
+
+import sys
+from pathlib import Path
+
+from docstring_cli import parser_from_docstring
+from revsph_runs import (REPO, case_of, find_revsph, make_missing_runs, missing_runs, read_csv,
+                         snapshots, write_csv, write_report)
+
+import matplotlib
+
+matplotlib.use("Agg")
+import h5py  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+DPI = 110
+REFDATA = REPO.parent / "shared" / "refdata"
+COUETTE = {
+    "taylor-couette-coarse": ["run", "taylor-couette-coarse"],
+    "taylor-couette": ["run", "taylor-couette"],
+    "taylor-couette-paper": ["run", "taylor-couette-coarse", "--set",
+                             "material.relaxation_splitting=\"paper\"", "--set",
+                             "discretisation.time_step_factor=0.05"],
+}
+CAVITY = {
+    "cavity-re100": ["run", "cavity-re100"],
+    "cavity-re400": ["run", "cavity-re400"],
+    "cavity-re1000": ["run", "cavity-re1000"],
+    # dt = tau / 10 as in Table 1: factor = 1.5e-5 s sqrt(c0^2 + 4/3 cs^2) / dr
+    "cavity-re100-paper": ["run", "cavity-re100", "--set",
+                           "material.relaxation_splitting=\"paper\"", "--set",
+                           "discretisation.time_step_factor=0.022913"],
+}
+RUNS = {**COUETTE, **CAVITY}
+
+
+def final_state(run):
+    """Positions and velocities of all carriers at the last snapshot (walls: their pretended
+    velocity), the material count and the time."""
+    with h5py.File(snapshots(run)[-1]) as f:
+        material = f["particles/material"]
+        position = [material["position"][...]]
+        velocity = [material["velocity"][...]]
+        count = len(position[0])
+        if "particles/boundary/position" in f:
+            boundary = f["particles/boundary"]
+            position.append(boundary["position"][...])
+            velocity.append(boundary["velocity"][...] if "velocity" in boundary
+                            else np.zeros_like(boundary["position"][...]))
+        time = float(f.attrs["time"])
+    return np.concatenate(position), np.concatenate(velocity), count, time
+
+
+def shepard(points, position, values, support):
+    """Kernel-weighted average (Wendland C2, the model's kernel) of `values` at `points`."""
+    out = np.empty((len(points), values.shape[1]))
+    for i, p in enumerate(points):
+        q = np.hypot(*(position - p).T) / (0.5 * support)
+        w = np.where(q < 2.0, (1.0 - 0.5 * q) ** 4 * (2.0 * q + 1.0), 0.0)
+        out[i] = w @ values / w.sum()
+    return out
+
+
+def couette_exact(r, r1, r2, omega):
+    return omega * r2 * r2 / (r2 * r2 - r1 * r1) * (r - r1 * r1 / r)  # eq. (64)
+
+
+def couette_figures(runs, out, report):
+    r1, r2, omega = 1.0, 2.0, 1.0
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2))
+    radius = np.linspace(r1, r2, 101)
+    left.plot(radius, couette_exact(radius, r1, r2, omega), "k-", lw=1, label="exact, eq. (64)")
+    right.plot(radius, couette_exact(radius, r1, r2, omega) - omega * radius, "k-", lw=1)
+    columns = {}
+    for name in COUETTE:
+        run = runs / name
+        case = case_of(run)
+        dr = case["discretisation"]["dr"]
+        position, velocity, count, time = final_state(run)
+        x, v = position[:count], velocity[:count]
+        on_segment = (np.abs(x[:, 1]) < 0.5 * dr) & (x[:, 0] > 0)
+        r = np.hypot(x[on_segment, 0], x[on_segment, 1])
+        order = np.argsort(r)
+        r = r[order]
+        tangential = ((x[on_segment, 0] * v[on_segment, 1] - x[on_segment, 1] * v[on_segment, 0])
+                      / np.hypot(x[on_segment, 0], x[on_segment, 1]))[order]
+        error = tangential - couette_exact(r, r1, r2, omega)
+        radius_all = np.hypot(x[:, 0], x[:, 1])
+        tangential_all = (x[:, 0] * v[:, 1] - x[:, 1] * v[:, 0]) / radius_all
+        error_all = tangential_all - couette_exact(radius_all, r1, r2, omega)
+        splitting = case["material"].get("relaxation_splitting", "paper")
+        label = f"dr = 1/{round(1 / dr)}, {splitting} splitting"
+        left.plot(r, tangential, "o", ms=3, label=label)
+        right.plot(r, tangential - omega * r, "o-", ms=3, lw=0.8, label=label)
+        columns[f"{name}_r"] = r
+        columns[f"{name}_v_theta"] = tangential
+        report.append((f"Taylor-Couette {name} ({label}), t = {time:.3f}: max |v - exact| on "
+                       f"y = 0 ({len(r)} particles); mean", f"{np.max(np.abs(error)):.4f}; "
+                       f"{np.mean(np.abs(error)):.4f}"))
+        report.append((f"Taylor-Couette {name}: max |v - exact| over all {count} particles "
+                       "(the flow is axisymmetric)", f"{np.max(np.abs(error_all)):.4f}"))
+    longest = max(len(c) for c in columns.values())
+    write_csv(out / "couette_profile.csv",
+              {k: np.pad(c, (0, longest - len(c)), constant_values=np.nan)
+               for k, c in columns.items()})
+    left.set_xlabel("r = x on y = 0")
+    left.set_ylabel("tangential velocity v_y")
+    left.set_title("Taylor-Couette at t = 10 (paper 2, Fig. 8)")
+    left.legend(fontsize=8)
+    right.set_xlabel("r")
+    right.set_ylabel("v_y - omega r")
+    right.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(out / "couette_profile.png", dpi=DPI)
+    plt.close(fig)
+    budget_figure(runs / "taylor-couette", out / "couette_energy",
+                  "Taylor-Couette dr = 1/30 (paper 2, Fig. 10 right)", report, "Taylor-Couette")
+
+
+def wall_work(run):
+    """Time, the energy terms and the work of the walls (trapezoid rule on wall_power)."""
+    energy = read_csv(run / "energy.csv")
+    diagnostics = read_csv(run / "diagnostics.csv")
+    power = np.interp(energy["time"], diagnostics["time"], diagnostics["wall_power"])
+    work = np.concatenate([[0.0], np.cumsum(0.5 * (power[1:] + power[:-1])
+                                             * np.diff(energy["time"]))])
+    return energy, work
+
+
+def budget_figure(run, stem, title, report, what):
+    energy, work = wall_work(run)
+    final = energy["total"][-1]
+    names = ("kinetic", "volumetric", "shear", "penalty", "dissipated")
+    columns = {"time": energy["time"], **{n + "_over_final": energy[n] / final for n in names},
+               "total_change": energy["total"] - energy["total"][0], "wall_work": work}
+    write_csv(stem.with_suffix(".csv"), columns)
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+    for n in names:
+        if np.any(energy[n] > 0):
+            top.semilogy(energy["time"], np.maximum(energy[n] / final, 1e-12), label=n)
+    top.set_ylabel("energy / final total")
+    top.set_title(title)
+    top.legend(fontsize=8)
+    bottom.plot(energy["time"], energy["total"] - energy["total"][0], label="E(t) - E(0)")
+    bottom.plot(energy["time"], work, "--", label="work of the walls")
+    bottom.set_xlabel("t")
+    bottom.set_ylabel("energy")
+    bottom.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(stem.with_suffix(".png"), dpi=DPI)
+    plt.close(fig)
+    mismatch = (energy["total"][-1] - energy["total"][0] - work[-1]) / work[-1]
+    report.append((f"{what}: energy budget at the end, (E - E(0) - W) / W (W the walls' work, "
+                   "trapezoid rule on the sampled wall_power)", f"{mismatch:.3e}"))
+
+
+def ghia(re):
+    u = read_csv(REFDATA / "ghia1982_u_vertical_centerline.csv")
+    v = read_csv(REFDATA / "ghia1982_v_horizontal_centerline.csv")
+    return u["y"], u[f"Re{re}"], v["x"], v[f"Re{re}"]
+
+
+def cavity_figures(runs, out, report):
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    energy_fig, energy_axes = plt.subplots(1, 1, figsize=(7, 4.2))
+    columns = {}
+    for name in CAVITY:
+        run = runs / name
+        case = case_of(run)
+        re = round(1.0 / case["material"]["kinematic_viscosity"])
+        dr = case["discretisation"]["dr"]
+        support = 2.0 * case["discretisation"]["smoothing_length_over_dr"] * dr
+        position, velocity, count, time = final_state(run)
+        y_ref, u_ref, x_ref, v_ref = ghia(re)
+        u = shepard(np.column_stack([np.full_like(y_ref, 0.5), y_ref]), position, velocity,
+                    support)[:, 0]
+        v = shepard(np.column_stack([x_ref, np.full_like(x_ref, 0.5)]), position, velocity,
+                    support)[:, 1]
+        splitting = case["material"].get("relaxation_splitting", "paper")
+        label = f"Re {re}, dr = 1/{round(1 / dr)}, {splitting}"
+        line = axes[0].plot(u, y_ref, "-", lw=1.2, label=label)[0]
+        axes[0].plot(u_ref, y_ref, "s", ms=4, mfc="none", color=line.get_color())
+        axes[1].plot(x_ref, v, "-", lw=1.2, color=line.get_color(), label=label)
+        axes[1].plot(x_ref, v_ref, "s", ms=4, mfc="none", color=line.get_color())
+        columns.update({f"{name}_y": y_ref, f"{name}_u": u, f"{name}_u_ghia": u_ref,
+                        f"{name}_x": x_ref, f"{name}_v": v, f"{name}_v_ghia": v_ref})
+        report.append((f"cavity {name} ({label}), t = {time:.2f}: L-inf error of u on x = 1/2, "
+                       f"of v on y = 1/2 ({len(y_ref)} and {len(x_ref)} Ghia points)",
+                       f"{np.max(np.abs(u - u_ref)):.4f}, {np.max(np.abs(v - v_ref)):.4f}"))
+        energy, work = wall_work(run)
+        energy_axes.semilogy(energy["time"], energy["kinetic"] / energy["total"][-1],
+                             label=f"kinetic, {label}")
+        energy_axes.semilogy(energy["time"], np.maximum(energy["shear"] / energy["total"][-1],
+                                                        1e-12), ":", label=f"shear, {label}")
+        mismatch = (energy["total"][-1] - energy["total"][0] - work[-1]) / work[-1]
+        report.append((f"cavity {name}: energy budget (E - E(0) - W) / W at the end",
+                       f"{mismatch:.3e}"))
+    write_csv(out / "cavity_centrelines.csv", columns)
+    axes[0].set_xlabel("u on x = 1/2")
+    axes[0].set_ylabel("y")
+    axes[0].set_title("Lid-driven cavity (paper 2, Fig. 14); squares: Ghia et al.")
+    axes[0].legend(fontsize=7)
+    axes[1].set_xlabel("x")
+    axes[1].set_ylabel("v on y = 1/2")
+    fig.tight_layout()
+    fig.savefig(out / "cavity_centrelines.png", dpi=DPI)
+    plt.close(fig)
+    energy_axes.set_xlabel("t")
+    energy_axes.set_ylabel("energy / final total")
+    energy_axes.set_title("Lid-driven cavity energies (paper 2, Fig. 13 right)")
+    energy_axes.legend(fontsize=6)
+    energy_fig.tight_layout()
+    energy_fig.savefig(out / "cavity_energy.png", dpi=DPI)
+    plt.close(energy_fig)
+
+
+def main():
+    parser = parser_from_docstring(__doc__)
+    parser.add_argument("--runs", default="out/shtc")
+    parser.add_argument("--out", default=str(REPO / "docs" / "figures" / "shtc"))
+    parser.add_argument("--make-runs", action="store_true")
+    parser.add_argument("--revsph")
+    parser.add_argument("--threads")
+    args = parser.parse_args()
+    runs, out = Path(args.runs), Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    if args.make_runs:
+        make_missing_runs(runs, RUNS, find_revsph(args.revsph), args.threads)
+    report = []
+    made = True
+    for needed, make in ((COUETTE, couette_figures), (CAVITY, cavity_figures)):
+        missing = missing_runs(runs, needed)
+        if missing:
+            print(f"skipped {make.__name__}: missing runs {', '.join(missing)} in {runs} "
+                  "(use --make-runs)")
+            made = False
+            continue
+        make(runs, out, report)
+    write_report(out / "shtc_fluids.md", report)
+    print(f"wrote {out}/")
+    return 0 if made else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
