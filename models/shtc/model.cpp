@@ -398,6 +398,9 @@ EnergyBudget Model<D>::energy() {
   if (parameters_.relaxation_time) {
     budget.terms.push_back({"dissipated", total(energies.dissipated)});
   }
+  if (walls_move()) {
+    budget.power_in = wall_power();
+  }
   return budget;
 }
 

@@ -19,10 +19,11 @@ struct RelaxationSplitting {
 };
 
 // The paper's splitting (eq. 52): one RK4 step over dt with the case's tau. Split from the
-// reversible update, it gives the viscosity nu x / (exp(x) - 1), x = 6 dt / tau, not nu: in a
-// steady shear the strain after each relaxation is delta / (exp(x) - 1) (delta the strain one
-// update adds), where the continuous equations hold tau / 6 L = delta / x. That is 21 % low at
-// the paper's own dt / tau = 0.075 (Taylor-Couette) and 27 % at 0.1 (cavity).
+// reversible update, it does not give the viscosity nu: in a steady shear the strain after each
+// relaxation is delta R / (1 - R) (delta the strain one update adds, R the RK4 amplification of
+// the linearised relaxation over dt, about exp(-x) with x = 6 dt / tau), where the continuous
+// equations hold tau / 6 L = delta / x: nu x R / (1 - R), 21 % low at the paper's own dt / tau
+// = 0.075 (Taylor-Couette) and 27 % at 0.1 (cavity); unstable (R > 1) beyond dt / tau = 0.46.
 inline RelaxationSplitting paper_splitting(double relaxation_time) {
   return {relaxation_time, 1};
 }

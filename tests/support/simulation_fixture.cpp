@@ -18,6 +18,14 @@ std::unique_ptr<Simulation> make_simulation(const std::string& name,
   return simulation;
 }
 
+std::unique_ptr<Simulation> make_simulation_from_text(const std::string& text) {
+  CaseFile case_file = CaseFile::parse(text, "test case");
+  read_run_settings(case_file);
+  auto simulation = create_simulation(case_file, SimulationOptions{Arithmetic::fixed});
+  case_file.require_no_unknown_keys();
+  return simulation;
+}
+
 std::string hash_of(Simulation& simulation) {
   return state_hash(simulation.capture_state());
 }

@@ -21,6 +21,9 @@ std::unique_ptr<Simulation> make_simulation(const std::string& name,
                                             const std::vector<Override>& overrides = {},
                                             Arithmetic arithmetic = Arithmetic::fixed);
 
+// The same from case-file text (tests/support/case_text.hpp edits built-in cases).
+std::unique_ptr<Simulation> make_simulation_from_text(const std::string& text);
+
 std::string hash_of(Simulation& simulation);
 
 } // namespace revsph::testing

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
+#include <string>
 
 namespace {
 
@@ -93,6 +95,57 @@ TEST(Lattice, BodyCentredCubicHasEightNearestNeighboursAndTwoParticlesPerCube) {
     mean_x += p[0];
   }
   EXPECT_NEAR(mean_x / static_cast<double>(bcc.size()), 0.0, 1e-12);
+}
+
+TEST(Lattice, AnnulusBlockIsConcentricRingsOfOneParticlePerSpacingSquared) {
+  const revsph::CaseFile case_file = revsph::CaseFile::parse(R"([[particles]]
+kind = "fluid"
+shape = "annulus"
+centre = [0.5, -0.25]
+inner_radius = 1.0
+outer_radius = 2.0
+)",
+                                                             "annulus test");
+  const double spacing = 0.05;
+  const std::string_view kinds[] = {"fluid"};
+  const auto blocks = revsph::read_particle_blocks<2>(case_file, spacing, Box<2>{{-2, -3}, {3, 2}},
+                                                      kinds, {100, 0});
+  ASSERT_EQ(blocks.size(), 1u);
+  const auto& points = blocks[0].positions;
+  // 20 rings at r = 1 + (i + 1/2) spacing, each with round(2 pi r / spacing) points.
+  std::size_t expected = 0;
+  for (int ring = 0; ring < 20; ++ring) {
+    expected += static_cast<std::size_t>(
+        std::lround(2.0 * std::numbers::pi * (1.0 + (ring + 0.5) * spacing) / spacing));
+  }
+  EXPECT_EQ(points.size(), expected);
+  double inner = 1e9;
+  double outer = 0.0;
+  for (const auto& p : points) {
+    const double r = std::hypot(p[0] - 0.5, p[1] + 0.25);
+    inner = std::min(inner, r);
+    outer = std::max(outer, r);
+  }
+  EXPECT_NEAR(inner, 1.0 + 0.5 * spacing, 1e-12);
+  EXPECT_NEAR(outer, 2.0 - 0.5 * spacing, 1e-12);
+  // One particle per spacing^2 of the annulus' area (3 pi), to the rounding of the ring counts.
+  EXPECT_NEAR(blocks[0].volume_per_particle, spacing * spacing, 1e-3 * spacing * spacing);
+}
+
+TEST(Lattice, AnnulusBlockRefusesALatticeAndAThinOrInvertedRing) {
+  const std::string_view kinds[] = {"fluid"};
+  auto blocks_of = [&](const std::string& extra, double spacing) {
+    const revsph::CaseFile case_file = revsph::CaseFile::parse(
+        "[[particles]]\nkind = \"fluid\"\nshape = \"annulus\"\ncentre = [0, 0]\n" + extra,
+        "annulus test");
+    return revsph::read_particle_blocks<2>(case_file, spacing, Box<2>{{-3, -3}, {3, 3}}, kinds,
+                                           {100, 0});
+  };
+  EXPECT_THROW(blocks_of("inner_radius = 1.0\nouter_radius = 2.0\nlattice = \"square\"\n", 0.1),
+               revsph::CaseError);
+  EXPECT_THROW(blocks_of("inner_radius = 1.0\nouter_radius = 1.05\n", 0.1), revsph::CaseError);
+  EXPECT_THROW(blocks_of("inner_radius = 2.0\nouter_radius = 1.0\n", 0.1), revsph::CaseError);
+  EXPECT_NO_THROW(blocks_of("inner_radius = 0.0\nouter_radius = 1.0\n", 0.1));
 }
 
 } // namespace

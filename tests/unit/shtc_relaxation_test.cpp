@@ -1,6 +1,8 @@
 // The relaxation of the distortion (models/shtc/relaxation.hpp, paper 2 eqs. 51-53): a small
 // symmetric strain decays as exp(-6 t / tau) (the viscosity nu = tau cs^2 / 6 of eq. 65), and the
-// shear energy never increases, for large distortions too and both shear energies.
+// shear energy never increases, for large distortions too and both shear energies; split from the
+// distortion update, the paper's splitting loses viscosity as dt / tau grows and the matched one
+// keeps it.
 
 #include "models/shtc/relaxation.hpp"
 
@@ -64,6 +66,45 @@ TYPED_TEST(ShtcRelaxation, ShearEnergyNeverIncreases) {
         ASSERT_LE(relaxed, energy * (1.0 + 1e-14)) << "trial " << trial << " step " << s;
         energy = relaxed;
       }
+    }
+  }
+}
+
+// The shear stress A^T eps_A (frame-indifferent, so steady although A keeps turning) that a
+// steady simple shear of rate 1 reaches when each step updates A <- A (I - dt L) (exact: L^2 = 0)
+// and then relaxes it, in 2D.
+double steady_shear_stress(const revsph::shtc::RelaxationSplitting& splitting, double dt) {
+  const ElasticMaterial material{1.0, 20.0, 20.0, ShearEnergy::dprz};
+  Tensor<2> velocity_gradient = Tensor<2>::Zero();
+  velocity_gradient(0, 1) = 1.0;
+  const Tensor<2> update = Tensor<2>::Identity() - dt * velocity_gradient;
+  Tensor<2> a = Tensor<2>::Identity();
+  const int steps = static_cast<int>(std::ceil(40.0 * splitting.relaxation_time / dt)) + 40;
+  for (int s = 0; s < steps; ++s) {
+    a = revsph::shtc::relax_distortion<2>(material, splitting, a * update, dt);
+  }
+  const Tensor<2> stress = a.transpose() * revsph::shtc::shear_energy_derivative<2>(material, a);
+  return stress(0, 1);
+}
+
+TEST(ShtcRelaxationSplitting, MatchedSplittingKeepsTheViscosityAtLargeTimeSteps) {
+  const double tau = 6.0 * 0.01 / (20.0 * 20.0); // nu = 0.01, cs = 20 (cavity at Re 100)
+  // Newtonian: the stress of the distortion is nu times the shear rate (1), up to its sign (the
+  // sign of the paper's splitting at dt / tau = 1e-3, where it is the continuous relaxation).
+  const double reference =
+      std::copysign(0.01, steady_shear_stress(revsph::shtc::paper_splitting(tau), 1e-3 * tau));
+  for (const double ratio : {0.075, 0.3, 1.0, 3.0}) {
+    const double dt = ratio * tau;
+    const double matched = steady_shear_stress(revsph::shtc::matched_splitting(tau, dt), dt);
+    EXPECT_NEAR(matched / reference, 1.0, 2e-3) << "dt / tau = " << ratio;
+    // The paper's splitting: nu x R / (1 - R), x = 6 dt / tau, R the RK4 amplification
+    // (relaxation.hpp); 0.79 nu at dt / tau = 0.075, 0.72 nu at 0.3.
+    const double paper = steady_shear_stress(revsph::shtc::paper_splitting(tau), dt);
+    const double x = 6.0 * ratio;
+    const double r = 1.0 - x + x * x / 2.0 - x * x * x / 6.0 + x * x * x * x / 24.0;
+    if (ratio <= 0.3) { // beyond, one RK4 step over dt amplifies
+      EXPECT_NEAR(paper / reference, x * r / (1.0 - r), 0.01) << "dt / tau = " << ratio;
+      EXPECT_LT(paper / reference, 0.8) << "dt / tau = " << ratio;
     }
   }
 }

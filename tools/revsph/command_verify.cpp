@@ -5,6 +5,7 @@
 #include "core/threads.hpp"
 #include "tools/revsph/commands.hpp"
 #include "tools/revsph/run_output.hpp"
+#include "verify/energy_budget.hpp"
 #include "verify/reversibility.hpp"
 
 #include <nlohmann/json.hpp>
@@ -71,6 +72,44 @@ void write_verify_summary(const fs::path& path, const Simulation& simulation,
   write_file_atomically(path, summary.dump(2) + "\n");
 }
 
+// A case with irreversible terms cannot return bit for bit: its energy budget is checked instead,
+// over the same number of steps forward (verify/energy_budget.hpp).
+int verify_dissipative(Simulation& simulation, const VerifyCommandOptions& options,
+                       std::int64_t steps, double progress_interval) {
+  const SimulationInfo& info = simulation.info();
+  std::cout << "dissipative case:";
+  for (const std::string& term : info.irreversible_terms) {
+    std::cout << "\n  irreversible term: " << term;
+  }
+  std::cout << "\nit cannot return bit for bit; checking its energy budget instead, every step "
+               "for "
+            << steps << " steps (E includes the dissipated energy, W is the work of driven "
+            << "boundaries)\n";
+  if (!options.out_dir.empty()) {
+    std::cout << "note: --out is for the reversal experiment; nothing is written for a "
+                 "dissipative case (use revsph run --out)\n";
+  }
+  ProgressReporter progress(stdout, "forward ", simulation.steps_taken() + steps, info.dt,
+                            progress_interval);
+  EnergyBudgetCheck check;
+  try {
+    check = check_energy_budget(simulation, steps, &progress);
+  } catch (const SimulationFault& fault) {
+    print_error(std::string("the run stopped: ") + fault.what());
+    return simulation_failed;
+  }
+  std::printf("energy: E(0) = %.6e, E(end) = %.6e, work of driven boundaries W = %.6e\n",
+              check.initial_total, check.final_total, check.work_in);
+  std::printf("energy budget: max |E(t) - E(0) - W(t)| / max(|E|, |W|) = %.3e (tolerance %.1e)\n",
+              check.max_relative_error, options.energy_tolerance);
+  std::printf("wall time: %.2f s\n", check.wall_seconds);
+  const bool closes = check.max_relative_error <= options.energy_tolerance;
+  std::cout << "verdict: dissipative case, energy budget "
+            << (closes ? "closes within the tolerance" : "does NOT close within the tolerance")
+            << "\n";
+  return closes ? success : not_reversible;
+}
+
 } // namespace
 
 int verify_command(const VerifyCommandOptions& options) {
@@ -89,8 +128,8 @@ int verify_command(const VerifyCommandOptions& options) {
             << thread_count() << (thread_count() == 1 ? " thread\n" : " threads\n");
   print_setup_report(info);
 
-  for (const std::string& term : info.irreversible_terms) {
-    std::cout << "note: irreversible term: " << term << " — this case cannot return bit for bit\n";
+  if (!info.irreversible_terms.empty()) {
+    return verify_dissipative(simulation, options, steps, loaded.settings.progress_interval);
   }
   if (options.check_substeps) {
     for (const SubstepCheck& check : check_substeps(simulation, info.dt)) {

@@ -25,6 +25,8 @@ struct VerifyCommandOptions {
   bool check_substeps = false;
   std::string out_dir; // empty: no output files
   bool force = false;
+  // A dissipative case passes if its energy budget closes to this (verify/energy_budget.hpp).
+  double energy_tolerance = 1e-2;
 };
 
 struct HashOptions {

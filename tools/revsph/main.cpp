@@ -94,6 +94,12 @@ int main(int argc, char** argv) {
                          "keep the experiment: OUT/forward/ and OUT/backward/ (energy.csv, "
                          "snapshots, run.xdmf) and OUT/summary.json");
   verify_app->add_flag("--force", verify.force, "overwrite the files of a previous run in --out");
+  verify_app
+      ->add_option("--energy-tolerance", verify.energy_tolerance,
+                   "a dissipative case (one with irreversible terms) is not reversed: it passes "
+                   "if its energy budget, |E(t) - E(0) - W(t)| over the largest |E|, |W|, stays "
+                   "below this (default 1e-2)")
+      ->check(CLI::PositiveNumber);
 
   HashOptions hash;
   auto* hash_app = app.add_subcommand(
