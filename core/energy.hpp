@@ -13,9 +13,6 @@ struct EnergyTerm {
 
 struct EnergyBudget {
   std::vector<EnergyTerm> terms;
-  // The rate at which prescribed boundary motion (a driven wall) feeds energy in (W; W/m in 2D):
-  // the total changes by its time integral. Zero for an isolated system.
-  double power_in = 0.0;
 
   double total() const {
     double sum = 0.0;

@@ -36,11 +36,13 @@ Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state,
 template <int D>
 std::span<const Substep<Model<D>>> Model<D>::palindrome() {
   static constexpr Substep<Model> sequence[] = {
+      {"relaxation", 0.5, &Model::relaxation_substep},
       {"kick", 0.5, &Model::kick_substep},
       {"drift", 0.5, &Model::drift_substep},
       {"distortion", 1.0, &Model::distortion_substep},
       {"drift", 0.5, &Model::drift_substep},
       {"kick", 0.5, &Model::kick_substep},
+      {"relaxation", 0.5, &Model::relaxation_substep},
   };
   return sequence;
 }
@@ -178,6 +180,14 @@ void Model<D>::update_distortion(double dt) {
       }
     }
   }
+  const bool driven = walls_move();
+  std::vector<Vec<D>> wall_velocity;
+  if (driven) {
+    for (std::size_t i = 0; i < state_.boundary_position.count(); ++i) {
+      wall_velocity.push_back(wall_velocity_now(i));
+    }
+    shear_accelerations(shear_before_);
+  }
   velocity_gradients<D>(kernel_, view_of<D>(slot_position_), view_of<D>(slot_velocity_), slot_mass_,
                         carrier_pairs_, sums_.h_inverse, velocity_sum_, velocity_gradient_);
   FaultRecorder faults;
@@ -194,7 +204,41 @@ void Model<D>::update_distortion(double dt) {
     }
     ParticleSetState<D>& set = set_of(a);
     const std::size_t i = index_in_set(a);
-    if (parameters_.relaxation_time && !relax(distortion, set.dissipated_energy.at(0, i), dt)) {
+    set.log_det.at(0, i) = distortion.log_det;
+    for (int c = 0; c < D * D; ++c) {
+      set.unimodular.at(c, i) = distortion.unimodular[c];
+    }
+  }
+  faults.throw_if_any();
+  force_valid_ = false;
+  if (driven) {
+    shear_accelerations(shear_after_);
+    if (!add_wall_work(wall_velocity, shear_before_, shear_after_, dt)) {
+      throw SimulationFault({"boundary", 0, "wall_work", "does not fit its fixed-point scale"}, 0);
+    }
+  }
+  if (parameters_.relaxation_time && !parameters_.relaxation_splitting.at_step_ends) {
+    relax_all(dt); // eq. (52d), after the update
+  }
+}
+
+template <int D>
+void Model<D>::relax_at_step_end(double dt) {
+  if (parameters_.relaxation_time && parameters_.relaxation_splitting.at_step_ends) {
+    relax_all(dt);
+  }
+}
+
+template <int D>
+void Model<D>::relax_all(double dt) {
+  FaultRecorder faults;
+  const std::size_t n = carrier_count();
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < n; ++a) {
+    ExactDistortion<D> distortion = distortion_of(a);
+    ParticleSetState<D>& set = set_of(a);
+    const std::size_t i = index_in_set(a);
+    if (!relax(distortion, set.dissipated_energy.at(0, i), dt)) {
       faults.record(i, set_name(a), "distortion", "overflow or non-finite value in the relaxation");
       continue;
     }
@@ -399,7 +443,13 @@ EnergyBudget Model<D>::energy() {
     budget.terms.push_back({"dissipated", total(energies.dissipated)});
   }
   if (walls_move()) {
-    budget.power_in = wall_power();
+    // What the walls have put in, counted negative: the total stays constant.
+    double work = 0.0;
+    for (std::size_t i = 0; i < state_.boundary_position.count(); ++i) {
+      work += mass_[material_count() + i] *
+              fixedpoint::to_real(state_.wall_work.at(0, i), state_.wall_work.info().scale);
+    }
+    budget.terms.push_back({"wall_work", -work});
   }
   return budget;
 }
@@ -468,28 +518,36 @@ void Model<D>::derived_views(const ViewSink& sink) {
 }
 
 template <int D>
-double Model<D>::wall_power() {
-  update_force();
+void Model<D>::shear_accelerations(CoordinateArrays<D>& acceleration) {
+  update_geometry();
   const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
   const std::size_t n = carrier_count();
-  const std::size_t material = material_count();
   std::vector<GradientMatrix<D>> shear(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < n; ++s) {
-    shear[s] = shear_stress<D>(parameters_.material, slot_distortion_[s], sums_.h_inverse[s]);
+    const Matrix<D> a =
+        to_matrix<D>(distortion_of(carrier_of_slot[s]), parameters_.distortion_scales);
+    shear[s] = shear_stress<D>(parameters_.material, a, sums_.h_inverse[s]);
   }
-  CoordinateArrays<D> shear_acceleration;
   compute_acceleration<D>(kernel_, 0.0, view_of<D>(slot_position_), slot_mass_, shear, sums_.lambda,
-                          carrier_pairs_, shear_acceleration);
-  std::vector<double> power(n - material, 0.0);
-  for (std::size_t s = 0; s < n; ++s) {
+                          carrier_pairs_, acceleration);
+}
+
+template <int D>
+double Model<D>::wall_power() {
+  CoordinateArrays<D> acceleration;
+  shear_accelerations(acceleration);
+  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  const std::size_t material = material_count();
+  std::vector<double> power(carrier_count() - material, 0.0);
+  for (std::size_t s = 0; s < carrier_count(); ++s) {
     const std::uint32_t a = carrier_of_slot[s];
     if (a < material) {
       continue;
     }
     const Vec<D> v = wall_velocity_now(a - material);
     for (int k = 0; k < D; ++k) {
-      power[a - material] -= slot_mass_[s] * shear_acceleration[k][s] * v[k];
+      power[a - material] -= slot_mass_[s] * acceleration[k][s] * v[k];
     }
   }
   double total = 0.0; // serial, in canonical order: the same for any thread count
@@ -497,6 +555,30 @@ double Model<D>::wall_power() {
     total += p;
   }
   return total;
+}
+
+template <int D>
+bool Model<D>::add_wall_work(std::span<const Vec<D>> wall_velocity,
+                             const CoordinateArrays<D>& before, const CoordinateArrays<D>& after,
+                             double dt) {
+  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  const std::size_t material = material_count();
+  bool fits = true;
+  for (std::size_t s = 0; s < carrier_count(); ++s) {
+    const std::uint32_t a = carrier_of_slot[s];
+    if (a < material) {
+      continue;
+    }
+    // Odd in (v, dt-direction) and symmetric in before/after, so a reversed step removes
+    // exactly what this one added.
+    double work = 0.0;
+    for (int k = 0; k < D; ++k) {
+      work -= (before[k][s] + after[k][s]) * wall_velocity[a - material][k];
+    }
+    fits = fits && FixedArithmetic::try_increment(state_.wall_work.at(0, a - material),
+                                                  0.5 * dt * work, state_.wall_work.info().scale);
+  }
+  return fits;
 }
 
 template <int D>

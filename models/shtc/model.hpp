@@ -65,6 +65,10 @@ public:
   void kick(double dt);
   void drift(double dt);
   void update_distortion(double dt);
+  // The relaxation at the step's ends (relaxation_splitting = "step_ends"); nothing otherwise.
+  void relax_at_step_end(double dt);
+  // Relaxes every carrier's distortion over dt (eqs. 52d, 53), counting the energy it removes.
+  void relax_all(double dt);
 
   // Per material particle, canonical order (for tests).
   const CoordinateArrays<D>& acceleration();
@@ -75,6 +79,7 @@ private:
   static void kick_substep(Model& model, double dt) { model.kick(dt); }
   static void drift_substep(Model& model, double dt) { model.drift(dt); }
   static void distortion_substep(Model& model, double dt) { model.update_distortion(dt); }
+  static void relaxation_substep(Model& model, double dt) { model.relax_at_step_end(dt); }
 
   // Per carrier, canonical order.
   struct ParticleEnergies {
@@ -103,6 +108,12 @@ private:
   // on b: with L linear in every velocity, the elastic energy changes by -sum_c v_c . F_c over
   // all carriers, so this is the rate at which the walls' pretended motion adds energy.
   double wall_power();
+  // F_b of the current geometry and distortions, per slot (the shear stress's accelerations).
+  void shear_accelerations(CoordinateArrays<D>& acceleration);
+  // -dt/2 v_b . (a_b before + a_b after) per mass, into wall_work: the trapezoid pairing of the
+  // update, which the kicks balance to O(dt^2) in the reversible part.
+  bool add_wall_work(std::span<const Vec<D>> wall_velocity, const CoordinateArrays<D>& before,
+                     const CoordinateArrays<D>& after, double dt);
   // The relaxation of eqs. (51)-(53) over dt, adding the energy per mass it removes.
   bool relax(ExactDistortion<D>& distortion, std::int64_t& dissipated, double dt) const;
   void update_constants();
@@ -135,6 +146,7 @@ private:
   // Scratch of the distortion sub-step.
   CoordinateArrays<D> slot_velocity_;
   std::vector<GradientMatrix<D>> velocity_sum_, velocity_gradient_;
+  CoordinateArrays<D> shear_before_, shear_after_;
 };
 
 extern template class Model<2>;

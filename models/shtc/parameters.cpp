@@ -147,13 +147,24 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   }
 
   const std::string splitting = case_file.string_or("material.relaxation_splitting", "paper");
-  if (splitting != "paper" && splitting != "matched") {
+  if (splitting != "paper" && splitting != "matched" && splitting != "step_ends") {
     case_file.fail("material.relaxation_splitting",
-                   "expected \"paper\" (eq. 52) or \"matched\", got \"" + splitting + "\"");
+                   "expected \"paper\" (eq. 52), \"matched\" or \"step_ends\", got \"" + splitting +
+                       "\"");
   }
   if (p.relaxation_time) {
-    p.relaxation_splitting = splitting == "paper" ? paper_splitting(*p.relaxation_time)
-                                                  : matched_splitting(*p.relaxation_time, p.dt);
+    const double tau = *p.relaxation_time;
+    if (splitting == "paper") {
+      p.relaxation_splitting = paper_splitting(tau);
+    } else if (splitting == "matched") {
+      p.relaxation_splitting = matched_splitting(tau, p.dt);
+    } else if (const auto at_ends = step_ends_splitting(tau, p.dt)) {
+      p.relaxation_splitting = *at_ends;
+    } else {
+      case_file.fail("material.relaxation_splitting",
+                     "\"step_ends\" needs dt / tau < 1/3 (here " + std::to_string(p.dt / tau) +
+                         "): use a smaller time step or \"matched\"");
+    }
   } else if (case_file.has("material.relaxation_splitting")) {
     case_file.fail(
         "material.relaxation_splitting",

@@ -9,48 +9,78 @@
 #include "models/shtc/elastic_energy.hpp"
 
 #include <cmath>
+#include <optional>
 
 namespace revsph::shtc {
 
 // How the relaxation is integrated within one time step of length dt.
 struct RelaxationSplitting {
   double relaxation_time = 0.0; // the tau used in eq. (53)
-  int substeps = 1;             // RK4 steps of dt / substeps
+  int substeps = 1;             // RK4 steps per relaxation sub-step
+  // false: after the distortion update, over dt (eq. 52); true: over dt / 2 at both ends of the
+  // step, outside the reversible kick-drift-distortion-drift-kick
+  bool at_step_ends = false;
 };
 
-// The paper's splitting (eq. 52): one RK4 step over dt with the case's tau. Split from the
-// reversible update, it does not give the viscosity nu: in a steady shear the strain after each
-// relaxation is delta R / (1 - R) (delta the strain one update adds, R the RK4 amplification of
-// the linearised relaxation over dt, about exp(-x) with x = 6 dt / tau), where the continuous
-// equations hold tau / 6 L = delta / x: nu x R / (1 - R), 21 % low at the paper's own dt / tau
-// = 0.075 (Taylor-Couette) and 27 % at 0.1 (cavity); unstable (R > 1) beyond dt / tau = 0.46.
+// The paper's splitting (eq. 52): one RK4 step over dt with the case's tau, right after the
+// distortion update. In a steady shear the strain after each relaxation is then delta R / (1 - R)
+// (delta the strain one update adds, R the RK4 amplification of the linearised relaxation over
+// dt, about exp(-x) with x = 6 dt / tau) where the continuous equations hold tau / 6 L = delta / x:
+// the viscosity is nu x R / (1 - R), 21 % low at the paper's own dt / tau = 0.075 (Taylor-Couette)
+// and 27 % at 0.1 (cavity); unstable (R > 1) beyond dt / tau = 0.46. And the second kick feels
+// the relaxed stress while the update raised the elastic energy with the unrelaxed one: each
+// step creates about m cs^2 |dt D|^2 of elastic energy that the relaxation then removes, so the
+// energy budget closes only to about 3 dt / tau of the dissipation.
 inline RelaxationSplitting paper_splitting(double relaxation_time) {
-  return {relaxation_time, 1};
+  return {relaxation_time, 1, false};
 }
 
-// The splitting that keeps nu at any dt / tau: RK4 steps whose linear amplification over dt is
-// 1 / (1 + x), the value for which the steady strain delta R / (1 - R) is delta / x. One RK4 step
-// of length k with rate z / k amplifies by R(z) = 1 - z + z^2/2 - z^3/6 + z^4/24, decreasing on
-// [0, 1.5] from 1 to 0.27; the step is cut into enough substeps that each needs z <= 1 (R(1) =
-// 0.375), and z is found by bisection.
-inline RelaxationSplitting matched_splitting(double relaxation_time, double dt) {
-  const double x = 6.0 * dt / relaxation_time;
+namespace detail {
+
+// RK4 steps over `length` whose linearised amplification is `target`: one RK4 step of rate z /
+// k amplifies by R(z) = 1 - z + z^2/2 - z^3/6 + z^4/24, decreasing on [0, 1.5] from 1 to 0.27;
+// the length is cut into enough substeps that each needs z <= 1 (R(1) = 0.375), z by bisection.
+inline RelaxationSplitting amplifying_by(double target, double length, bool at_step_ends) {
   auto amplification = [](double z) {
     return 1.0 - z + z * z / 2.0 - z * z * z / 6.0 + z * z * z * z / 24.0;
   };
   int substeps = 1;
-  while (std::pow(1.0 + x, -1.0 / substeps) < amplification(1.0)) {
+  while (std::pow(target, 1.0 / substeps) < amplification(1.0)) {
     ++substeps;
   }
-  const double target = std::pow(1.0 + x, -1.0 / substeps);
+  const double per_substep = std::pow(target, 1.0 / substeps);
   double low = 0.0;
   double high = 1.0;
   for (int i = 0; i < 80; ++i) {
     const double z = 0.5 * (low + high);
-    (amplification(z) > target ? low : high) = z;
+    (amplification(z) > per_substep ? low : high) = z;
   }
   const double z = 0.5 * (low + high);
-  return {6.0 * (dt / substeps) / z, substeps};
+  return {6.0 * (length / substeps) / z, substeps, at_step_ends};
+}
+
+} // namespace detail
+
+// Where the paper's splitting does, with the rate that keeps nu at any dt / tau: amplification
+// 1 / (1 + x) over dt, for which the steady strain delta R / (1 - R) is delta / x. The energy
+// budget is still that of the paper's splitting.
+inline RelaxationSplitting matched_splitting(double relaxation_time, double dt) {
+  return detail::amplifying_by(1.0 / (1.0 + 6.0 * dt / relaxation_time), dt, false);
+}
+
+// Relaxation over dt / 2 at both ends of the step. The reversible part then pairs the elastic
+// energy the update adds with the kinetic energy the kicks take, to O(dt^2) as without
+// relaxation, and the relaxation's removal is counted exactly: the budget closes. Between the
+// kick ending one step and the kick starting the next the strain goes from delta / (1 - R) to
+// delta R / (1 - R) (R over a whole dt); their mean is delta / x, i.e. nu, for R = (2 - x) / (2
+// + x), which is what the two halves give. Needs x < 2, i.e. dt / tau < 1/3 (std::nullopt
+// beyond).
+inline std::optional<RelaxationSplitting> step_ends_splitting(double relaxation_time, double dt) {
+  const double x = 6.0 * dt / relaxation_time;
+  if (!(x < 2.0)) {
+    return std::nullopt;
+  }
+  return detail::amplifying_by(std::sqrt((2.0 - x) / (2.0 + x)), 0.5 * dt, true);
 }
 
 template <int D>

@@ -173,6 +173,8 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   fill_vectors<D>(case_file, boundary_velocities, state.wall_velocity, "wall velocity");
   state.drive_time.info().scale = parameters.drive_time_scale;
   state.drive_time.resize(boundary_positions.size());
+  state.wall_work.info().scale = parameters.dissipated_scale;
+  state.wall_work.resize(boundary_positions.size());
   set_undistorted<D>(case_file, parameters.distortion_scales, parameters.dissipated_scale,
                      state.material, material_positions.size());
   set_undistorted<D>(case_file, parameters.distortion_scales, parameters.dissipated_scale,

@@ -74,6 +74,10 @@ struct State {
   StateField<std::int64_t> wall_velocity{
       {"boundary", "wall_velocity", "m/s", Parity::even, D, {}, false}};
   StateField<std::int64_t> drive_time{{"boundary", "drive_time", "s", Parity::odd, 1, {}, true}};
+  // Work per mass each moving wall particle has done on the rest (J/kg), accumulated in the
+  // distortion sub-step (model.hpp): with it the energy budget of a driven case closes. Even: a
+  // reversed step subtracts bit for bit what the forward step added.
+  StateField<std::int64_t> wall_work{{"boundary", "wall_work", "J/kg", Parity::even, 1, {}, true}};
 
   template <class Visit>
   void for_each_field(Visit&& visit) {
@@ -84,6 +88,7 @@ struct State {
     boundary.for_each_field(visit);
     visit(wall_velocity);
     visit(drive_time);
+    visit(wall_work);
   }
 };
 

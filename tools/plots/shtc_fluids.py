@@ -11,10 +11,11 @@ Usage: /usr/bin/python3 tools/plots/shtc_fluids.py [--runs DIR] [--out DIR] [--m
   --revsph     the revsph binary (default: build/bin/revsph, else build-*/bin/revsph)
   --threads N  passed to revsph (default: revsph's own, all cores)
 
-Runs: taylor-couette-coarse (dr = 1/20) and taylor-couette (dr = 1/30), both with the matched
-relaxation splitting; taylor-couette-paper (dr = 1/20 with the paper's splitting and dt of eq. 58);
-cavity-re100, cavity-re400 (dr = 1/50), cavity-re1000 (dr = 1/80), matched splitting;
-cavity-re100-paper (dr = 1/50, the paper's splitting at its dt = tau / 10).
+Runs (models/shtc/README.md explains the relaxation splittings): taylor-couette-coarse (dr =
+1/20) and taylor-couette (dr = 1/30), matched splitting; taylor-couette-step-ends (dr = 1/20,
+relaxation at the step ends); taylor-couette-paper (dr = 1/20, the paper's splitting and dt of
+eq. 58); cavity-re100, cavity-re400, cavity-re1000 (dr = 1/50, matched splitting);
+cavity-re100-step-ends (dr = 1/50, relaxation at the step ends, dt / tau = 0.3).
 
 Writes:
   couette_profile.csv/.png   Fig. 8: tangential velocity against r at t = 10 of the particles on
@@ -49,6 +50,8 @@ REFDATA = REPO.parent / "shared" / "refdata"
 COUETTE = {
     "taylor-couette-coarse": ["run", "taylor-couette-coarse"],
     "taylor-couette": ["run", "taylor-couette"],
+    "taylor-couette-step-ends": ["run", "taylor-couette-coarse", "--set",
+                                 "material.relaxation_splitting=\"step_ends\""],
     "taylor-couette-paper": ["run", "taylor-couette-coarse", "--set",
                              "material.relaxation_splitting=\"paper\"", "--set",
                              "discretisation.time_step_factor=0.05"],
@@ -57,10 +60,10 @@ CAVITY = {
     "cavity-re100": ["run", "cavity-re100"],
     "cavity-re400": ["run", "cavity-re400"],
     "cavity-re1000": ["run", "cavity-re1000"],
-    # dt = tau / 10 as in Table 1: factor = 1.5e-5 s sqrt(c0^2 + 4/3 cs^2) / dr
-    "cavity-re100-paper": ["run", "cavity-re100", "--set",
-                           "material.relaxation_splitting=\"paper\"", "--set",
-                           "discretisation.time_step_factor=0.022913"],
+    # dt / tau = 0.3 (step_ends needs < 1/3): factor = 0.3 tau sqrt(c0^2 + 4/3 cs^2) / dr
+    "cavity-re100-step-ends": ["run", "cavity-re100", "--set",
+                               "material.relaxation_splitting=\"step_ends\"", "--set",
+                               "discretisation.time_step_factor=0.068738"],
 }
 RUNS = {**COUETTE, **CAVITY}
 

@@ -97,8 +97,8 @@ int main(int argc, char** argv) {
   verify_app
       ->add_option("--energy-tolerance", verify.energy_tolerance,
                    "a dissipative case (one with irreversible terms) is not reversed: it passes "
-                   "if its energy budget, |E(t) - E(0) - W(t)| over the largest |E|, |W|, stays "
-                   "below this (default 1e-2)")
+                   "if its energy budget, |E(t) - E(0)| over the largest energy term, stays below "
+                   "this (default 1e-2)")
       ->check(CLI::PositiveNumber);
 
   HashOptions hash;
