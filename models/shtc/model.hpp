@@ -8,9 +8,12 @@
 // Each sub-step is undone bit for bit by itself after a time reversal (v -> -v), and the
 // sequence is a palindrome: the step is bitwise reversible (design note §2, §4). The distortion
 // update replaces the paper's Cayley form (same second order; tests compare them).
+// A fluid's relaxation (eqs. 51-53, irreversible) runs after the distortion update (the paper's
+// eq. 52) or, with relaxation_splitting = "step_ends", as a half step at both ends of the
+// sequence (relaxation.hpp); for a solid those end sub-steps do nothing.
 //
-// Particles: "material" (moving) then "boundary" (fixed, zero velocity; state.hpp), together the
-// carriers. The neighbour loops run over the carriers in cell order (slots); the state and every
+// Particles: "material" (moving) then "boundary" (in place, at rest or pretending a wall
+// velocity; state.hpp), together the carriers. The neighbour loops run over the carriers in cell order (slots); the state and every
 // output stay in canonical order.
 
 #include "core/cell_list.hpp"
