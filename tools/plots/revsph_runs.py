@@ -69,3 +69,38 @@ def write_report(path, report):
     path.write_text("\n".join(lines) + "\n")
     for key, value in report:
         print(f"{key}: {value}")
+
+
+def figure_parser(doc):
+    """The options every figure script shares (see its docstring)."""
+    from docstring_cli import parser_from_docstring
+
+    parser = parser_from_docstring(doc)
+    parser.add_argument("--runs", default="out/shtc")
+    parser.add_argument("--out", default=str(REPO / "docs" / "figures" / "shtc"))
+    parser.add_argument("--make-runs", action="store_true")
+    parser.add_argument("--revsph")
+    parser.add_argument("--threads")
+    return parser
+
+
+def figure_script_main(args, runs_table, makers, report_name):
+    """Makes the missing runs if asked, calls each maker(runs, out, report) whose runs all
+    exist, writes the report. Returns the exit status: 0 only if every maker ran."""
+    runs, out = Path(args.runs), Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    if args.make_runs:
+        make_missing_runs(runs, runs_table, find_revsph(args.revsph), args.threads)
+    report = []
+    made = True
+    for needed, make in makers:
+        missing = missing_runs(runs, needed)
+        if missing:
+            print(f"skipped {make.__name__}: missing runs {', '.join(missing)} in {runs} "
+                  "(use --make-runs)")
+            made = False
+            continue
+        make(runs, out, report)
+    write_report(out / report_name, report)
+    print(f"wrote {out}/")
+    return 0 if made else 1

@@ -2,7 +2,7 @@
 """The viscous-fluid benchmarks of paper 2 (SHTC-SPH, §4.3-4.4) from revsph runs: CSV + figures.
 
 Usage: /usr/bin/python3 tools/plots/shtc_fluids.py [--runs DIR] [--out DIR] [--make-runs]
-           [--revsph PATH] [--threads N]
+           [--revsph PATH] [--threads N] [--refdata DIR]
 
   --runs DIR   where the runs live, one subdirectory per run (default: out/shtc)
   --out DIR    where the CSV files and figures go (default: docs/figures/shtc)
@@ -10,6 +10,8 @@ Usage: /usr/bin/python3 tools/plots/shtc_fluids.py [--runs DIR] [--out DIR] [--m
                revsph command; about 90 min on 2 cores in all
   --revsph     the revsph binary (default: build/bin/revsph, else build-*/bin/revsph)
   --threads N  passed to revsph (default: revsph's own, all cores)
+  --refdata D  where ghia1982_u_vertical_centerline.csv and ghia1982_v_horizontal_centerline.csv
+               are (default /work/shared/refdata)
 
 Runs (models/shtc/README.md explains the relaxation splittings): taylor-couette-coarse (dr =
 1/20) and taylor-couette (dr = 1/30), matched splitting; taylor-couette-step-ends (dr = 1/20,
@@ -34,9 +36,7 @@ Exit status 0 only if every figure was made.
 import sys
 from pathlib import Path
 
-from docstring_cli import parser_from_docstring
-from revsph_runs import (REPO, case_of, find_revsph, make_missing_runs, missing_runs, read_csv,
-                         snapshots, write_csv, write_report)
+from revsph_runs import case_of, figure_parser, figure_script_main, read_csv, snapshots, write_csv
 
 import matplotlib
 
@@ -46,7 +46,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 DPI = 110
-REFDATA = REPO.parent / "shared" / "refdata"
+REFDATA = Path("/work/shared/refdata")
 COUETTE = {
     "taylor-couette-coarse": ["run", "taylor-couette-coarse"],
     "taylor-couette": ["run", "taylor-couette"],
@@ -280,30 +280,15 @@ def cavity_figures(runs, out, report):
 
 
 def main():
-    parser = parser_from_docstring(__doc__)
-    parser.add_argument("--runs", default="out/shtc")
-    parser.add_argument("--out", default=str(REPO / "docs" / "figures" / "shtc"))
-    parser.add_argument("--make-runs", action="store_true")
-    parser.add_argument("--revsph")
-    parser.add_argument("--threads")
+    global REFDATA
+    parser = figure_parser(__doc__)
+    parser.add_argument("--refdata", default=str(REFDATA))
     args = parser.parse_args()
-    runs, out = Path(args.runs), Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    if args.make_runs:
-        make_missing_runs(runs, RUNS, find_revsph(args.revsph), args.threads)
-    report = []
-    made = True
-    for needed, make in ((COUETTE, couette_figures), (CAVITY, cavity_figures)):
-        missing = missing_runs(runs, needed)
-        if missing:
-            print(f"skipped {make.__name__}: missing runs {', '.join(missing)} in {runs} "
-                  "(use --make-runs)")
-            made = False
-            continue
-        make(runs, out, report)
-    write_report(out / "shtc_fluids.md", report)
-    print(f"wrote {out}/")
-    return 0 if made else 1
+    REFDATA = Path(args.refdata)
+    return figure_script_main(
+        args, RUNS,
+        [(COUETTE, couette_figures), (CAVITY, cavity_figures)],
+        "shtc_fluids.md")
 
 
 if __name__ == "__main__":

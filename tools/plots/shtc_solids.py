@@ -35,9 +35,7 @@ Exit status 0 only if every figure was made.
 import sys
 from pathlib import Path
 
-from docstring_cli import parser_from_docstring
-from revsph_runs import (REPO, case_of, find_revsph, make_missing_runs, missing_runs, read_csv,
-                         write_csv, write_report)
+from revsph_runs import case_of, figure_parser, figure_script_main, read_csv, write_csv
 
 import matplotlib
 
@@ -250,31 +248,11 @@ def column_figures(runs, out, report):
 
 
 def main():
-    parser = parser_from_docstring(__doc__)
-    parser.add_argument("--runs", default="out/shtc")
-    parser.add_argument("--out", default=str(REPO / "docs" / "figures" / "shtc"))
-    parser.add_argument("--make-runs", action="store_true")
-    parser.add_argument("--revsph")
-    parser.add_argument("--threads")
-    args = parser.parse_args()
-    runs, out = Path(args.runs), Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    if args.make_runs:
-        make_missing_runs(runs, RUNS, find_revsph(args.revsph), args.threads)
-    report = []
-    made = True
-    for needed, make in ((["beryllium-plate", "beryllium-plate-no-penalty"], plate_figures),
-                         (["twisting-column"], column_figures)):
-        missing = missing_runs(runs, needed)
-        if missing:
-            print(f"skipped {make.__name__}: missing runs {', '.join(missing)} in {runs} "
-                  "(use --make-runs)")
-            made = False
-            continue
-        make(runs, out, report)
-    write_report(out / "shtc_solids.md", report)
-    print(f"wrote {out}/")
-    return 0 if made else 1
+    return figure_script_main(
+        figure_parser(__doc__).parse_args(), RUNS,
+        [(["beryllium-plate", "beryllium-plate-no-penalty"], plate_figures),
+         (["twisting-column"], column_figures)],
+        "shtc_solids.md")
 
 
 if __name__ == "__main__":
