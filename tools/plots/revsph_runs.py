@@ -59,9 +59,23 @@ def snapshots(run):
 
 
 def case_of(run):
-    """The case file (with overrides applied by revsph) from the run's first snapshot."""
+    """The case file of a run, from its first snapshot, with the run's --set overrides applied."""
     with h5py.File(snapshots(run)[0]) as f:
-        return tomllib.loads(f.attrs["case_text"])
+        case = tomllib.loads(f.attrs["case_text"])
+        stored = f.attrs.get("overrides")
+        # An empty list is stored as an HDF5 empty attribute (h5py.Empty), not as [].
+        overrides = [] if stored is None or isinstance(stored, h5py.Empty) else list(stored)
+    for override in overrides:
+        key, value = override.split("=", 1)
+        node = case
+        *parents, last = key.split(".")
+        for part in parents:
+            name, _, index = part.partition("[")
+            node = node.setdefault(name, {})
+            if index:
+                node = node[int(index.rstrip("]"))]
+        node[last] = tomllib.loads(f"v = {value}")["v"]
+    return case
 
 
 def write_report(path, report):
