@@ -24,7 +24,7 @@ Writes:
                              the segment y = 0, 1 <= x <= 2 (|y| < dr / 2), with the exact
                              profile of eq. (64); right: v - omega r, as the paper's right panel
   couette_energy.csv/.png    Fig. 10 (right): energies over the final total, and the budget
-                             E(t) - E(0) against the work of the wall, integral of wall_power
+                             E(t) - E(0) against the work of the wall (taylor-couette-step-ends)
   cavity_centrelines.csv/.png  Fig. 14: u on x = 1/2 and v on y = 1/2 at the end of each cavity
                              run (kernel-weighted average of the particles, walls included with
                              the velocity they pretend), with Ghia et al. (1982)
@@ -147,8 +147,9 @@ def couette_figures(runs, out, report):
     fig.tight_layout()
     fig.savefig(out / "couette_profile.png", dpi=DPI)
     plt.close(fig)
-    budget_figure(runs / "taylor-couette", out / "couette_energy",
-                  "Taylor-Couette dr = 1/30 (paper 2, Fig. 10 right)", report, "Taylor-Couette")
+    budget_figure(runs / "taylor-couette-step-ends", out / "couette_energy",
+                  "Taylor-Couette dr = 1/20, step_ends (paper 2, Fig. 10 right)", report,
+                  "Taylor-Couette")
     for name in COUETTE:
         mismatch, how = budget_mismatch(runs / name)
         report.append((f"Taylor-Couette {name}: energy budget (E - E(0) - W) / W at the end "
