@@ -68,6 +68,16 @@ ExactDistortion<D> Model<D>::distortion_of(std::size_t a) {
 }
 
 template <int D>
+void Model<D>::store_distortion(std::size_t a, const ExactDistortion<D>& distortion) {
+  ParticleSetState<D>& set = set_of(a);
+  const std::size_t i = index_in_set(a);
+  set.log_det.at(0, i) = distortion.log_det;
+  for (int c = 0; c < D * D; ++c) {
+    set.unimodular.at(c, i) = distortion.unimodular[c];
+  }
+}
+
+template <int D>
 Vec<D> Model<D>::wall_velocity_now(std::size_t i) const {
   const std::int64_t clock = state_.drive_time.at(0, i);
   Vec<D> v{};
@@ -202,12 +212,7 @@ void Model<D>::update_distortion(double dt) {
                     "overflow or non-finite value in the distortion update");
       continue;
     }
-    ParticleSetState<D>& set = set_of(a);
-    const std::size_t i = index_in_set(a);
-    set.log_det.at(0, i) = distortion.log_det;
-    for (int c = 0; c < D * D; ++c) {
-      set.unimodular.at(c, i) = distortion.unimodular[c];
-    }
+    store_distortion(a, distortion);
   }
   faults.throw_if_any();
   force_valid_ = false;
@@ -242,10 +247,7 @@ void Model<D>::relax_all(double dt) {
       faults.record(i, set_name(a), "distortion", "overflow or non-finite value in the relaxation");
       continue;
     }
-    set.log_det.at(0, i) = distortion.log_det;
-    for (int c = 0; c < D * D; ++c) {
-      set.unimodular.at(c, i) = distortion.unimodular[c];
-    }
+    store_distortion(a, distortion);
   }
   faults.throw_if_any();
   force_valid_ = false;

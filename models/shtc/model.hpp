@@ -104,6 +104,7 @@ private:
     return a < material_count() ? a : a - material_count();
   }
   ExactDistortion<D> distortion_of(std::size_t a);
+  void store_distortion(std::size_t a, const ExactDistortion<D>& distortion);
   // The velocity boundary particle i pretends now (state.hpp), and whether any wall moves.
   Vec<D> wall_velocity_now(std::size_t i) const;
   bool walls_move() const;
