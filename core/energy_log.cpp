@@ -32,7 +32,11 @@ void EnergyLog::record(std::int64_t step, double time, const EnergyBudget& budge
       *csv_ << ",total,relative_error\n";
     }
   }
-  last_relative_error_ = std::fabs(total - *initial_total_) / std::fabs(*initial_total_);
+  scale_ = std::max(scale_, std::fabs(*initial_total_));
+  for (const EnergyTerm& term : budget.terms) {
+    scale_ = std::max(scale_, std::fabs(term.value));
+  }
+  last_relative_error_ = std::fabs(total - *initial_total_) / scale_;
   max_relative_error_ = std::max(max_relative_error_, last_relative_error_);
   last_ = budget;
   if (csv_) {

@@ -1,7 +1,10 @@
 #pragma once
 // energy.csv: one row per output step with every energy term, the total and the relative error
-// |E(t) - E(0)| / |E(0)|, E(0) being the first row's total or, for a restarted run, the total
-// at the start of the original run.
+// |E(t) - E(0)| / S, E(0) being the first row's total or, for a restarted run, the total at the
+// start of the original run, and S the larger of |E(0)| and the largest |term| recorded so far:
+// |E(0)| itself for an isolated system whose terms are positive, and still a meaningful scale
+// for one that starts at rest (E(0) = 0) and is driven (its terms then include the work done on
+// it, counted negative).
 
 #include "core/energy.hpp"
 
@@ -32,6 +35,7 @@ private:
   std::optional<std::ofstream> csv_;
   std::optional<double> initial_total_;
   bool recorded_ = false;
+  double scale_ = 0.0;
   double last_relative_error_ = 0.0;
   double max_relative_error_ = 0.0;
   EnergyBudget last_;

@@ -206,7 +206,7 @@ int verify_command(const VerifyCommandOptions& options) {
   std::cout << "initial state hash:   " << report.initial_hash << "\n"
             << "turning-point hash:   " << report.turning_point_hash << "\n"
             << "returned state hash:  " << report.final_hash << "\n";
-  std::printf("energy: max |E(t) - E(0)| / |E(0)| = %.3e forward, %.3e backward\n",
+  std::printf("energy: max |E(t) - E(0)| / max(|E(0)|, |terms|) = %.3e forward, %.3e backward\n",
               output.forward_energy->max_relative_error(),
               output.backward_energy->max_relative_error());
   std::printf("wall time: %.2f s\n", report.wall_seconds);
