@@ -95,12 +95,6 @@ Vec<D> Model<D>::wall_velocity_now(std::size_t i) const {
 }
 
 template <int D>
-bool Model<D>::walls_move() const {
-  return std::any_of(state_.wall_velocity.all().begin(), state_.wall_velocity.all().end(),
-                     [](std::int64_t v) { return v != 0; });
-}
-
-template <int D>
 void Model<D>::initialise_constants() {
   const std::size_t n = carrier_count();
   // Unit masses and no constants: the density sums are then sum_b w_ab.
@@ -176,26 +170,21 @@ void Model<D>::update_distortion(double dt) {
   for (int k = 0; k < D; ++k) {
     slot_velocity_[k].resize(n);
   }
+  wall_velocity_.resize(n - material);
+  for (std::size_t i = 0; i < wall_velocity_.size(); ++i) {
+    wall_velocity_[i] = wall_velocity_now(i);
+  }
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < n; ++s) {
     const std::uint32_t a = carrier_of_slot[s];
     for (int k = 0; k < D; ++k) {
-      slot_velocity_[k][s] =
-          a < material ? fixedpoint::to_real(state_.velocity.at(k, a), v_scale) : 0.0;
-    }
-    if (a >= material) {
-      const Vec<D> wall = wall_velocity_now(a - material); // eq. (10) with the wall's velocity
-      for (int k = 0; k < D; ++k) {
-        slot_velocity_[k][s] = wall[k];
-      }
+      // Eq. (10) with the velocity a wall pretends.
+      slot_velocity_[k][s] = a < material ? fixedpoint::to_real(state_.velocity.at(k, a), v_scale)
+                                          : wall_velocity_[a - material][k];
     }
   }
   const bool driven = walls_move();
-  std::vector<Vec<D>> wall_velocity;
   if (driven) {
-    for (std::size_t i = 0; i < state_.boundary_position.count(); ++i) {
-      wall_velocity.push_back(wall_velocity_now(i));
-    }
     shear_accelerations(shear_before_);
   }
   velocity_gradients<D>(kernel_, view_of<D>(slot_position_), view_of<D>(slot_velocity_), slot_mass_,
@@ -218,7 +207,7 @@ void Model<D>::update_distortion(double dt) {
   force_valid_ = false;
   if (driven) {
     shear_accelerations(shear_after_);
-    if (!add_wall_work(wall_velocity, shear_before_, shear_after_, dt)) {
+    if (!add_wall_work(shear_before_, shear_after_, dt)) {
       throw SimulationFault({"boundary", 0, "wall_work", "does not fit its fixed-point scale"}, 0);
     }
   }
@@ -289,6 +278,7 @@ void Model<D>::update_constants() {
     lambda_constant_[a] =
         fixedpoint::to_real(set.lambda_constant.at(0, i), set.lambda_constant.info().scale);
   }
+  walls_move_ = any_wall_moves(state_);
   constants_valid_ = true;
 }
 
@@ -524,15 +514,15 @@ void Model<D>::shear_accelerations(CoordinateArrays<D>& acceleration) {
   update_geometry();
   const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
   const std::size_t n = carrier_count();
-  std::vector<GradientMatrix<D>> shear(n);
+  slot_shear_stress_.resize(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < n; ++s) {
     const Matrix<D> a =
         to_matrix<D>(distortion_of(carrier_of_slot[s]), parameters_.distortion_scales);
-    shear[s] = shear_stress<D>(parameters_.material, a, sums_.h_inverse[s]);
+    slot_shear_stress_[s] = shear_stress<D>(parameters_.material, a, sums_.h_inverse[s]);
   }
-  compute_acceleration<D>(kernel_, 0.0, view_of<D>(slot_position_), slot_mass_, shear, sums_.lambda,
-                          carrier_pairs_, acceleration);
+  compute_acceleration<D>(kernel_, 0.0, view_of<D>(slot_position_), slot_mass_, slot_shear_stress_,
+                          sums_.lambda, carrier_pairs_, acceleration);
 }
 
 template <int D>
@@ -560,8 +550,7 @@ double Model<D>::wall_power() {
 }
 
 template <int D>
-bool Model<D>::add_wall_work(std::span<const Vec<D>> wall_velocity,
-                             const CoordinateArrays<D>& before, const CoordinateArrays<D>& after,
+bool Model<D>::add_wall_work(const CoordinateArrays<D>& before, const CoordinateArrays<D>& after,
                              double dt) {
   const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
   const std::size_t material = material_count();
@@ -575,7 +564,7 @@ bool Model<D>::add_wall_work(std::span<const Vec<D>> wall_velocity,
     // exactly what this one added.
     double work = 0.0;
     for (int k = 0; k < D; ++k) {
-      work -= (before[k][s] + after[k][s]) * wall_velocity[a - material][k];
+      work -= (before[k][s] + after[k][s]) * wall_velocity_[a - material][k];
     }
     fits = fits && FixedArithmetic::try_increment(state_.wall_work.at(0, a - material),
                                                   0.5 * dt * work, state_.wall_work.info().scale);

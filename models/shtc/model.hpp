@@ -105,9 +105,10 @@ private:
   }
   ExactDistortion<D> distortion_of(std::size_t a);
   void store_distortion(std::size_t a, const ExactDistortion<D>& distortion);
-  // The velocity boundary particle i pretends now (state.hpp), and whether any wall moves.
+  // The velocity boundary particle i pretends now (state.hpp).
   Vec<D> wall_velocity_now(std::size_t i) const;
-  bool walls_move() const;
+  // Whether any wall moves (wall_velocity is a constant of the state: set with the constants).
+  bool walls_move() const { return walls_move_; }
   // P = -sum_b v_b . F_b over the boundary particles, F_b the force of the distortion's stress
   // on b: with L linear in every velocity, the elastic energy changes by -sum_c v_c . F_c over
   // all carriers, so this is the rate at which the walls' pretended motion adds energy.
@@ -116,8 +117,9 @@ private:
   void shear_accelerations(CoordinateArrays<D>& acceleration);
   // -dt/2 v_b . (a_b before + a_b after) per mass, into wall_work: the trapezoid pairing of the
   // update, which the kicks balance to O(dt^2) in the reversible part.
-  bool add_wall_work(std::span<const Vec<D>> wall_velocity, const CoordinateArrays<D>& before,
-                     const CoordinateArrays<D>& after, double dt);
+  // Uses the wall velocities of the sub-step, wall_velocity_.
+  bool add_wall_work(const CoordinateArrays<D>& before, const CoordinateArrays<D>& after,
+                     double dt);
   // The relaxation of eqs. (51)-(53) over dt, adding the energy per mass it removes.
   bool relax(ExactDistortion<D>& distortion, std::int64_t& dissipated, double dt) const;
   void update_constants();
@@ -134,6 +136,7 @@ private:
 
   bool constants_valid_ = false;
   std::vector<double> mass_, density_constant_, lambda_constant_; // carriers
+  bool walls_move_ = false;
   // Derived from the positions.
   bool geometry_valid_ = false;
   CellList<D> carrier_cells_; // its sorted_points() maps a slot to its carrier
@@ -150,6 +153,8 @@ private:
   // Scratch of the distortion sub-step.
   CoordinateArrays<D> slot_velocity_;
   std::vector<GradientMatrix<D>> velocity_sum_, velocity_gradient_;
+  std::vector<Vec<D>> wall_velocity_; // boundary, canonical order
+  std::vector<GradientMatrix<D>> slot_shear_stress_;
   CoordinateArrays<D> shear_before_, shear_after_;
 };
 

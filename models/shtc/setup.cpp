@@ -140,18 +140,12 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
                               {bytes_per_particle(D, parameters.support_radius() / parameters.dr),
                                options.memory_budget_bytes});
   std::vector<Vec<D>> material_positions, boundary_positions, boundary_velocities;
-  bool moving_walls = false;
   for (const auto& block : blocks) {
     auto& positions = block.kind == "material" ? material_positions : boundary_positions;
     positions.insert(positions.end(), block.positions.begin(), block.positions.end());
     const std::vector<Vec<D>> velocities = wall_velocities<D>(case_file, block);
     if (block.kind == "boundary") {
       boundary_velocities.insert(boundary_velocities.end(), velocities.begin(), velocities.end());
-      for (const Vec<D>& v : velocities) {
-        for (int k = 0; k < D; ++k) {
-          moving_walls = moving_walls || v[k] != 0.0;
-        }
-      }
     }
   }
   if (material_positions.empty()) {
@@ -171,6 +165,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   fill_vectors<D>(case_file, boundary_positions, state.boundary_position, "position");
   state.wall_velocity.info().scale = parameters.velocity_scale;
   fill_vectors<D>(case_file, boundary_velocities, state.wall_velocity, "wall velocity");
+  const bool moving_walls = any_wall_moves(state);
   state.drive_time.info().scale = parameters.drive_time_scale;
   state.drive_time.resize(boundary_positions.size());
   state.wall_work.info().scale = parameters.dissipated_scale;

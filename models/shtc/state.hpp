@@ -10,6 +10,7 @@
 
 #include "core/state_field.hpp"
 
+#include <algorithm>
 #include <cstdint>
 
 namespace revsph::shtc {
@@ -91,5 +92,12 @@ struct State {
     visit(wall_work);
   }
 };
+
+// Whether any boundary particle is a moving wall.
+template <int D>
+bool any_wall_moves(const State<D>& state) {
+  const auto velocities = state.wall_velocity.all();
+  return std::any_of(velocities.begin(), velocities.end(), [](std::int64_t v) { return v != 0; });
+}
 
 } // namespace revsph::shtc

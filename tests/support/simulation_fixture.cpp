@@ -5,6 +5,18 @@
 
 namespace revsph::testing {
 
+namespace {
+
+// As the CLI does: run settings read, unknown keys refused after the model has read its own.
+std::unique_ptr<Simulation> simulation_of(CaseFile& case_file, Arithmetic arithmetic) {
+  read_run_settings(case_file);
+  auto simulation = create_simulation(case_file, SimulationOptions{arithmetic});
+  case_file.require_no_unknown_keys();
+  return simulation;
+}
+
+} // namespace
+
 std::unique_ptr<Simulation> make_simulation(const std::string& name,
                                             const std::vector<Override>& overrides,
                                             Arithmetic arithmetic) {
@@ -12,18 +24,12 @@ std::unique_ptr<Simulation> make_simulation(const std::string& name,
   for (const Override& o : overrides) {
     case_file.set(o.key, o.value);
   }
-  read_run_settings(case_file);
-  auto simulation = create_simulation(case_file, SimulationOptions{arithmetic});
-  case_file.require_no_unknown_keys();
-  return simulation;
+  return simulation_of(case_file, arithmetic);
 }
 
 std::unique_ptr<Simulation> make_simulation_from_text(const std::string& text) {
   CaseFile case_file = CaseFile::parse(text, "test case");
-  read_run_settings(case_file);
-  auto simulation = create_simulation(case_file, SimulationOptions{Arithmetic::fixed});
-  case_file.require_no_unknown_keys();
-  return simulation;
+  return simulation_of(case_file, Arithmetic::fixed);
 }
 
 std::string hash_of(Simulation& simulation) {
