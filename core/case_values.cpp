@@ -30,4 +30,11 @@ fixedpoint::Scale scale_or(const CaseFile& case_file, const char* key, double ma
   return fixedpoint::Scale::covering(magnitude, fraction_bits);
 }
 
+std::string format_scientific(double value, int digits) {
+  std::ostringstream text;
+  text.precision(digits);
+  text << std::scientific << value;
+  return text.str();
+}
+
 } // namespace revsph

@@ -4,6 +4,8 @@
 #include "core/case_file.hpp"
 #include "fixedpoint/scale.hpp"
 
+#include <string>
+
 namespace revsph {
 
 // A quantity derived from valid inputs can still overflow to infinity or underflow to zero
@@ -15,5 +17,8 @@ void require_positive_finite(const CaseFile& case_file, const char* key, const c
 // that covers `magnitude` with `fraction_bits` bits below it.
 fixedpoint::Scale scale_or(const CaseFile& case_file, const char* key, double magnitude,
                            int fraction_bits);
+
+// "1.234e-05" with `digits` digits after the point: values of a setup report and its messages.
+std::string format_scientific(double value, int digits);
 
 } // namespace revsph

@@ -1,5 +1,6 @@
 #include "models/shtc/setup.hpp"
 
+#include "core/case_values.hpp"
 #include "core/particle_blocks.hpp"
 #include "core/run_settings.hpp"
 #include "models/shtc/model.hpp"
@@ -7,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
 
 namespace revsph::shtc {
@@ -126,10 +126,7 @@ std::vector<Vec<D>> wall_velocities(const CaseFile& case_file, const ParticleBlo
 }
 
 std::string scientific(double value) {
-  std::ostringstream text;
-  text.precision(6);
-  text << std::scientific << value;
-  return text.str();
+  return format_scientific(value, 6);
 }
 
 template <int D>

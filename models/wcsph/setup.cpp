@@ -1,5 +1,6 @@
 #include "models/wcsph/setup.hpp"
 
+#include "core/case_values.hpp"
 #include "core/particle_blocks.hpp"
 #include "core/run_settings.hpp"
 #include "models/wcsph/gresho.hpp"
@@ -77,10 +78,7 @@ CoordinateArrays<D> coordinate_arrays(const std::vector<Vec<D>>& points) {
 }
 
 std::string scientific(double value) {
-  std::ostringstream text;
-  text.precision(3);
-  text << std::scientific << value;
-  return text.str();
+  return format_scientific(value, 3);
 }
 
 // Paper 1 §3.2: the fluid particles move until their kernel density (eq. 4), dummy particles
