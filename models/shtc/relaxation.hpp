@@ -28,9 +28,8 @@ struct RelaxationSplitting {
 // dt, about exp(-x) with x = 6 dt / tau) where the continuous equations hold tau / 6 L = delta / x:
 // the viscosity is nu x R / (1 - R), 21 % low at the paper's own dt / tau = 0.075 (Taylor-Couette)
 // and 27 % at 0.1 (cavity); unstable (R > 1) beyond dt / tau = 0.46. And the second kick feels
-// the relaxed stress while the update raised the elastic energy with the unrelaxed one: each
-// step creates about m cs^2 |dt D|^2 of elastic energy that the relaxation then removes, so the
-// energy budget closes only to about 3 dt / tau of the dissipation.
+// the relaxed stress while the update raised the elastic energy with the unrelaxed one, so the
+// energy budget closes only to first order in dt (tests/system/shtc_test.cpp).
 inline RelaxationSplitting paper_splitting(double relaxation_time) {
   return {relaxation_time, 1, false};
 }
