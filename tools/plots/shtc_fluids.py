@@ -99,6 +99,21 @@ def couette_exact(r, r1, r2, omega):
     return omega * r2 * r2 / (r2 * r2 - r1 * r1) * (r - r1 * r1 / r)  # eq. (64)
 
 
+def couette_on_segment(run, r1=1.0, r2=2.0, omega=1.0):
+    """At the last snapshot: radius and tangential velocity of the material particles on the
+    segment y = 0, x > 0 (|y| < dr / 2), sorted by radius; the exact profile there; the time."""
+    dr = case_of(run)["discretisation"]["dr"]
+    position, velocity, count, time = final_state(run)
+    x, v = position[:count], velocity[:count]
+    on_segment = (np.abs(x[:, 1]) < 0.5 * dr) & (x[:, 0] > 0)
+    r = np.hypot(x[on_segment, 0], x[on_segment, 1])
+    order = np.argsort(r)
+    tangential = ((x[on_segment, 0] * v[on_segment, 1] - x[on_segment, 1] * v[on_segment, 0])
+                  / r)[order]
+    r = r[order]
+    return r, tangential, couette_exact(r, r1, r2, omega), time
+
+
 def couette_figures(runs, out, report):
     r1, r2, omega = 1.0, 2.0, 1.0
     fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2))
@@ -110,15 +125,10 @@ def couette_figures(runs, out, report):
         run = runs / name
         case = case_of(run)
         dr = case["discretisation"]["dr"]
-        position, velocity, count, time = final_state(run)
+        r, tangential, exact, time = couette_on_segment(run)
+        error = tangential - exact
+        position, velocity, count, _ = final_state(run)
         x, v = position[:count], velocity[:count]
-        on_segment = (np.abs(x[:, 1]) < 0.5 * dr) & (x[:, 0] > 0)
-        r = np.hypot(x[on_segment, 0], x[on_segment, 1])
-        order = np.argsort(r)
-        r = r[order]
-        tangential = ((x[on_segment, 0] * v[on_segment, 1] - x[on_segment, 1] * v[on_segment, 0])
-                      / np.hypot(x[on_segment, 0], x[on_segment, 1]))[order]
-        error = tangential - couette_exact(r, r1, r2, omega)
         radius_all = np.hypot(x[:, 0], x[:, 1])
         tangential_all = (x[:, 0] * v[:, 1] - x[:, 1] * v[:, 0]) / radius_all
         error_all = tangential_all - couette_exact(radius_all, r1, r2, omega)
@@ -216,6 +226,29 @@ def ghia(re):
     return u["y"], u[f"Re{re}"], v["x"], v[f"Re{re}"]
 
 
+def cavity_at_ghia_points(run):
+    """u on x = 1/2 and v on y = 1/2 at the last snapshot (kernel-weighted averages of all
+    carriers, walls with the velocity they pretend) at Ghia et al.'s points, with Ghia's values;
+    also the two interpolating functions and the time."""
+    case = case_of(run)
+    re = round(1.0 / case["material"]["kinematic_viscosity"])
+    support = 2.0 * case["discretisation"]["smoothing_length_over_dr"] * case["discretisation"]["dr"]
+    position, velocity, _, time = final_state(run)
+    y_ref, u_ref, x_ref, v_ref = ghia(re)
+
+    def u_on_vertical(y):
+        return shepard(np.column_stack([np.full_like(y, 0.5), y]), position, velocity,
+                       support)[:, 0]
+
+    def v_on_horizontal(x):
+        return shepard(np.column_stack([x, np.full_like(x, 0.5)]), position, velocity,
+                       support)[:, 1]
+
+    return {"y": y_ref, "u": u_on_vertical(y_ref), "u_ghia": u_ref, "x": x_ref,
+            "v": v_on_horizontal(x_ref), "v_ghia": v_ref, "time": time,
+            "u_on_vertical": u_on_vertical, "v_on_horizontal": v_on_horizontal}
+
+
 def cavity_figures(runs, out, report):
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
     energy_fig, energy_axes = plt.subplots(1, 1, figsize=(7, 4.2))
@@ -225,19 +258,10 @@ def cavity_figures(runs, out, report):
         case = case_of(run)
         re = round(1.0 / case["material"]["kinematic_viscosity"])
         dr = case["discretisation"]["dr"]
-        support = 2.0 * case["discretisation"]["smoothing_length_over_dr"] * dr
-        position, velocity, count, time = final_state(run)
-        y_ref, u_ref, x_ref, v_ref = ghia(re)
-
-        def u_on_vertical(y):
-            return shepard(np.column_stack([np.full_like(y, 0.5), y]), position, velocity,
-                           support)[:, 0]
-
-        def v_on_horizontal(x):
-            return shepard(np.column_stack([x, np.full_like(x, 0.5)]), position, velocity,
-                           support)[:, 1]
-
-        u, v = u_on_vertical(y_ref), v_on_horizontal(x_ref)
+        points = cavity_at_ghia_points(run)
+        y_ref, u_ref, x_ref, v_ref = (points[k] for k in ("y", "u_ghia", "x", "v_ghia"))
+        u, v, time = points["u"], points["v"], points["time"]
+        u_on_vertical, v_on_horizontal = points["u_on_vertical"], points["v_on_horizontal"]
         line = np.linspace(0.0, 1.0, 101)
         splitting = case["material"].get("relaxation_splitting", "paper")
         label = f"Re {re}, dr = 1/{round(1 / dr)}, {splitting}"

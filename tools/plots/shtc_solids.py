@@ -11,7 +11,7 @@ Usage: /usr/bin/python3 tools/plots/shtc_solids.py [--runs DIR] [--out DIR] [--m
   --revsph     the revsph binary (default: build/bin/revsph, else build-*/bin/revsph)
   --threads N  passed to revsph (default: revsph's own, all cores)
 
-Runs: beryllium-plate (§4.1, 9 345 particles, 33 165 steps), beryllium-plate-no-penalty (the
+Runs: beryllium-plate (§4.1, 9 611 particles, 33 165 steps), beryllium-plate-no-penalty (the
 same with cp = 0), twisting-column (§4.2, 5 424 + 339 particles, 58 068 steps).
 
 Writes:
@@ -33,7 +33,6 @@ Exit status 0 only if every figure was made.
 """
 
 import sys
-from pathlib import Path
 
 from revsph_runs import case_of, figure_parser, figure_script_main, read_csv, write_csv
 
@@ -99,32 +98,46 @@ def timoshenko_free_free(length, thickness, density, young, shear_modulus, eleme
     return np.sqrt(eigenvalues[2])  # after the two rigid modes (translation, rotation)
 
 
-def plate_figures(runs, out, report):
-    run = runs / "beryllium-plate"
+def plate_period(run):
+    """The centre point's y(t) of a plate run and the sinusoid fitted to it: (t, y, fitted angular
+    frequency, coefficients of c + a sin + b cos)."""
     case = case_of(run)
-    material, initial = case["material"], case["initial"]
     diagnostics = read_csv(run / "diagnostics.csv")
     t, y = diagnostics["time"], diagnostics["probe_y"]
-    omega = initial["omega"]
-    omegas = np.linspace(0.7 * omega, 1.3 * omega, 6001)
-    fitted, coefficients, rms = fit_sinusoid(t, y, omegas)
-    # Linear prediction at the probe particle: y = A (a1 (sinh s + sin s) - a2 (cosh s + cos s))
-    # sin(omega t), s = alpha (x - x0), the displacement whose rate is eq. (55).
-    x_probe = diagnostics["probe_x"][0]
-    s = initial["alpha"] * (x_probe - initial["x0"])
-    mode = initial["a1"] * (np.sinh(s) + np.sin(s)) - initial["a2"] * (np.cosh(s) + np.cos(s))
-    linear = initial["amplitude"] * mode * np.sin(omega * t)
-    # The model's small-strain moduli: shear mu = rho0 cs^2, bulk K = rho0 c0^2 (eqs. 29, 31);
-    # plane strain (2D runs keep A33 = 1): E' = E / (1 - nu^2).
+    omega = case["initial"]["omega"]
+    fitted, coefficients, _ = fit_sinusoid(t, y, np.linspace(0.7 * omega, 1.3 * omega, 6001))
+    return t, y, fitted, coefficients
+
+
+def model_timoshenko(case):
+    """First free-free angular frequency of a Timoshenko beam with the model's small-strain
+    moduli: shear mu = rho0 cs^2, bulk K = rho0 c0^2 (eqs. 29, 31); plane strain (2D runs keep
+    A33 = 1): E' = E / (1 - nu^2)."""
+    material = case["material"]
     rho0 = material["rest_density"]
     mu = rho0 * material["shear_speed"] ** 2
     bulk = rho0 * material["sound_speed"] ** 2
     young = 9.0 * bulk * mu / (3.0 * bulk + mu)
     poisson = (3.0 * bulk - 2.0 * mu) / (2.0 * (3.0 * bulk + mu))
     plane_strain = young / (1.0 - poisson**2)
-    length = 2.0 * abs(initial["x0"])
-    thickness = 0.01
-    timoshenko = timoshenko_free_free(length, thickness, rho0, plane_strain, mu)
+    block = case["particles"][0]
+    length, thickness = block["max"][0] - block["min"][0], block["max"][1] - block["min"][1]
+    return timoshenko_free_free(length, thickness, rho0, plane_strain, mu)
+
+
+def plate_figures(runs, out, report):
+    run = runs / "beryllium-plate"
+    case = case_of(run)
+    initial = case["initial"]
+    t, y, fitted, coefficients = plate_period(run)
+    omega = initial["omega"]
+    # Linear prediction at the probe particle: y = A (a1 (sinh s + sin s) - a2 (cosh s + cos s))
+    # sin(omega t), s = alpha (x - x0), the displacement whose rate is eq. (55).
+    x_probe = read_csv(run / "diagnostics.csv")["probe_x"][0]
+    s = initial["alpha"] * (x_probe - initial["x0"])
+    mode = initial["a1"] * (np.sinh(s) + np.sin(s)) - initial["a2"] * (np.cosh(s) + np.cos(s))
+    linear = initial["amplitude"] * mode * np.sin(omega * t)
+    timoshenko = model_timoshenko(case)
     period = 2.0 * np.pi / fitted
     report.append(("plate: fitted period of the centre point (s)", f"{period:.5e}"))
     report.append(("plate: linear theory 2 pi / omega, eq. (56) (s)",

@@ -1,0 +1,222 @@
+#!/usr/bin/python3
+"""Resolution studies of paper 2's benchmarks (SHTC-SPH): how the beryllium plate's period, the
+Taylor-Couette error and the cavity's error against Ghia change with dr. CSV + figures.
+
+Usage: /usr/bin/python3 tools/plots/shtc_convergence.py [--runs DIR] [--out DIR] [--make-runs]
+           [--revsph PATH] [--threads N] [--refdata DIR]
+
+  --runs DIR   where the runs live, one subdirectory per run (default: out/shtc)
+  --out DIR    where the CSV files and figures go (default: docs/figures/shtc)
+  --make-runs  first make every missing run (present = its summary.json exists), printing each
+               revsph command; about 1 h 40 min on 2 cores in all (plate W/60 and cavity
+               dr = 1/70 are 25 and 40 min of it, each on one core)
+  --revsph     the revsph binary (default: build/bin/revsph, else build-*/bin/revsph)
+  --threads N  passed to revsph (default: revsph's own, all cores)
+  --refdata D  where the Ghia et al. (1982) CSV files are (default /work/shared/refdata)
+
+Runs: the beryllium plate at dr = W/20, W/30, W/40 (the case) and W/60, each on the isometric
+grid fitted to the plate (see plate_overrides), and at W/20, W/30, W/40 with a tenth of eq. (56)'s
+amplitude (linear regime); Taylor-Couette at dr = 1/10, 1/20, 1/30 (matched splitting,
+time-step factor 0.1); the cavity at Re 100 with dr = 1/20, 1/30, 1/50 (the case), 1/70
+(matched splitting, factor 0.1). The runs the other two scripts share (beryllium-plate,
+taylor-couette-coarse, taylor-couette, cavity-re100) have their names.
+
+Writes:
+  plate_convergence.csv/.png    fitted period of the centre point against dr, at both
+                                amplitudes, with eq. (56)'s 2 pi / omega (and its 5 % band) and
+                                the Timoshenko beam of the model's moduli
+  couette_convergence.csv/.png  paper 2 Fig. 10 (left): max |v_theta - eq. 64| on y = 0 at t = 10
+  cavity_convergence.csv/.png   paper 2 Fig. 13 (left): L-inf error of u and v against Ghia at
+                                Re 100, t = 10
+  shtc_convergence.md           the numbers printed below, as a table
+Exit status 0 only if every figure was made.
+"""
+
+import math
+import sys
+from pathlib import Path
+
+import shtc_fluids
+from revsph_runs import case_of, figure_parser, figure_script_main, write_csv
+from shtc_fluids import cavity_at_ghia_points, couette_on_segment
+from shtc_solids import model_timoshenko, plate_period
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+DPI = 110
+PLATE_LENGTH, PLATE_THICKNESS = 0.06, 0.01
+
+
+def plate_overrides(n):
+    """--set overrides for the plate at dr = W/n on the isometric (triangular) grid fitted to the
+    plate: a whole number of rows, round(W / row period), with the spacing stretched so that they
+    fill W exactly and sit symmetrically about y = 0; even rows of N particles, odd rows N - 1
+    (shifted half a spacing), N chosen so that the mean row, (N - 1/2) spacing, is nearest L. A
+    lattice cut at the box instead loses a row when the row period does not divide W (W/40: 42
+    rows of 2.33e-4 m for a thickness of 43 such rows, 2.3 % thinner and off-centre by 0.11 mm;
+    the bending period goes as 1/W)."""
+    dr = PLATE_THICKNESS / n
+    row_period = dr * math.sqrt(2.0 / math.sqrt(3.0)) * math.sqrt(3.0) / 2.0
+    rows = round(PLATE_THICKNESS / row_period)
+    spacing = 2.0 * PLATE_THICKNESS / (rows * math.sqrt(3.0))
+    columns = round(PLATE_LENGTH / spacing + 0.5)
+    half_length = 0.5 * columns * spacing
+    half_thickness = 0.5 * PLATE_THICKNESS
+    return ["run", "beryllium-plate", "--set", f"discretisation.dr={dr!r}",
+            "--set", f"particles[0].spacing={spacing!r}",
+            "--set", f"particles[0].min=[{-half_length!r}, {-half_thickness!r}]",
+            "--set", f"particles[0].max=[{half_length!r}, {half_thickness!r}]",
+            "--set", "output.snapshot_every=100000"]
+
+
+def couette_overrides(n):
+    """Taylor-Couette at dr = 1/n: two wall rings inside R1 and outside R2."""
+    dr = 1.0 / n
+    return ["run", "taylor-couette", "--set", f"discretisation.dr={dr!r}",
+            "--set", f"particles[1].inner_radius={1.0 - 2.0 * dr!r}",
+            "--set", f"particles[2].outer_radius={2.0 + 2.0 * dr!r}"]
+
+
+def cavity_overrides(n):
+    """The Re 100 cavity at dr = 1/n: walls and lid two layers deep."""
+    dr = 1.0 / n
+    top = f"[1.0, {1.0 + 2.0 * dr!r}]"
+    return ["run", "cavity-re100", "--set", f"discretisation.dr={dr!r}",
+            "--set", f"particles[1].max={top}", "--set", f"particles[2].max={top}"]
+
+
+PLATE = {"plate-w20": plate_overrides(20), "plate-w30": plate_overrides(30),
+         "beryllium-plate": ["run", "beryllium-plate"], "plate-w60": plate_overrides(60)}
+# The same at a tenth of eq. (56)'s amplitude: the paper's A bends the plate to a surface strain
+# of 12 % (curvature A alpha^2 |mode''| = 25 /m at the centre), far from linear theory.
+LINEAR_AMPLITUDE = ["--set", "initial.amplitude=4.3369e-6"]
+PLATE_LINEAR = {"plate-linear-w20": plate_overrides(20) + LINEAR_AMPLITUDE,
+                "plate-linear-w30": plate_overrides(30) + LINEAR_AMPLITUDE,
+                "plate-linear-w40": plate_overrides(40) + LINEAR_AMPLITUDE}
+COUETTE = {"taylor-couette-dr10": couette_overrides(10),
+           "taylor-couette-coarse": ["run", "taylor-couette-coarse"],
+           "taylor-couette": ["run", "taylor-couette"]}
+CAVITY = {"cavity-re100-dr20": cavity_overrides(20), "cavity-re100-dr30": cavity_overrides(30),
+          "cavity-re100": ["run", "cavity-re100"], "cavity-re100-dr70": cavity_overrides(70)}
+RUNS = {**PLATE, **PLATE_LINEAR, **COUETTE, **CAVITY}
+
+
+def resolution_label(dr, unit):
+    return f"{unit}/{round(unit / dr)}"
+
+
+def plate_periods(runs, table):
+    """(dr, fitted period, name) of each run of `table`, coarsest first."""
+    rows = []
+    for name in table:
+        _, _, fitted, _ = plate_period(runs / name)
+        rows.append((case_of(runs / name)["discretisation"]["dr"], 2.0 * math.pi / fitted, name))
+    return sorted(rows, reverse=True)
+
+
+def plate_convergence(runs, out, report):
+    case = case_of(runs / "beryllium-plate")
+    linear = 2.0 * math.pi / case["initial"]["omega"]
+    timoshenko = 2.0 * math.pi / model_timoshenko(case)
+    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    columns = {}
+    for table, what, key in ((PLATE, "eq. (56)'s amplitude", "paper_amplitude"),
+                             (PLATE_LINEAR, "a tenth of it", "tenth_amplitude")):
+        rows = plate_periods(runs, table)
+        dr = np.array([r[0] for r in rows])
+        period = np.array([r[1] for r in rows])
+        columns.update({f"{key}_W_over_dr": PLATE_THICKNESS / dr, f"{key}_period": period,
+                        f"{key}_period_over_eq56": period / linear})
+        for d, p, name in rows:
+            report.append((f"plate, {what}, dr = {resolution_label(d, 'W')} ({name}): fitted "
+                           "period (s), against eq. (56), against the Timoshenko beam",
+                           f"{p:.5e}, {p / linear - 1:+.2%}, {p / timoshenko - 1:+.2%}"))
+        ax.plot(PLATE_THICKNESS / dr, period * 1e6, "o-", label=f"revsph, {what}")
+    longest = max(len(c) for c in columns.values())
+    write_csv(out / "plate_convergence.csv",
+              {k: np.pad(c, (0, longest - len(c)), constant_values=np.nan)
+               for k, c in columns.items()})
+    ax.axhline(linear * 1e6, color="k", lw=1, label="2 pi / omega, eq. (56)")
+    ax.axhspan(linear * 0.95e6, linear * 1.05e6, color="k", alpha=0.08, label="eq. (56) ± 5 %")
+    ax.axhline(timoshenko * 1e6, color="tab:green", ls="-.",
+               label="Timoshenko beam, the model's moduli (plane strain)")
+    ax.set_xlabel("W / dr")
+    ax.set_ylabel("fitted period of the centre point (µs)")
+    ax.set_title("Beryllium plate: period against resolution and amplitude")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(out / "plate_convergence.png", dpi=DPI)
+    plt.close(fig)
+
+
+def error_figure(out, stem, dr, curves, title, ylabel):
+    fig, ax = plt.subplots(figsize=(6, 4.2))
+    for label, error in curves.items():
+        ax.loglog(dr, error, "o-", label=label)
+    reference = dr / dr[-1] * max(e[-1] for e in curves.values())
+    ax.loglog(dr, reference, "k:", lw=1, label="first order")
+    ax.set_xlabel("dr")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(out / f"{stem}.png", dpi=DPI)
+    plt.close(fig)
+
+
+def couette_convergence(runs, out, report):
+    rows = []
+    for name in COUETTE:
+        dr = case_of(runs / name)["discretisation"]["dr"]
+        r, tangential, exact, time = couette_on_segment(runs / name)
+        error = np.abs(tangential - exact)
+        rows.append((dr, error.max(), error.mean(), time, name))
+    rows.sort(reverse=True)
+    dr, maximum, mean = (np.array([r[k] for r in rows]) for k in range(3))
+    write_csv(out / "couette_convergence.csv", {"dr": dr, "max_error": maximum,
+                                                "mean_error": mean})
+    for d, m, a, time, name in rows:
+        report.append((f"Taylor-Couette dr = {resolution_label(d, '1')} ({name}), t = {time:.2f}: "
+                       "max, mean |v_theta - eq. (64)| on y = 0", f"{m:.4f}, {a:.4f}"))
+    error_figure(out, "couette_convergence", dr, {"max (L-inf)": maximum, "mean": mean},
+                 "Taylor-Couette, t = 10 (paper 2, Fig. 10 left)", "|v_theta - exact| on y = 0")
+
+
+def cavity_convergence(runs, out, report):
+    rows = []
+    for name in CAVITY:
+        dr = case_of(runs / name)["discretisation"]["dr"]
+        points = cavity_at_ghia_points(runs / name)
+        rows.append((dr, np.abs(points["u"] - points["u_ghia"]).max(),
+                     np.abs(points["v"] - points["v_ghia"]).max(), points["u"].min(),
+                     points["time"], name))
+    rows.sort(reverse=True)
+    dr, u_error, v_error, u_min = (np.array([r[k] for r in rows]) for k in range(4))
+    write_csv(out / "cavity_convergence.csv", {"dr": dr, "u_linf": u_error, "v_linf": v_error,
+                                               "u_min_on_ghia_points": u_min})
+    for d, u, v, low, time, name in rows:
+        report.append((f"cavity Re 100 dr = {resolution_label(d, '1')} ({name}), t = {time:.2f}: "
+                       "L-inf error of u, v at the 17 Ghia points; min u there (Ghia -0.2109)",
+                       f"{u:.4f}, {v:.4f}; {low:.4f}"))
+    error_figure(out, "cavity_convergence", dr, {"u on x = 1/2": u_error, "v on y = 1/2": v_error},
+                 "Lid-driven cavity Re 100 (paper 2, Fig. 13 left)", "L-inf error against Ghia")
+
+
+def main():
+    parser = figure_parser(__doc__)
+    parser.add_argument("--refdata", default=str(shtc_fluids.REFDATA))
+    args = parser.parse_args()
+    shtc_fluids.REFDATA = Path(args.refdata)
+    return figure_script_main(
+        args, RUNS,
+        [({**PLATE, **PLATE_LINEAR}, plate_convergence), (COUETTE, couette_convergence),
+         (CAVITY, cavity_convergence)],
+        "shtc_convergence.md")
+
+
+if __name__ == "__main__":
+    sys.exit(main())
