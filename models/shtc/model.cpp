@@ -4,6 +4,7 @@
 #include "core/verlet.hpp"
 #include "models/shtc/elastic_energy.hpp"
 #include "models/shtc/forces.hpp"
+#include "models/shtc/mirrored_walls.hpp"
 #include "models/shtc/relaxation.hpp"
 #include "models/shtc/tensile_penalty.hpp"
 #include "models/shtc/velocity_gradient.hpp"
@@ -161,7 +162,7 @@ void Model<D>::drift(double dt) {
 }
 
 template <int D>
-void Model<D>::update_distortion(double dt) {
+void Model<D>::update_carrier_velocities() {
   update_geometry();
   const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
   const std::size_t n = carrier_count();
@@ -170,25 +171,62 @@ void Model<D>::update_distortion(double dt) {
   for (int k = 0; k < D; ++k) {
     slot_velocity_[k].resize(n);
   }
-  wall_velocity_.resize(n - material);
-  for (std::size_t i = 0; i < wall_velocity_.size(); ++i) {
-    wall_velocity_[i] = wall_velocity_now(i);
-  }
+  slot_is_wall_.resize(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < n; ++s) {
     const std::uint32_t a = carrier_of_slot[s];
+    slot_is_wall_[s] = a >= material;
+    const Vec<D> wall = a < material ? Vec<D>{} : wall_velocity_now(a - material);
     for (int k = 0; k < D; ++k) {
-      // Eq. (10) with the velocity a wall pretends.
-      slot_velocity_[k][s] = a < material ? fixedpoint::to_real(state_.velocity.at(k, a), v_scale)
-                                          : wall_velocity_[a - material][k];
+      slot_velocity_[k][s] =
+          a < material ? fixedpoint::to_real(state_.velocity.at(k, a), v_scale) : wall[k];
     }
   }
-  const bool driven = walls_move();
-  if (driven) {
-    shear_accelerations(shear_before_);
+  if (parameters_.mirrored_walls) {
+    slot_mirrored_velocity_ = slot_velocity_;
+    mirror_wall_velocities<D>(kernel_, view_of<D>(slot_position_), slot_mass_, slot_is_wall_,
+                              carrier_pairs_, slot_mirrored_velocity_, wall_fluid_sum_,
+                              wall_weight_sum_);
   }
+  const CoordinateArrays<D>& seen_by_fluid =
+      parameters_.mirrored_walls ? slot_mirrored_velocity_ : slot_velocity_;
+  wall_velocity_.resize(n - material);
+  wall_velocity_seen_.resize(n - material);
+  for (std::size_t s = 0; s < n; ++s) {
+    const std::uint32_t a = carrier_of_slot[s];
+    if (a >= material) {
+      for (int k = 0; k < D; ++k) {
+        wall_velocity_[a - material][k] = slot_velocity_[k][s];
+        wall_velocity_seen_[a - material][k] = seen_by_fluid[k][s];
+      }
+    }
+  }
+}
+
+template <int D>
+void Model<D>::update_distortion(double dt) {
+  update_carrier_velocities();
+  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  const std::size_t n = carrier_count();
+  const bool driven = walls_work();
+  if (driven) {
+    wall_forces(wall_force_before_);
+  }
+  // Eq. (10) with the velocities the walls pretend: their own (the paper's way) for every carrier,
+  // or, with mirrored walls, the mirrored ones in the material's L (mirrored_walls.hpp).
   velocity_gradients<D>(kernel_, view_of<D>(slot_position_), view_of<D>(slot_velocity_), slot_mass_,
                         carrier_pairs_, sums_.h_inverse, velocity_sum_, velocity_gradient_);
+  if (parameters_.mirrored_walls) {
+    velocity_gradients<D>(kernel_, view_of<D>(slot_position_), view_of<D>(slot_mirrored_velocity_),
+                          slot_mass_, carrier_pairs_, sums_.h_inverse, velocity_sum_,
+                          mirrored_gradient_);
+#pragma omp parallel for schedule(static)
+    for (std::size_t s = 0; s < n; ++s) {
+      if (!slot_is_wall_[s]) {
+        velocity_gradient_[s] = mirrored_gradient_[s];
+      }
+    }
+  }
   FaultRecorder faults;
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < n; ++s) {
@@ -206,8 +244,8 @@ void Model<D>::update_distortion(double dt) {
   faults.throw_if_any();
   force_valid_ = false;
   if (driven) {
-    shear_accelerations(shear_after_);
-    if (!add_wall_work(shear_before_, shear_after_, dt)) {
+    wall_forces(wall_force_after_);
+    if (!add_wall_work(dt)) {
       throw SimulationFault({"boundary", 0, "wall_work", "does not fit its fixed-point scale"}, 0);
     }
   }
@@ -278,7 +316,9 @@ void Model<D>::update_constants() {
     lambda_constant_[a] =
         fixedpoint::to_real(set.lambda_constant.at(0, i), set.lambda_constant.info().scale);
   }
-  walls_move_ = any_wall_moves(state_);
+  // Mirrored walls pretend velocities even at rest, and do work.
+  walls_work_ = any_wall_moves(state_) ||
+                (parameters_.mirrored_walls && state_.boundary_position.count() > 0);
   constants_valid_ = true;
 }
 
@@ -434,7 +474,7 @@ EnergyBudget Model<D>::energy() {
   if (parameters_.relaxation_time) {
     budget.terms.push_back({"dissipated", total(energies.dissipated)});
   }
-  if (walls_move()) {
+  if (walls_work()) {
     // What the walls have put in, counted negative: the total stays constant.
     double work = 0.0;
     for (std::size_t i = 0; i < state_.boundary_position.count(); ++i) {
@@ -480,12 +520,12 @@ void Model<D>::derived_views(const ViewSink& sink) {
     sink(ParticleView{range.set, "pressure", "Pa", 1, std::move(pressure_values)});
     sink(ParticleView{range.set, "lambda", "kg/m^3", 1, slice(values.lambda)});
     sink(ParticleView{range.set, "distortion", "1", D * D, std::move(distortion)});
-    if (range.first != 0 && walls_move()) {
+    if (range.first != 0 && walls_work()) {
+      update_carrier_velocities();
       std::vector<double> wall(count * D);
       for (std::size_t i = 0; i < count; ++i) {
-        const Vec<D> v = wall_velocity_now(i);
         for (int k = 0; k < D; ++k) {
-          wall[static_cast<std::size_t>(k) * count + i] = v[k];
+          wall[static_cast<std::size_t>(k) * count + i] = wall_velocity_seen_[i][k];
         }
       }
       sink(ParticleView{range.set, "velocity", "m/s", D, std::move(wall)});
@@ -510,25 +550,43 @@ void Model<D>::derived_views(const ViewSink& sink) {
 }
 
 template <int D>
-void Model<D>::shear_accelerations(CoordinateArrays<D>& acceleration) {
+void Model<D>::shear_accelerations(CoordinateArrays<D>& acceleration, StressOf carriers) {
   update_geometry();
   const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
   const std::size_t n = carrier_count();
+  const std::size_t material = material_count();
   slot_shear_stress_.resize(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < n; ++s) {
-    const Matrix<D> a =
-        to_matrix<D>(distortion_of(carrier_of_slot[s]), parameters_.distortion_scales);
-    slot_shear_stress_[s] = shear_stress<D>(parameters_.material, a, sums_.h_inverse[s]);
+    const std::uint32_t a = carrier_of_slot[s];
+    const bool counted =
+        carriers == StressOf::all || (carriers == StressOf::material) == (a < material);
+    if (!counted) {
+      slot_shear_stress_[s].setZero();
+      continue;
+    }
+    const Matrix<D> distortion = to_matrix<D>(distortion_of(a), parameters_.distortion_scales);
+    slot_shear_stress_[s] = shear_stress<D>(parameters_.material, distortion, sums_.h_inverse[s]);
   }
   compute_acceleration<D>(kernel_, 0.0, view_of<D>(slot_position_), slot_mass_, slot_shear_stress_,
                           sums_.lambda, carrier_pairs_, acceleration);
 }
 
 template <int D>
+void Model<D>::wall_forces(WallForces& forces) {
+  if (parameters_.mirrored_walls) {
+    shear_accelerations(forces.from_material, StressOf::material);
+    shear_accelerations(forces.from_walls, StressOf::walls);
+  } else {
+    shear_accelerations(forces.from_walls, StressOf::all);
+  }
+}
+
+template <int D>
 double Model<D>::wall_power() {
-  CoordinateArrays<D> acceleration;
-  shear_accelerations(acceleration);
+  update_carrier_velocities();
+  WallForces forces;
+  wall_forces(forces);
   const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
   const std::size_t material = material_count();
   std::vector<double> power(carrier_count() - material, 0.0);
@@ -537,9 +595,16 @@ double Model<D>::wall_power() {
     if (a < material) {
       continue;
     }
-    const Vec<D> v = wall_velocity_now(a - material);
+    // The material's stress pairs with the velocity the material sees the wall move with, the
+    // wall's own with the wall's velocity (model.hpp); without mirroring both are v_w and
+    // from_walls holds the whole force.
     for (int k = 0; k < D; ++k) {
-      power[a - material] -= slot_mass_[s] * acceleration[k][s] * v[k];
+      power[a - material] -=
+          slot_mass_[s] * forces.from_walls[k][s] * wall_velocity_[a - material][k];
+      if (parameters_.mirrored_walls) {
+        power[a - material] -=
+            slot_mass_[s] * forces.from_material[k][s] * wall_velocity_seen_[a - material][k];
+      }
     }
   }
   double total = 0.0; // serial, in canonical order: the same for any thread count
@@ -550,8 +615,7 @@ double Model<D>::wall_power() {
 }
 
 template <int D>
-bool Model<D>::add_wall_work(const CoordinateArrays<D>& before, const CoordinateArrays<D>& after,
-                             double dt) {
+bool Model<D>::add_wall_work(double dt) {
   const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
   const std::size_t material = material_count();
   bool fits = true;
@@ -562,9 +626,15 @@ bool Model<D>::add_wall_work(const CoordinateArrays<D>& before, const Coordinate
     }
     // Odd in (v, dt-direction) and symmetric in before/after, so a reversed step removes
     // exactly what this one added.
+    const WallForces& before = wall_force_before_;
+    const WallForces& after = wall_force_after_;
     double work = 0.0;
     for (int k = 0; k < D; ++k) {
-      work -= (before[k][s] + after[k][s]) * wall_velocity_[a - material][k];
+      work -= (before.from_walls[k][s] + after.from_walls[k][s]) * wall_velocity_[a - material][k];
+      if (parameters_.mirrored_walls) {
+        work -= (before.from_material[k][s] + after.from_material[k][s]) *
+                wall_velocity_seen_[a - material][k];
+      }
     }
     fits = fits && FixedArithmetic::try_increment(state_.wall_work.at(0, a - material),
                                                   0.5 * dt * work, state_.wall_work.info().scale);
@@ -605,7 +675,7 @@ std::vector<EnergyTerm> Model<D>::diagnostics() {
     terms.push_back({"angular_momentum_y", angular[1]});
     terms.push_back({"angular_momentum_z", angular[2]});
   }
-  if (walls_move()) {
+  if (walls_work()) {
     terms.push_back({"wall_power", wall_power()});
   }
   return terms;

@@ -107,19 +107,33 @@ private:
   void store_distortion(std::size_t a, const ExactDistortion<D>& distortion);
   // The velocity boundary particle i pretends now (state.hpp).
   Vec<D> wall_velocity_now(std::size_t i) const;
-  // Whether any wall moves (wall_velocity is a constant of the state: set with the constants).
-  bool walls_move() const { return walls_move_; }
+  // Whether the walls can do work: some wall moves, or walls mirror the fluid (wall_velocity is
+  // a constant of the state: set with the constants).
+  bool walls_work() const { return walls_work_; }
+  // The velocities of eq. (10) by slot: slot_velocity_ (the material's, and v_w for the walls)
+  // and, with mirrored walls, slot_mirrored_velocity_ (the walls' mirrored); wall_velocity_ and
+  // wall_velocity_seen_ (boundary particles in canonical order).
+  void update_carrier_velocities();
   // P = -sum_b v_b . F_b over the boundary particles, F_b the force of the distortion's stress
   // on b: with L linear in every velocity, the elastic energy changes by -sum_c v_c . F_c over
-  // all carriers, so this is the rate at which the walls' pretended motion adds energy.
+  // all carriers, so this is the rate at which the velocities the walls pretend add energy. With
+  // mirrored walls the material's L sees a wall move with its mirrored velocity and the wall's
+  // own L with v_w: the part of F_b from the material's stress pairs with the first, the part
+  // from the walls' stress with the second.
   double wall_power();
-  // F_b of the current geometry and distortions, per slot (the shear stress's accelerations).
-  void shear_accelerations(CoordinateArrays<D>& acceleration);
+  // The shear stress's accelerations per slot, of the current geometry and distortions, from
+  // the stress of all carriers, of the material only or of the walls only.
+  enum class StressOf { all, material, walls };
+  void shear_accelerations(CoordinateArrays<D>& acceleration, StressOf carriers);
+  struct WallForces {
+    CoordinateArrays<D> from_walls;    // without mirroring: from all carriers
+    CoordinateArrays<D> from_material; // mirrored walls only
+  };
+  void wall_forces(WallForces& forces);
   // -dt/2 v_b . (a_b before + a_b after) per mass, into wall_work: the trapezoid pairing of the
-  // update, which the kicks balance to O(dt^2) in the reversible part.
-  // Uses the wall velocities of the sub-step, wall_velocity_.
-  bool add_wall_work(const CoordinateArrays<D>& before, const CoordinateArrays<D>& after,
-                     double dt);
+  // update, which the kicks balance to O(dt^2) in the reversible part. Uses the wall velocities
+  // and forces of the sub-step (wall_velocity_, wall_velocity_seen_, wall_force_before_/after_).
+  bool add_wall_work(double dt);
   // The relaxation of eqs. (51)-(53) over dt, adding the energy per mass it removes.
   bool relax(ExactDistortion<D>& distortion, std::int64_t& dissipated, double dt) const;
   void update_constants();
@@ -136,7 +150,7 @@ private:
 
   bool constants_valid_ = false;
   std::vector<double> mass_, density_constant_, lambda_constant_; // carriers
-  bool walls_move_ = false;
+  bool walls_work_ = false;
   // Derived from the positions.
   bool geometry_valid_ = false;
   CellList<D> carrier_cells_; // its sorted_points() maps a slot to its carrier
@@ -153,9 +167,16 @@ private:
   // Scratch of the distortion sub-step.
   CoordinateArrays<D> slot_velocity_;
   std::vector<GradientMatrix<D>> velocity_sum_, velocity_gradient_;
-  std::vector<Vec<D>> wall_velocity_; // boundary, canonical order
+  std::vector<std::uint8_t> slot_is_wall_;
+  // Boundary particles, canonical order: the velocity a wall pretends, v_w, and the one the
+  // material sees it move with (mirrored walls: 2 v_w - the fluid's; otherwise v_w).
+  std::vector<Vec<D>> wall_velocity_, wall_velocity_seen_;
+  CoordinateArrays<D> slot_mirrored_velocity_;
+  std::vector<GradientMatrix<D>> mirrored_gradient_;
+  std::vector<Vec<D>> wall_fluid_sum_;
+  std::vector<double> wall_weight_sum_;
   std::vector<GradientMatrix<D>> slot_shear_stress_;
-  CoordinateArrays<D> shear_before_, shear_after_;
+  WallForces wall_force_before_, wall_force_after_;
 };
 
 extern template class Model<2>;

@@ -177,6 +177,13 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
     case_file.fail("walls.ramp_time",
                    "must be >= 0 and finite (0: walls move at full speed at once)");
   }
+  const std::string no_slip = case_file.string_or("walls.no_slip", "pretended");
+  if (no_slip != "pretended" && no_slip != "mirrored") {
+    case_file.fail("walls.no_slip", "expected \"pretended\" (the walls' own velocity in L, paper "
+                                    "2) or \"mirrored\" (2 v_wall - the fluid's velocity), got \"" +
+                                        no_slip + "\"");
+  }
+  p.mirrored_walls = no_slip == "mirrored";
   if (case_file.has("probe.point")) {
     const std::vector<double> point = case_file.numbers("probe.point", D);
     Vec<D> probe{};

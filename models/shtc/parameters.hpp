@@ -59,6 +59,11 @@ struct Parameters {
   // [walls]: moving walls reach their velocity over ramp_time, as
   // sin^2(pi t / (2 ramp_time)) (0: at once)
   double ramp_time = 0.0;
+  // walls.no_slip = "mirrored" (an option beyond paper 2): boundary particles pretend
+  // 2 v_wall - (Shepard average of the fluid's velocity around them) instead of v_wall, so that
+  // the velocity continues across the wall and vanishes relative to it at the wall itself
+  // (mirrored_walls.hpp). "pretended" (default): v_wall, the paper's way.
+  bool mirrored_walls = false;
   // [probe]: the material particle nearest to this point at t = 0 is reported in diagnostics.csv
   std::optional<Vec<D>> probe;
   Box<D> domain;

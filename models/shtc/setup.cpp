@@ -186,6 +186,9 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   if (moving_walls) {
     info.setup_report.emplace_back("walls.ramp_time", scientific(parameters.ramp_time));
   }
+  if (parameters.mirrored_walls) {
+    info.setup_report.emplace_back("walls.no_slip", "mirrored");
+  }
   if (parameters.relaxation_time) {
     info.setup_report.emplace_back("relaxation_time", scientific(*parameters.relaxation_time));
     info.setup_report.emplace_back("dt_over_relaxation_time",
