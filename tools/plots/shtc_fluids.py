@@ -16,8 +16,9 @@ Usage: /usr/bin/python3 tools/plots/shtc_fluids.py [--runs DIR] [--out DIR] [--m
 Runs (models/shtc/README.md explains the relaxation splittings): taylor-couette-coarse (dr =
 1/20) and taylor-couette (dr = 1/30), matched splitting; taylor-couette-step-ends (dr = 1/20,
 relaxation at the step ends); taylor-couette-paper (dr = 1/20, the paper's splitting and dt of
-eq. 58); cavity-re100, cavity-re400, cavity-re1000 (dr = 1/50, matched splitting);
-cavity-re100-step-ends (dr = 1/50, relaxation at the step ends, dt / tau = 0.3).
+eq. 58); taylor-couette-mirrored (dr = 1/20, mirrored walls); cavity-re100, cavity-re400,
+cavity-re1000 (dr = 1/50, matched splitting); cavity-re100-step-ends (dr = 1/50, relaxation at
+the step ends, dt / tau = 0.3); cavity-re100-mirrored (dr = 1/50, mirrored walls).
 
 Writes:
   couette_profile.csv/.png   Fig. 8: tangential velocity against r at t = 10 of the particles on
@@ -55,6 +56,8 @@ COUETTE = {
     "taylor-couette-paper": ["run", "taylor-couette-coarse", "--set",
                              "material.relaxation_splitting=\"paper\"", "--set",
                              "discretisation.time_step_factor=0.05"],
+    "taylor-couette-mirrored": ["run", "taylor-couette-coarse", "--set",
+                                "walls.no_slip=\"mirrored\""],
 }
 CAVITY = {
     "cavity-re100": ["run", "cavity-re100"],
@@ -64,8 +67,17 @@ CAVITY = {
     "cavity-re100-step-ends": ["run", "cavity-re100", "--set",
                                "material.relaxation_splitting=\"step_ends\"", "--set",
                                "discretisation.time_step_factor=0.068738"],
+    "cavity-re100-mirrored": ["run", "cavity-re100", "--set", "walls.no_slip=\"mirrored\""],
 }
 RUNS = {**COUETTE, **CAVITY}
+
+
+def run_variant(case):
+    """The relaxation splitting of a run and, if not the paper's, its walls."""
+    variant = case["material"].get("relaxation_splitting", "paper") + " splitting"
+    if case.get("walls", {}).get("no_slip", "pretended") != "pretended":
+        variant += ", " + case["walls"]["no_slip"] + " walls"
+    return variant
 
 
 def final_state(run):
@@ -114,6 +126,23 @@ def couette_on_segment(run, r1=1.0, r2=2.0, omega=1.0):
     return r, tangential, couette_exact(r, r1, r2, omega), time
 
 
+def couette_ring_means(run, r1=1.0, r2=2.0, omega=1.0):
+    """The flow is axisymmetric: the tangential velocity averaged over every material particle in
+    rings of width dr (centres, means, exact profile there), which separates the systematic error
+    from the particles' scatter."""
+    dr = case_of(run)["discretisation"]["dr"]
+    position, velocity, count, _ = final_state(run)
+    x, v = position[:count], velocity[:count]
+    r = np.hypot(x[:, 0], x[:, 1])
+    tangential = (x[:, 0] * v[:, 1] - x[:, 1] * v[:, 0]) / r
+    edges = np.arange(r1, r2 + 0.5 * dr, dr)
+    ring = np.digitize(r, edges) - 1
+    inside = (ring >= 0) & (ring < len(edges) - 1)
+    centres = 0.5 * (edges[1:] + edges[:-1])
+    means = np.array([tangential[inside & (ring == k)].mean() for k in range(len(centres))])
+    return centres, means, couette_exact(centres, r1, r2, omega)
+
+
 def couette_figures(runs, out, report):
     r1, r2, omega = 1.0, 2.0, 1.0
     fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2))
@@ -132,8 +161,7 @@ def couette_figures(runs, out, report):
         radius_all = np.hypot(x[:, 0], x[:, 1])
         tangential_all = (x[:, 0] * v[:, 1] - x[:, 1] * v[:, 0]) / radius_all
         error_all = tangential_all - couette_exact(radius_all, r1, r2, omega)
-        splitting = case["material"].get("relaxation_splitting", "paper")
-        label = f"dr = 1/{round(1 / dr)}, {splitting} splitting"
+        label = f"dr = 1/{round(1 / dr)}, {run_variant(case)}"
         left.plot(r, tangential, "o", ms=3, label=label)
         right.plot(r, tangential - omega * r, "o-", ms=3, lw=0.8, label=label)
         columns[f"{name}_r"] = r
@@ -143,6 +171,10 @@ def couette_figures(runs, out, report):
                        f"{np.mean(np.abs(error)):.4f}"))
         report.append((f"Taylor-Couette {name}: max |v - exact| over all {count} particles "
                        "(the flow is axisymmetric)", f"{np.max(np.abs(error_all)):.4f}"))
+        centres, means, exact = couette_ring_means(run)
+        report.append((f"Taylor-Couette {name}: max |ring mean of v - exact| over rings of width "
+                       "dr (the systematic error); at the innermost ring",
+                       f"{np.max(np.abs(means - exact)):.4f}; {means[0] - exact[0]:+.4f}"))
     longest = max(len(c) for c in columns.values())
     write_csv(out / "couette_profile.csv",
               {k: np.pad(c, (0, longest - len(c)), constant_values=np.nan)
@@ -263,8 +295,7 @@ def cavity_figures(runs, out, report):
         u, v, time = points["u"], points["v"], points["time"]
         u_on_vertical, v_on_horizontal = points["u_on_vertical"], points["v_on_horizontal"]
         line = np.linspace(0.0, 1.0, 101)
-        splitting = case["material"].get("relaxation_splitting", "paper")
-        label = f"Re {re}, dr = 1/{round(1 / dr)}, {splitting}"
+        label = f"Re {re}, dr = 1/{round(1 / dr)}, {run_variant(case)}"
         drawn = axes[0].plot(u_on_vertical(line), line, "-", lw=1.2, label=label)[0]
         axes[0].plot(u_ref, y_ref, "s", ms=4, mfc="none", color=drawn.get_color())
         axes[1].plot(line, v_on_horizontal(line), "-", lw=1.2, color=drawn.get_color(),
