@@ -120,8 +120,10 @@ def model_timoshenko(case):
     young = 9.0 * bulk * mu / (3.0 * bulk + mu)
     poisson = (3.0 * bulk - 2.0 * mu) / (2.0 * (3.0 * bulk + mu))
     plane_strain = young / (1.0 - poisson**2)
+    # The plate of eqs. (54)-(55): L = 2 |x0|, W the lattice block's height (its length is the
+    # lattice's, half a spacing longer than L; models/shtc/cases/beryllium-plate.toml).
     block = case["particles"][0]
-    length, thickness = block["max"][0] - block["min"][0], block["max"][1] - block["min"][1]
+    length, thickness = 2.0 * abs(case["initial"]["x0"]), block["max"][1] - block["min"][1]
     return timoshenko_free_free(length, thickness, rho0, plane_strain, mu)
 
 
