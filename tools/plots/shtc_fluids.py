@@ -7,7 +7,7 @@ Usage: /usr/bin/python3 tools/plots/shtc_fluids.py [--runs DIR] [--out DIR] [--m
   --runs DIR   where the runs live, one subdirectory per run (default: out/shtc)
   --out DIR    where the CSV files and figures go (default: docs/figures/shtc)
   --make-runs  first make every missing run (present = its summary.json exists), printing each
-               revsph command; about 90 min on 2 cores in all
+               revsph command; about 2 h 30 min on 2 cores in all
   --revsph     the revsph binary (default: build/bin/revsph, else build-*/bin/revsph)
   --threads N  passed to revsph (default: revsph's own, all cores)
   --refdata D  where ghia1982_u_vertical_centerline.csv and ghia1982_v_horizontal_centerline.csv
@@ -18,7 +18,8 @@ Runs (models/shtc/README.md explains the relaxation splittings): taylor-couette-
 relaxation at the step ends); taylor-couette-paper (dr = 1/20, the paper's splitting and dt of
 eq. 58); taylor-couette-mirrored (dr = 1/20, mirrored walls); cavity-re100, cavity-re400,
 cavity-re1000 (dr = 1/50, matched splitting); cavity-re100-step-ends (dr = 1/50, relaxation at
-the step ends, dt / tau = 0.3); cavity-re100-mirrored (dr = 1/50, mirrored walls).
+the step ends, dt / tau = 0.3); cavity-re100-mirrored and cavity-re400-mirrored (dr = 1/50,
+mirrored walls).
 
 Writes:
   couette_profile.csv/.png   Fig. 8: tangential velocity against r at t = 10 of the particles on
@@ -68,6 +69,7 @@ CAVITY = {
                                "material.relaxation_splitting=\"step_ends\"", "--set",
                                "discretisation.time_step_factor=0.068738"],
     "cavity-re100-mirrored": ["run", "cavity-re100", "--set", "walls.no_slip=\"mirrored\""],
+    "cavity-re400-mirrored": ["run", "cavity-re400", "--set", "walls.no_slip=\"mirrored\""],
 }
 RUNS = {**COUETTE, **CAVITY}
 
