@@ -108,7 +108,9 @@ RUNS = {**PLATE, **PLATE_LINEAR, **COUETTE, **CAVITY}
 
 
 def resolution_label(dr, unit):
-    return f"{unit}/{round(unit / dr)}"
+    """'W/40' for the plate (unit "W", the thickness), '1/50' for the unit-sized fluid domains."""
+    size = PLATE_THICKNESS if unit == "W" else 1.0
+    return f"{unit}/{round(size / dr)}"
 
 
 def plate_periods(runs, table):
