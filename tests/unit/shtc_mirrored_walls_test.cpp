@@ -43,8 +43,7 @@ CoordinateArrays<D> mirrored(const Cloud<D>& cloud, const std::vector<std::uint8
 
 // Random fluid velocities; the walls' own velocity is (0.3, ...) along the wall.
 template <int D>
-CoordinateArrays<D> random_velocity(const Cloud<D>& cloud, const std::vector<std::uint8_t>& is_wall,
-                                    std::uint64_t seed) {
+CoordinateArrays<D> random_velocity(const std::vector<std::uint8_t>& is_wall, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> speed(0.0, 1.0);
   CoordinateArrays<D> v;
@@ -99,7 +98,7 @@ TYPED_TEST(ShtcMirroredWalls, AreOddInTheVelocitiesBitForBit) {
   constexpr int D = TypeParam::value;
   const Cloud<D> cloud = jittered_lattice<D>(D == 2 ? 16 : 7, 12);
   const auto is_wall = lowest_rows_are_walls<D>(cloud);
-  const CoordinateArrays<D> v = random_velocity<D>(cloud, is_wall, 13);
+  const CoordinateArrays<D> v = random_velocity<D>(is_wall, 13);
   CoordinateArrays<D> reversed = v;
   for (int k = 0; k < D; ++k) {
     for (double& component : reversed[k]) {
@@ -113,7 +112,7 @@ TYPED_TEST(ShtcMirroredWalls, AreTheSameForAnyThreadCount) {
   constexpr int D = TypeParam::value;
   const Cloud<D> cloud = jittered_lattice<D>(D == 2 ? 30 : 10, 14);
   const auto is_wall = lowest_rows_are_walls<D>(cloud);
-  const CoordinateArrays<D> v = random_velocity<D>(cloud, is_wall, 15);
+  const CoordinateArrays<D> v = random_velocity<D>(is_wall, 15);
   revsph::set_thread_count(1);
   const CoordinateArrays<D> one = mirrored<D>(cloud, is_wall, v);
   revsph::set_thread_count(2);
