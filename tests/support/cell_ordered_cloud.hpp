@@ -68,4 +68,17 @@ Cloud<D> jittered_lattice(int per_axis, std::uint64_t seed) {
   return cloud;
 }
 
+// Two points at (1, 1) and (8, 8), unit masses, kernel support 1: out of each other's reach.
+inline Cloud<2> two_isolated_points() {
+  const double support = 1.0;
+  Cloud<2> cloud{CellList<2>(Box<2>{{0.0, 0.0}, {10.0, 10.0}}, support, 1000),
+                 CoordinateArrays<2>{std::vector<double>{1.0, 8.0}, std::vector<double>{1.0, 8.0}},
+                 {1.0, 1.0},
+                 {},
+                 support};
+  cloud.cells.build(view_of<2>(cloud.x));
+  cloud.pairs.build<2>(cloud.cells, view_of<2>(cloud.x), support);
+  return cloud;
+}
+
 } // namespace revsph::testing

@@ -120,23 +120,13 @@ TYPED_TEST(ShtcMirroredWalls, AreTheSameForAnyThreadCount) {
 }
 
 TEST(ShtcMirroredWallsSetup, AWallOutOfTheFluidsReachKeepsItsVelocity) {
-  revsph::Box<2> box{{0.0, 0.0}, {10.0, 10.0}};
-  revsph::CellList<2> cells(box, 1.0, 1000);
-  CoordinateArrays<2> x{std::vector<double>{1.0, 8.0}, std::vector<double>{1.0, 8.0}};
-  cells.build(revsph::view_of<2>(x));
-  revsph::HalfPairList pairs;
-  pairs.build<2>(cells, revsph::view_of<2>(x), 1.0);
-  const revsph::WendlandQuintic<2> kernel(1.0);
-  const std::vector<double> mass{1.0, 1.0};
+  const Cloud<2> cloud = revsph::testing::two_isolated_points();
   const std::vector<std::uint8_t> is_wall{1, 0};
-  CoordinateArrays<2> v{std::vector<double>{0.5, 2.0}, std::vector<double>{-0.5, 3.0}};
-  std::vector<revsph::Vec<2>> fluid_sum;
-  std::vector<double> weight_sum;
-  revsph::shtc::mirror_wall_velocities<2>(kernel, revsph::view_of<2>(x), mass, is_wall, pairs, v,
-                                          fluid_sum, weight_sum);
-  EXPECT_EQ(v[0][0], 0.5);
-  EXPECT_EQ(v[1][0], -0.5);
-  EXPECT_EQ(v[0][1], 2.0);
+  const CoordinateArrays<2> v{std::vector<double>{0.5, 2.0}, std::vector<double>{-0.5, 3.0}};
+  const CoordinateArrays<2> shown = mirrored<2>(cloud, is_wall, v);
+  EXPECT_EQ(shown[0][0], 0.5);
+  EXPECT_EQ(shown[1][0], -0.5);
+  EXPECT_EQ(shown[0][1], 2.0);
 }
 
 } // namespace

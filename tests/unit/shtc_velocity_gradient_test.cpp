@@ -124,15 +124,10 @@ TYPED_TEST(ShtcVelocityGradient, IsTheSameForAnyThreadCount) {
 }
 
 TEST(ShtcVelocityGradientSetup, IsZeroForAnIsolatedParticle) {
-  revsph::Box<2> box{{0.0, 0.0}, {10.0, 10.0}};
-  revsph::CellList<2> cells(box, 1.0, 1000);
-  CoordinateArrays<2> x{std::vector<double>{1.0, 8.0}, std::vector<double>{1.0, 8.0}};
-  cells.build(revsph::view_of<2>(x));
-  revsph::HalfPairList pairs;
-  pairs.build<2>(cells, revsph::view_of<2>(x), 1.0);
-  const revsph::WendlandQuintic<2> kernel(1.0);
-  const std::vector<double> mass{1.0, 1.0};
-  const auto gradient = revsph::testing::velocity_gradients_of<2>(kernel, x, x, mass, pairs);
+  const Cloud<2> cloud = revsph::testing::two_isolated_points();
+  const revsph::WendlandQuintic<2> kernel(cloud.support);
+  const auto gradient =
+      revsph::testing::velocity_gradients_of<2>(kernel, cloud.x, cloud.x, cloud.mass, cloud.pairs);
   EXPECT_EQ(gradient[0], GradientMatrix<2>::Zero());
   EXPECT_EQ(gradient[1], GradientMatrix<2>::Zero());
 }
