@@ -188,19 +188,6 @@ void Model<D>::update_carrier_velocities() {
                               carrier_pairs_, slot_mirrored_velocity_, wall_fluid_sum_,
                               wall_weight_sum_);
   }
-  const CoordinateArrays<D>& seen_by_fluid =
-      parameters_.mirrored_walls ? slot_mirrored_velocity_ : slot_velocity_;
-  wall_velocity_.resize(n - material);
-  wall_velocity_seen_.resize(n - material);
-  for (std::size_t s = 0; s < n; ++s) {
-    const std::uint32_t a = carrier_of_slot[s];
-    if (a >= material) {
-      for (int k = 0; k < D; ++k) {
-        wall_velocity_[a - material][k] = slot_velocity_[k][s];
-        wall_velocity_seen_[a - material][k] = seen_by_fluid[k][s];
-      }
-    }
-  }
 }
 
 template <int D>
@@ -522,10 +509,15 @@ void Model<D>::derived_views(const ViewSink& sink) {
     sink(ParticleView{range.set, "distortion", "1", D * D, std::move(distortion)});
     if (range.first != 0 && walls_work()) {
       update_carrier_velocities();
+      const CoordinateArrays<D>& seen = slot_velocity_seen();
+      const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
       std::vector<double> wall(count * D);
-      for (std::size_t i = 0; i < count; ++i) {
-        for (int k = 0; k < D; ++k) {
-          wall[static_cast<std::size_t>(k) * count + i] = wall_velocity_seen_[i][k];
+      for (std::size_t s = 0; s < carrier_of_slot.size(); ++s) {
+        const std::size_t a = carrier_of_slot[s];
+        if (a >= range.first) {
+          for (int k = 0; k < D; ++k) {
+            wall[static_cast<std::size_t>(k) * count + (a - range.first)] = seen[k][s];
+          }
         }
       }
       sink(ParticleView{range.set, "velocity", "m/s", D, std::move(wall)});
@@ -599,11 +591,10 @@ double Model<D>::wall_power() {
     // wall's own with the wall's velocity (model.hpp); without mirroring both are v_w and
     // from_walls holds the whole force.
     for (int k = 0; k < D; ++k) {
-      power[a - material] -=
-          slot_mass_[s] * forces.from_walls[k][s] * wall_velocity_[a - material][k];
+      power[a - material] -= slot_mass_[s] * forces.from_walls[k][s] * slot_velocity_[k][s];
       if (parameters_.mirrored_walls) {
         power[a - material] -=
-            slot_mass_[s] * forces.from_material[k][s] * wall_velocity_seen_[a - material][k];
+            slot_mass_[s] * forces.from_material[k][s] * slot_mirrored_velocity_[k][s];
       }
     }
   }
@@ -630,10 +621,10 @@ bool Model<D>::add_wall_work(double dt) {
     const WallForces& after = wall_force_after_;
     double work = 0.0;
     for (int k = 0; k < D; ++k) {
-      work -= (before.from_walls[k][s] + after.from_walls[k][s]) * wall_velocity_[a - material][k];
+      work -= (before.from_walls[k][s] + after.from_walls[k][s]) * slot_velocity_[k][s];
       if (parameters_.mirrored_walls) {
         work -= (before.from_material[k][s] + after.from_material[k][s]) *
-                wall_velocity_seen_[a - material][k];
+                slot_mirrored_velocity_[k][s];
       }
     }
     fits = fits && FixedArithmetic::try_increment(state_.wall_work.at(0, a - material),

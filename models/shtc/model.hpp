@@ -111,9 +111,12 @@ private:
   // a constant of the state: set with the constants).
   bool walls_work() const { return walls_work_; }
   // The velocities of eq. (10) by slot: slot_velocity_ (the material's, and v_w for the walls)
-  // and, with mirrored walls, slot_mirrored_velocity_ (the walls' mirrored); wall_velocity_ and
-  // wall_velocity_seen_ (boundary particles in canonical order).
+  // and, with mirrored walls, slot_mirrored_velocity_ (the walls' mirrored).
   void update_carrier_velocities();
+  // The velocities the material sees the carriers move with, by slot.
+  const CoordinateArrays<D>& slot_velocity_seen() const {
+    return parameters_.mirrored_walls ? slot_mirrored_velocity_ : slot_velocity_;
+  }
   // P = -sum_b v_b . F_b over the boundary particles, F_b the force of the distortion's stress
   // on b: with L linear in every velocity, the elastic energy changes by -sum_c v_c . F_c over
   // all carriers, so this is the rate at which the velocities the walls pretend add energy. With
@@ -132,7 +135,8 @@ private:
   void wall_forces(WallForces& forces);
   // -dt/2 v_b . (a_b before + a_b after) per mass, into wall_work: the trapezoid pairing of the
   // update, which the kicks balance to O(dt^2) in the reversible part. Uses the wall velocities
-  // and forces of the sub-step (wall_velocity_, wall_velocity_seen_, wall_force_before_/after_).
+  // and forces of the sub-step (slot_velocity_, slot_mirrored_velocity_, wall_force_before_/
+  // after_).
   bool add_wall_work(double dt);
   // The relaxation of eqs. (51)-(53) over dt, adding the energy per mass it removes.
   bool relax(ExactDistortion<D>& distortion, std::int64_t& dissipated, double dt) const;
@@ -168,10 +172,7 @@ private:
   CoordinateArrays<D> slot_velocity_;
   std::vector<GradientMatrix<D>> velocity_sum_, velocity_gradient_;
   std::vector<std::uint8_t> slot_is_wall_;
-  // Boundary particles, canonical order: the velocity a wall pretends, v_w, and the one the
-  // material sees it move with (mirrored walls: 2 v_w - the fluid's; otherwise v_w).
-  std::vector<Vec<D>> wall_velocity_, wall_velocity_seen_;
-  CoordinateArrays<D> slot_mirrored_velocity_;
+  CoordinateArrays<D> slot_mirrored_velocity_; // walls: 2 v_w - the fluid's (mirrored walls)
   std::vector<GradientMatrix<D>> mirrored_gradient_;
   std::vector<Vec<D>> wall_fluid_sum_;
   std::vector<double> wall_weight_sum_;
