@@ -1,6 +1,8 @@
 #pragma once
 // An energy budget: named terms (kinetic, gravitational, …) and their total.
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -20,6 +22,15 @@ struct EnergyBudget {
       sum += term.value;
     }
     return sum;
+  }
+
+  // The largest |term|: the scale of a budget whose total starts at zero (a driven flow).
+  double largest_term() const {
+    double largest = 0.0;
+    for (const EnergyTerm& term : terms) {
+      largest = std::max(largest, std::fabs(term.value));
+    }
+    return largest;
   }
 };
 

@@ -32,10 +32,7 @@ void EnergyLog::record(std::int64_t step, double time, const EnergyBudget& budge
       *csv_ << ",total,relative_error\n";
     }
   }
-  scale_ = std::max(scale_, std::fabs(*initial_total_));
-  for (const EnergyTerm& term : budget.terms) {
-    scale_ = std::max(scale_, std::fabs(term.value));
-  }
+  scale_ = std::max({scale_, std::fabs(*initial_total_), budget.largest_term()});
   last_relative_error_ = std::fabs(total - *initial_total_) / scale_;
   max_relative_error_ = std::max(max_relative_error_, last_relative_error_);
   last_ = budget;

@@ -6,18 +6,6 @@
 
 namespace revsph {
 
-namespace {
-
-double largest_term(const EnergyBudget& budget) {
-  double largest = 0.0;
-  for (const EnergyTerm& term : budget.terms) {
-    largest = std::max(largest, std::fabs(term.value));
-  }
-  return largest;
-}
-
-} // namespace
-
 EnergyBudgetCheck check_energy_budget(Simulation& simulation, std::int64_t steps,
                                       ProgressReporter* progress) {
   const auto start = std::chrono::steady_clock::now();
@@ -25,13 +13,13 @@ EnergyBudgetCheck check_energy_budget(Simulation& simulation, std::int64_t steps
   check.steps = steps;
   const EnergyBudget initial = simulation.energy();
   check.initial_total = check.final_total = initial.total();
-  check.largest_term = largest_term(initial);
+  check.largest_term = initial.largest_term();
   double largest_deviation = 0.0;
   for (std::int64_t step = 1; step <= steps; ++step) {
     simulation.advance(1);
     const EnergyBudget budget = simulation.energy();
     check.final_total = budget.total();
-    check.largest_term = std::max(check.largest_term, largest_term(budget));
+    check.largest_term = std::max(check.largest_term, budget.largest_term());
     largest_deviation =
         std::max(largest_deviation, std::fabs(check.final_total - check.initial_total));
     if (progress != nullptr) {
