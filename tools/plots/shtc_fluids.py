@@ -35,6 +35,7 @@ Writes:
 Exit status 0 only if every figure was made.
 """
 
+import functools
 import sys
 from pathlib import Path
 
@@ -82,9 +83,11 @@ def run_variant(case):
     return variant
 
 
+@functools.cache
 def final_state(run):
     """Positions and velocities of all carriers at the last snapshot (walls: their pretended
-    velocity), the material count and the time."""
+    velocity), the material count and the time. Read once per run: the profile, ring means and
+    convergence figures all use it (callers must not modify the arrays)."""
     with h5py.File(snapshots(run)[-1]) as f:
         material = f["particles/material"]
         position = [material["position"][...]]
