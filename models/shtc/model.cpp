@@ -221,7 +221,13 @@ void Model<D>::update_distortion(double dt) {
     ExactDistortion<D> distortion = distortion_of(a);
     // dt L is odd in v bit for bit: the update with -dt L undoes this one exactly.
     const Matrix<D> step = dt * velocity_gradient_[s];
-    if (!try_update_distortion<D>(distortion, step, parameters_.distortion_scales)) {
+    const DistortionScales& scales = parameters_.distortion_scales;
+    const bool updated =
+        parameters_.cayley_distortion_update
+            ? try_make_distortion<D>(cayley_update<D>(to_matrix<D>(distortion, scales), step),
+                                     scales, distortion)
+            : try_update_distortion<D>(distortion, step, scales);
+    if (!updated) {
       faults.record(index_in_set(a), set_name(a), "distortion",
                     "overflow or non-finite value in the distortion update");
       continue;

@@ -146,6 +146,15 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
     case_file.fail("discretisation.cell_size_factor", "must be between 1 and 100");
   }
 
+  const std::string update = case_file.string_or("discretisation.distortion_update", "exact");
+  if (update != "exact" && update != "cayley") {
+    case_file.fail("discretisation.distortion_update",
+                   "expected \"exact\" (exactly invertible, the default) or \"cayley\" (the "
+                   "paper's eq. 49, not bit-reversible), got \"" +
+                       update + "\"");
+  }
+  p.cayley_distortion_update = update == "cayley";
+
   const std::string splitting = case_file.string_or("material.relaxation_splitting", "paper");
   if (splitting != "paper" && splitting != "matched" && splitting != "step_ends") {
     case_file.fail("material.relaxation_splitting",

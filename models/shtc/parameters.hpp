@@ -52,6 +52,10 @@ struct Parameters {
   double smoothing_length = 0.0; // h of paper 2; the kernel's support radius is 2 h
   double dt = 0.0;
   double cell_size_factor = 1.0;
+  // discretisation.distortion_update = "cayley": the paper's update (eq. 49) in doubles, rounded
+  // to the stored form — for comparing with the paper; not exactly invertible, so the step is
+  // not bitwise reversible. "exact" (default): distortion.hpp's exactly invertible update.
+  bool cayley_distortion_update = false;
   // [initial]
   InitialField initial_field = InitialField::rest;
   BendingPlateField plate;

@@ -189,6 +189,12 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   if (parameters.mirrored_walls) {
     info.setup_report.emplace_back("walls.no_slip", "mirrored");
   }
+  if (parameters.cayley_distortion_update) {
+    info.setup_report.emplace_back("distortion_update", "cayley");
+    info.irreversible_terms.push_back(
+        "the paper's Cayley distortion update (eq. 49), rounded to fixed point: not exactly "
+        "invertible");
+  }
   if (parameters.relaxation_time) {
     info.setup_report.emplace_back("relaxation_time", scientific(*parameters.relaxation_time));
     info.setup_report.emplace_back("dt_over_relaxation_time",

@@ -8,7 +8,7 @@ Usage: /usr/bin/python3 tools/plots/shtc_convergence.py [--runs DIR] [--out DIR]
   --runs DIR   where the runs live, one subdirectory per run (default: out/shtc)
   --out DIR    where the CSV files and figures go (default: docs/figures/shtc)
   --make-runs  first make every missing run (present = its summary.json exists), printing each
-               revsph command; about 3 h on 2 cores in all (plate W/80, cavity dr = 1/70 and
+               revsph command; about 3.5 h on 2 cores in all (plate W/80, cavity dr = 1/70 and
                plate W/60 twice are 45, 40 and 2 x 25 min of it, each on one core)
   --revsph     the revsph binary (default: build/bin/revsph, else build-*/bin/revsph)
   --threads N  passed to revsph (default: revsph's own, all cores)
@@ -16,15 +16,21 @@ Usage: /usr/bin/python3 tools/plots/shtc_convergence.py [--runs DIR] [--out DIR]
 
 Runs: the beryllium plate at dr = W/20, W/30, W/40 (the case), W/60 and W/80, each on the
 isometric grid fitted to the plate (see plate_overrides), and at W/20 ... W/60 with a tenth of
-eq. (56)'s amplitude (linear regime); Taylor-Couette at dr = 1/10, 1/20, 1/30 (matched splitting,
+eq. (56)'s amplitude (linear regime), and at W/30 and that amplitude with the tensile penalty's
+cp = 5 c0 and 2.5 c0 (paper: 10 c0); at W/20 with time-step factors 0.1, 0.025 and 0.0125 (eq. 58:
+0.05); at W/40 with the paper's Cayley update of A (plate-cayley); Taylor-Couette at dr = 1/10, 1/20, 1/30 (matched splitting,
 time-step factor 0.1); the cavity at Re 100 with dr = 1/20, 1/30, 1/50 (the case), 1/70
 (matched splitting, factor 0.1). The runs the other two scripts share (beryllium-plate,
 taylor-couette-coarse, taylor-couette, cavity-re100) have their names.
 
 Writes:
   plate_convergence.csv/.png    fitted period of the centre point against dr, at both
-                                amplitudes, with eq. (56)'s 2 pi / omega (and its 5 % band) and
-                                the Timoshenko beam of the model's moduli
+                                amplitudes, with eq. (56)'s 2 pi / omega (and its 5 % band), the
+                                Timoshenko beam of the model's moduli and the period of the
+                                continuum model itself (finite elements, plate_fe.py); and, at
+                                W/30, against the penalty's cp (plate_penalty.csv)
+  plate_energy_error.csv/.png   the largest relative energy error over the run against the time
+                                step (W/20) and against dr, and with the Cayley update (W/40)
   couette_convergence.csv/.png  paper 2 Fig. 10 (left): max |v_theta - eq. 64| on y = 0 at t = 10
   cavity_convergence.csv/.png   paper 2 Fig. 13 (left): L-inf error of u and v against Ghia at
                                 Re 100, t = 10
@@ -32,10 +38,12 @@ Writes:
 Exit status 0 only if every figure was made.
 """
 
+import json
 import math
 import sys
 from pathlib import Path
 
+import plate_fe
 import shtc_fluids
 from revsph_runs import case_of, figure_parser, figure_script_main, write_csv
 from shtc_fluids import cavity_at_ghia_points, couette_on_segment, couette_ring_means
@@ -99,12 +107,27 @@ PLATE_LINEAR = {"plate-linear-w20": plate_overrides(20) + LINEAR_AMPLITUDE,
                 "plate-linear-w30": plate_overrides(30) + LINEAR_AMPLITUDE,
                 "plate-linear-w40": plate_overrides(40) + LINEAR_AMPLITUDE,
                 "plate-linear-w60": plate_overrides(60) + LINEAR_AMPLITUDE}
+# The tensile penalty's share of the stiffness: the linear-regime plate at W/30 with cp = 5 c0 and
+# 2.5 c0 besides the paper's 10 c0 (without it, cp = 0, the plate clumps: no period to fit).
+PLATE_PENALTY = {"plate-linear-w30-cp5": plate_overrides(30) + LINEAR_AMPLITUDE +
+                 ["--set", "penalty.speed=45232.95"],
+                 "plate-linear-w30-cp2.5": plate_overrides(30) + LINEAR_AMPLITUDE +
+                 ["--set", "penalty.speed=22616.475"]}
+# The energy error against the time step (W/20, time-step factors 0.1 ... 0.0125; plate-w20 is the
+# paper's 0.05) and with the paper's Cayley update of A at the case's dr and dt.
+PLATE_TIME_STEP = {f"plate-w20-dt{factor}": plate_overrides(20) +
+                   ["--set", f"discretisation.time_step_factor={factor}"]
+                   for factor in ("0.1", "0.025", "0.0125")}
+PLATE_CAYLEY = {"plate-cayley": ["run", "beryllium-plate", "--set",
+                                 "discretisation.distortion_update=cayley"]}
 COUETTE = {"taylor-couette-dr10": couette_overrides(10),
            "taylor-couette-coarse": ["run", "taylor-couette-coarse"],
            "taylor-couette": ["run", "taylor-couette"]}
 CAVITY = {"cavity-re100-dr20": cavity_overrides(20), "cavity-re100-dr30": cavity_overrides(30),
           "cavity-re100": ["run", "cavity-re100"], "cavity-re100-dr70": cavity_overrides(70)}
-RUNS = {**PLATE, **PLATE_LINEAR, **COUETTE, **CAVITY}
+PLATE_ALL = {**PLATE, **PLATE_LINEAR, **PLATE_PENALTY}
+PLATE_ENERGY = {**PLATE, **PLATE_TIME_STEP, **PLATE_CAYLEY}
+RUNS = {**PLATE_ALL, **PLATE_TIME_STEP, **PLATE_CAYLEY, **COUETTE, **CAVITY}
 
 
 def resolution_label(dr, unit):
@@ -122,24 +145,45 @@ def plate_periods(runs, table):
     return sorted(rows, reverse=True)
 
 
+def continuum_periods():
+    """The plate's period in the continuum model itself (plate_fe.py: finite elements, Q2 24 x 4,
+    converged to 0.01 % in mesh and time step there), at eq. (56)'s amplitude and a tenth of it."""
+    periods = {}
+    for fraction in (1.0, 0.1):
+        t, y, _, _ = plate_fe.solve(24, 4, fraction * plate_fe.AMPLITUDE)
+        periods[fraction] = plate_fe.period_of(t, y)[0]
+    return periods
+
+
 def plate_convergence(runs, out, report):
     case = case_of(runs / "beryllium-plate")
     linear = 2.0 * math.pi / case["initial"]["omega"]
     timoshenko = 2.0 * math.pi / model_timoshenko(case)
-    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    continuum = continuum_periods()
+    fig, (ax, penalty_ax) = plt.subplots(1, 2, figsize=(11, 4.5),
+                                         gridspec_kw={"width_ratios": [1.6, 1]})
     columns = {}
-    for table, what, key in ((PLATE, "eq. (56)'s amplitude", "paper_amplitude"),
-                             (PLATE_LINEAR, "a tenth of it", "tenth_amplitude")):
+    for (table, what, key), colour, fraction in zip(
+            ((PLATE, "eq. (56)'s amplitude", "paper_amplitude"),
+             (PLATE_LINEAR, "a tenth of it", "tenth_amplitude")), ("tab:blue", "tab:orange"),
+            (1.0, 0.1)):
         rows = plate_periods(runs, table)
         dr = np.array([r[0] for r in rows])
         period = np.array([r[1] for r in rows])
         columns.update({f"{key}_W_over_dr": PLATE_THICKNESS / dr, f"{key}_period": period,
-                        f"{key}_period_over_eq56": period / linear})
+                        f"{key}_period_over_eq56": period / linear,
+                        f"{key}_period_over_continuum": period / continuum[fraction]})
+        report.append((f"plate, {what}: period of the continuum model (finite elements, "
+                       "plate_fe.py), against eq. (56)",
+                       f"{continuum[fraction]:.5e}, {continuum[fraction] / linear - 1:+.2%}"))
         for d, p, name in rows:
             report.append((f"plate, {what}, dr = {resolution_label(d, 'W')} ({name}): fitted "
-                           "period (s), against eq. (56), against the Timoshenko beam",
-                           f"{p:.5e}, {p / linear - 1:+.2%}, {p / timoshenko - 1:+.2%}"))
-        ax.plot(PLATE_THICKNESS / dr, period * 1e6, "o-", label=f"revsph, {what}")
+                           "period (s), against eq. (56), the Timoshenko beam, the continuum "
+                           "model", f"{p:.5e}, {p / linear - 1:+.2%}, {p / timoshenko - 1:+.2%}, "
+                           f"{p / continuum[fraction] - 1:+.2%}"))
+        ax.plot(PLATE_THICKNESS / dr, period * 1e6, "o-", color=colour, label=f"revsph, {what}")
+        ax.axhline(continuum[fraction] * 1e6, color=colour, ls="--", lw=1,
+                   label=f"continuum model (finite elements), {what}")
     longest = max(len(c) for c in columns.values())
     write_csv(out / "plate_convergence.csv",
               {k: np.pad(c, (0, longest - len(c)), constant_values=np.nan)
@@ -151,9 +195,80 @@ def plate_convergence(runs, out, report):
     ax.set_xlabel("W / dr")
     ax.set_ylabel("fitted period of the centre point (µs)")
     ax.set_title("Beryllium plate: period against resolution and amplitude")
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=7)
+    # The tensile penalty stiffens the plate: period against cp at W/30, a tenth of A.
+    speeds, periods = [], []
+    for name in ("plate-linear-w30-cp2.5", "plate-linear-w30-cp5", "plate-linear-w30"):
+        _, _, fitted, _ = plate_period(runs / name)
+        speeds.append(case_of(runs / name)["penalty"]["speed"] / case["material"]["sound_speed"])
+        periods.append(2.0 * math.pi / fitted)
+        report.append((f"plate, a tenth of the amplitude, W/30, cp = {speeds[-1]:g} c0 ({name}): "
+                       "period, against eq. (56), against the continuum model",
+                       f"{periods[-1]:.5e}, {periods[-1] / linear - 1:+.2%}, "
+                       f"{periods[-1] / continuum[0.1] - 1:+.2%}"))
+    write_csv(out / "plate_penalty.csv", {"cp_over_c0": np.array(speeds),
+                                          "period": np.array(periods),
+                                          "period_over_continuum": np.array(periods) /
+                                          continuum[0.1]})
+    penalty_ax.plot(speeds, np.array(periods) * 1e6, "o-", color="tab:orange",
+                    label="revsph, W/30, a tenth of A")
+    penalty_ax.plot([0.0], [continuum[0.1] * 1e6], "s", color="tab:orange", mfc="none",
+                    label="continuum model (no penalty)")
+    penalty_ax.axhline(linear * 1e6, color="k", lw=1, label="2 pi / omega")
+    penalty_ax.set_xlabel("tensile penalty speed cp / c0 (paper: 10)")
+    penalty_ax.set_ylabel("period (µs)")
+    penalty_ax.set_title("The penalty (eq. 39) stiffens the plate")
+    penalty_ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(out / "plate_convergence.png", dpi=DPI)
+    plt.close(fig)
+
+
+def energy_error_of(run):
+    return json.loads((run / "summary.json").read_text())["energy"]["max_relative_error"]
+
+
+def plate_energy(runs, out, report):
+    """The plate's largest relative energy error over t = 3e-5 s: against dt at W/20, against dr
+    at eq. (58)'s dt, and with the paper's Cayley update of A at W/40."""
+    time_step = []
+    for name in ("plate-w20-dt0.1", "plate-w20", "plate-w20-dt0.025", "plate-w20-dt0.0125"):
+        time_step.append((case_of(runs / name)["discretisation"]["time_step_factor"],
+                          energy_error_of(runs / name), name))
+    resolution = []
+    for name in PLATE:
+        resolution.append((PLATE_THICKNESS / case_of(runs / name)["discretisation"]["dr"],
+                           energy_error_of(runs / name), name))
+    resolution.sort()
+    for factor, error, name in time_step:
+        report.append((f"plate W/20, dt = {factor} dr / sqrt(c0^2 + 4/3 cs^2) ({name}): "
+                       "max relative energy error", f"{error:.3e}"))
+    for n, error, name in resolution:
+        report.append((f"plate W/{n:.0f}, eq. (58)'s dt ({name}): max relative energy error",
+                       f"{error:.3e}"))
+    cayley = energy_error_of(runs / "plate-cayley")
+    report.append(("plate W/40, the paper's Cayley update of A (plate-cayley): max relative "
+                   "energy error; the exact update (beryllium-plate)",
+                   f"{cayley:.3e}; {energy_error_of(runs / 'beryllium-plate'):.3e}"))
+    factor, error = (np.array([r[k] for r in time_step]) for k in range(2))
+    write_csv(out / "plate_energy_error.csv", {"time_step_factor_w20": factor,
+                                               "max_relative_error_w20": error})
+    fig, (dt_ax, dr_ax) = plt.subplots(1, 2, figsize=(10, 4))
+    dt_ax.loglog(factor, error, "o-", label="revsph, W/20")
+    dt_ax.loglog(factor, error[1] * (factor / factor[1]) ** 2, "k:", label="second order")
+    dt_ax.set_xlabel("time-step factor (eq. 58: 0.05)")
+    dt_ax.set_ylabel("max |E(t) - E(0)| / E(0), t <= 3e-5 s")
+    dt_ax.set_title("Energy error against dt")
+    dt_ax.legend(fontsize=8)
+    n, error = (np.array([r[k] for r in resolution]) for k in range(2))
+    dr_ax.semilogy(n, error, "o-", label="revsph, exact update of A")
+    dr_ax.semilogy([40], [cayley], "s", mfc="none", label="the paper's Cayley update (eq. 49)")
+    dr_ax.axhline(5e-6, color="k", lw=1, label="paper: within 5e-6 at W/40")
+    dr_ax.set_xlabel("W / dr (dt of eq. 58)")
+    dr_ax.set_title("Energy error against resolution")
+    dr_ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(out / "plate_energy_error.png", dpi=DPI)
     plt.close(fig)
 
 
@@ -221,7 +336,8 @@ def main():
     shtc_fluids.REFDATA = Path(args.refdata)
     return figure_script_main(
         args, RUNS,
-        [({**PLATE, **PLATE_LINEAR}, plate_convergence), (COUETTE, couette_convergence),
+        [(PLATE_ALL, plate_convergence), (PLATE_ENERGY, plate_energy),
+         (COUETTE, couette_convergence),
          (CAVITY, cavity_convergence)],
         "shtc_convergence.md")
 

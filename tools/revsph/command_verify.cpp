@@ -72,12 +72,12 @@ void write_verify_summary(const fs::path& path, const Simulation& simulation,
   write_file_atomically(path, summary.dump(2) + "\n");
 }
 
-// A case with irreversible terms cannot return bit for bit: its energy budget is checked instead,
+// A case with irreversible terms (dissipation, an update without an exact inverse) cannot return bit for bit: its energy budget is checked instead,
 // over the same number of steps forward (verify/energy_budget.hpp).
-int verify_dissipative(Simulation& simulation, const VerifyCommandOptions& options,
-                       std::int64_t steps, double progress_interval) {
+int verify_irreversible(Simulation& simulation, const VerifyCommandOptions& options,
+                        std::int64_t steps, double progress_interval) {
   const SimulationInfo& info = simulation.info();
-  std::cout << "dissipative case:";
+  std::cout << "irreversible case (dissipative or not exactly invertible):";
   for (const std::string& term : info.irreversible_terms) {
     std::cout << "\n  irreversible term: " << term;
   }
@@ -87,7 +87,7 @@ int verify_dissipative(Simulation& simulation, const VerifyCommandOptions& optio
             << "negative, the work of driven boundaries)\n";
   if (!options.out_dir.empty()) {
     std::cout << "note: --out is for the reversal experiment; nothing is written for a "
-                 "dissipative case (use revsph run --out)\n";
+                 "case with irreversible terms (use revsph run --out)\n";
   }
   ProgressReporter progress(stdout, "forward ", simulation.steps_taken() + steps, info.dt,
                             progress_interval);
@@ -104,7 +104,7 @@ int verify_dissipative(Simulation& simulation, const VerifyCommandOptions& optio
               check.max_relative_error, options.energy_tolerance);
   std::printf("wall time: %.2f s\n", check.wall_seconds);
   const bool closes = check.max_relative_error <= options.energy_tolerance;
-  std::cout << "verdict: dissipative case, energy budget "
+  std::cout << "verdict: irreversible case, energy budget "
             << (closes ? "closes within the tolerance" : "does NOT close within the tolerance")
             << "\n";
   return closes ? success : not_reversible;
@@ -129,7 +129,7 @@ int verify_command(const VerifyCommandOptions& options) {
   print_setup_report(info);
 
   if (!info.irreversible_terms.empty()) {
-    return verify_dissipative(simulation, options, steps, loaded.settings.progress_interval);
+    return verify_irreversible(simulation, options, steps, loaded.settings.progress_interval);
   }
   if (options.check_substeps) {
     for (const SubstepCheck& check : check_substeps(simulation, info.dt)) {

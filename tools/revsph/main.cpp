@@ -96,7 +96,8 @@ int main(int argc, char** argv) {
   verify_app->add_flag("--force", verify.force, "overwrite the files of a previous run in --out");
   verify_app
       ->add_option("--energy-tolerance", verify.energy_tolerance,
-                   "a dissipative case (one with irreversible terms) is not reversed: it passes "
+                   "a case with irreversible terms (dissipation, an inexact update) is not "
+                   "reversed: it passes "
                    "if its energy budget, |E(t) - E(0)| over the largest energy term, stays below "
                    "this (default 1e-2)")
       ->check(CLI::PositiveNumber);
