@@ -16,7 +16,7 @@ Usage: /usr/bin/python3 tools/plots/shtc_convergence.py [--runs DIR] [--out DIR]
 
 Runs: the beryllium plate at dr = W/20, W/30, W/40 (the case), W/60 and W/80, each on the
 isometric grid fitted to the plate (see plate_overrides), and at W/20 ... W/60 with a tenth of
-eq. (56)'s amplitude (linear regime), and at W/30 and that amplitude with the tensile penalty's
+eq. (56)'s amplitude (linear regime), and at W/30 at both amplitudes with the tensile penalty's
 cp = 5 c0 and 2.5 c0 (paper: 10 c0); at W/20 with time-step factors 0.1, 0.025 and 0.0125 (eq. 58:
 0.05); at W/40 with the paper's Cayley update of A (plate-cayley); Taylor-Couette at dr = 1/10, 1/20, 1/30 (matched splitting,
 time-step factor 0.1); the cavity at Re 100 with dr = 1/20, 1/30, 1/50 (the case), 1/70
@@ -107,12 +107,14 @@ PLATE_LINEAR = {"plate-linear-w20": plate_overrides(20) + LINEAR_AMPLITUDE,
                 "plate-linear-w30": plate_overrides(30) + LINEAR_AMPLITUDE,
                 "plate-linear-w40": plate_overrides(40) + LINEAR_AMPLITUDE,
                 "plate-linear-w60": plate_overrides(60) + LINEAR_AMPLITUDE}
-# The tensile penalty's share of the stiffness: the linear-regime plate at W/30 with cp = 5 c0 and
-# 2.5 c0 besides the paper's 10 c0 (without it, cp = 0, the plate clumps: no period to fit).
-PLATE_PENALTY = {"plate-linear-w30-cp5": plate_overrides(30) + LINEAR_AMPLITUDE +
-                 ["--set", "penalty.speed=45232.95"],
-                 "plate-linear-w30-cp2.5": plate_overrides(30) + LINEAR_AMPLITUDE +
-                 ["--set", "penalty.speed=22616.475"]}
+# The tensile penalty's share of the stiffness: the plate at W/30, at both amplitudes, with
+# cp = 5 c0 and 2.5 c0 besides the paper's 10 c0 (without it, cp = 0, the plate clumps: no period
+# to fit).
+PENALTY_SPEEDS = {"cp5": "penalty.speed=45232.95", "cp2.5": "penalty.speed=22616.475"}
+PLATE_PENALTY = {**{f"plate-w30-{key}": plate_overrides(30) + ["--set", value]
+                    for key, value in PENALTY_SPEEDS.items()},
+                 **{f"plate-linear-w30-{key}": plate_overrides(30) + LINEAR_AMPLITUDE +
+                    ["--set", value] for key, value in PENALTY_SPEEDS.items()}}
 # The energy error against the time step (W/20, time-step factors 0.1 ... 0.0125; plate-w20 is the
 # paper's 0.05) and with the paper's Cayley update of A at the case's dr and dt.
 PLATE_TIME_STEP = {f"plate-w20-dt{factor}": plate_overrides(20) +
@@ -126,7 +128,7 @@ COUETTE = {"taylor-couette-dr10": couette_overrides(10),
 CAVITY = {"cavity-re100-dr20": cavity_overrides(20), "cavity-re100-dr30": cavity_overrides(30),
           "cavity-re100": ["run", "cavity-re100"], "cavity-re100-dr70": cavity_overrides(70)}
 PLATE_ALL = {**PLATE, **PLATE_LINEAR, **PLATE_PENALTY}
-PLATE_ENERGY = {**PLATE, **PLATE_TIME_STEP, **PLATE_CAYLEY}
+PLATE_ENERGY = {**PLATE, **PLATE_LINEAR, **PLATE_TIME_STEP, **PLATE_CAYLEY}
 RUNS = {**PLATE_ALL, **PLATE_TIME_STEP, **PLATE_CAYLEY, **COUETTE, **CAVITY}
 
 
@@ -196,27 +198,31 @@ def plate_convergence(runs, out, report):
     ax.set_ylabel("fitted period of the centre point (µs)")
     ax.set_title("Beryllium plate: period against resolution and amplitude")
     ax.legend(fontsize=7)
-    # The tensile penalty stiffens the plate: period against cp at W/30, a tenth of A.
-    speeds, periods = [], []
-    for name in ("plate-linear-w30-cp2.5", "plate-linear-w30-cp5", "plate-linear-w30"):
-        _, _, fitted, _ = plate_period(runs / name)
-        speeds.append(case_of(runs / name)["penalty"]["speed"] / case["material"]["sound_speed"])
-        periods.append(2.0 * math.pi / fitted)
-        report.append((f"plate, a tenth of the amplitude, W/30, cp = {speeds[-1]:g} c0 ({name}): "
-                       "period, against eq. (56), against the continuum model",
-                       f"{periods[-1]:.5e}, {periods[-1] / linear - 1:+.2%}, "
-                       f"{periods[-1] / continuum[0.1] - 1:+.2%}"))
-    write_csv(out / "plate_penalty.csv", {"cp_over_c0": np.array(speeds),
-                                          "period": np.array(periods),
-                                          "period_over_continuum": np.array(periods) /
-                                          continuum[0.1]})
-    penalty_ax.plot(speeds, np.array(periods) * 1e6, "o-", color="tab:orange",
-                    label="revsph, W/30, a tenth of A")
-    penalty_ax.plot([0.0], [continuum[0.1] * 1e6], "s", color="tab:orange", mfc="none",
-                    label="continuum model (no penalty)")
+    # The tensile penalty stiffens the plate: period against cp at W/30, both amplitudes.
+    penalty_columns = {}
+    for stem, what, key, colour, fraction in (
+            ("plate-w30", "eq. (56)'s amplitude", "paper_amplitude", "tab:blue", 1.0),
+            ("plate-linear-w30", "a tenth of it", "tenth_amplitude", "tab:orange", 0.1)):
+        speeds, periods = [], []
+        for name in (f"{stem}-cp2.5", f"{stem}-cp5", stem):
+            _, _, fitted, _ = plate_period(runs / name)
+            speeds.append(case_of(runs / name)["penalty"]["speed"] /
+                          case["material"]["sound_speed"])
+            periods.append(2.0 * math.pi / fitted)
+            report.append((f"plate, {what}, W/30, cp = {speeds[-1]:g} c0 ({name}): period, "
+                           "against eq. (56), against the continuum model",
+                           f"{periods[-1]:.5e}, {periods[-1] / linear - 1:+.2%}, "
+                           f"{periods[-1] / continuum[fraction] - 1:+.2%}"))
+        periods = np.array(periods)
+        penalty_columns.update({f"{key}_cp_over_c0": np.array(speeds), f"{key}_period": periods,
+                                f"{key}_period_over_continuum": periods / continuum[fraction]})
+        penalty_ax.plot(speeds, periods * 1e6, "o-", color=colour, label=f"revsph W/30, {what}")
+        penalty_ax.plot([0.0], [continuum[fraction] * 1e6], "s", color=colour, mfc="none",
+                        label=f"continuum model, {what}")
+    write_csv(out / "plate_penalty.csv", penalty_columns)
     penalty_ax.axhline(linear * 1e6, color="k", lw=1, label="2 pi / omega")
     penalty_ax.set_xlabel("tensile penalty speed cp / c0 (paper: 10)")
-    penalty_ax.set_ylabel("period (µs)")
+    penalty_ax.set_ylabel("fitted period of the centre point (µs)")
     penalty_ax.set_title("The penalty (eq. 39) stiffens the plate")
     penalty_ax.legend(fontsize=7)
     fig.tight_layout()
@@ -235,17 +241,18 @@ def plate_energy(runs, out, report):
     for name in ("plate-w20-dt0.1", "plate-w20", "plate-w20-dt0.025", "plate-w20-dt0.0125"):
         time_step.append((case_of(runs / name)["discretisation"]["time_step_factor"],
                           energy_error_of(runs / name), name))
-    resolution = []
-    for name in PLATE:
-        resolution.append((PLATE_THICKNESS / case_of(runs / name)["discretisation"]["dr"],
-                           energy_error_of(runs / name), name))
-    resolution.sort()
+    def against_dr(table):
+        return sorted((PLATE_THICKNESS / case_of(runs / name)["discretisation"]["dr"],
+                       energy_error_of(runs / name), name) for name in table)
+
+    resolution, linear_resolution = against_dr(PLATE), against_dr(PLATE_LINEAR)
     for factor, error, name in time_step:
         report.append((f"plate W/20, dt = {factor} dr / sqrt(c0^2 + 4/3 cs^2) ({name}): "
                        "max relative energy error", f"{error:.3e}"))
-    for n, error, name in resolution:
-        report.append((f"plate W/{n:.0f}, eq. (58)'s dt ({name}): max relative energy error",
-                       f"{error:.3e}"))
+    for rows, what in ((resolution, "eq. (56)'s amplitude"), (linear_resolution, "a tenth of it")):
+        for n, error, name in rows:
+            report.append((f"plate W/{n:.0f}, {what}, eq. (58)'s dt ({name}): max relative "
+                           "energy error", f"{error:.3e}"))
     cayley = energy_error_of(runs / "plate-cayley")
     report.append(("plate W/40, the paper's Cayley update of A (plate-cayley): max relative "
                    "energy error; the exact update (beryllium-plate)",
@@ -256,12 +263,16 @@ def plate_energy(runs, out, report):
     fig, (dt_ax, dr_ax) = plt.subplots(1, 2, figsize=(10, 4))
     dt_ax.loglog(factor, error, "o-", label="revsph, W/20")
     dt_ax.loglog(factor, error[1] * (factor / factor[1]) ** 2, "k:", label="second order")
+    dt_ax.set_xticks(factor, [f"{f:g}" for f in factor])
+    dt_ax.minorticks_off()
     dt_ax.set_xlabel("time-step factor (eq. 58: 0.05)")
     dt_ax.set_ylabel("max |E(t) - E(0)| / E(0), t <= 3e-5 s")
     dt_ax.set_title("Energy error against dt")
     dt_ax.legend(fontsize=8)
     n, error = (np.array([r[k] for r in resolution]) for k in range(2))
-    dr_ax.semilogy(n, error, "o-", label="revsph, exact update of A")
+    dr_ax.semilogy(n, error, "o-", label="revsph, eq. (56)'s amplitude")
+    dr_ax.semilogy(*(np.array([r[k] for r in linear_resolution]) for k in range(2)), "o-",
+                   label="revsph, a tenth of it")
     dr_ax.semilogy([40], [cayley], "s", mfc="none", label="the paper's Cayley update (eq. 49)")
     dr_ax.axhline(5e-6, color="k", lw=1, label="paper: within 5e-6 at W/40")
     dr_ax.set_xlabel("W / dr (dt of eq. 58)")
