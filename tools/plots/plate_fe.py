@@ -27,8 +27,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from revsph_runs import read_csv, write_csv  # noqa: E402
-from shtc_solids import fit_sinusoid  # noqa: E402
+from revsph_runs import fit_sinusoid, read_csv, write_csv  # noqa: E402
 
 import matplotlib  # noqa: E402
 

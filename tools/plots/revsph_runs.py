@@ -39,6 +39,18 @@ def missing_runs(runs, names):
     return [n for n in names if not (runs / n / "summary.json").is_file()]
 
 
+def fit_sinusoid(t, y, omegas):
+    """Least-squares y = c + a sin(w t) + b cos(w t), best w of `omegas`."""
+    best = None
+    for w in omegas:
+        basis = np.c_[np.ones_like(t), np.sin(w * t), np.cos(w * t)]
+        coefficients = np.linalg.lstsq(basis, y, rcond=None)[0]
+        residual = np.sum((basis @ coefficients - y) ** 2)
+        if best is None or residual < best[0]:
+            best = (residual, w, coefficients)
+    return best[1], best[2], np.sqrt(best[0] / len(t))
+
+
 def read_csv(path):
     with open(path, newline="") as f:
         rows = list(csv.DictReader(row for row in f if not row.startswith("#")))
