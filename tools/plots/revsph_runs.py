@@ -86,7 +86,10 @@ def case_of(run):
             node = node.setdefault(name, {})
             if index:
                 node = node[int(index.rstrip("]"))]
-        node[last] = tomllib.loads(f"v = {value}")["v"]
+        try:
+            node[last] = tomllib.loads(f"v = {value}")["v"]
+        except tomllib.TOMLDecodeError:
+            node[last] = value  # a bare word is a string, as for revsph's --set
     return case
 
 
