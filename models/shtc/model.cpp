@@ -200,20 +200,15 @@ void Model<D>::update_distortion(double dt) {
     wall_forces(wall_force_before_);
   }
   // Eq. (10) with the velocities the walls pretend: their own (the paper's way) for every carrier,
-  // or, with mirrored walls, the mirrored ones in the material's L (mirrored_walls.hpp).
-  velocity_gradients<D>(kernel_, view_of<D>(slot_position_), view_of<D>(slot_velocity_), slot_mass_,
-                        carrier_pairs_, sums_.h_inverse, velocity_sum_, velocity_gradient_);
-  if (parameters_.mirrored_walls) {
-    velocity_gradients<D>(kernel_, view_of<D>(slot_position_), view_of<D>(slot_mirrored_velocity_),
-                          slot_mass_, carrier_pairs_, sums_.h_inverse, velocity_sum_,
-                          mirrored_gradient_);
-#pragma omp parallel for schedule(static)
-    for (std::size_t s = 0; s < n; ++s) {
-      if (!slot_is_wall_[s]) {
-        velocity_gradient_[s] = mirrored_gradient_[s];
-      }
-    }
-  }
+  // or, with mirrored walls, the mirrored ones in the material's L while the walls' own L keeps
+  // v_w (mirrored_walls.hpp).
+  const CoordinateView<D> velocity = view_of<D>(slot_velocity_);
+  const SeenVelocities<D> seen =
+      parameters_.mirrored_walls
+          ? SeenVelocities<D>{view_of<D>(slot_mirrored_velocity_), velocity, slot_is_wall_}
+          : SeenVelocities<D>{velocity, velocity, {}};
+  velocity_gradients<D>(kernel_, view_of<D>(slot_position_), seen, slot_mass_, carrier_pairs_,
+                        sums_.h_inverse, velocity_sum_, velocity_gradient_);
   FaultRecorder faults;
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < n; ++s) {

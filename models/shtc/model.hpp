@@ -173,7 +173,6 @@ private:
   std::vector<GradientMatrix<D>> velocity_sum_, velocity_gradient_;
   std::vector<std::uint8_t> slot_is_wall_;
   CoordinateArrays<D> slot_mirrored_velocity_; // walls: 2 v_w - the fluid's (mirrored walls)
-  std::vector<GradientMatrix<D>> mirrored_gradient_;
   std::vector<Vec<D>> wall_fluid_sum_;
   std::vector<double> wall_weight_sum_;
   std::vector<GradientMatrix<D>> slot_shear_stress_;
