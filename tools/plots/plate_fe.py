@@ -23,11 +23,12 @@ Run: /usr/bin/python3 tools/plots/plate_fe.py [--out docs/figures/shtc] [--runs 
 import argparse
 import math
 import sys
+import tomllib
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from revsph_runs import fit_sinusoid, read_csv, write_csv  # noqa: E402
+from revsph_runs import fit_sinusoid, read_csv, save_figure, write_csv  # noqa: E402
 
 import matplotlib  # noqa: E402
 
@@ -35,12 +36,18 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-# Table 1 and eqs. (54)-(57).
-LENGTH, THICKNESS = 0.06, 0.01
-DENSITY = 1845.0
-C0 = CS = 9046.59
-AMPLITUDE, OMEGA, ALPHA, A1, A2 = 4.3369e-5, 2.3597e5, 78.834, 56.6368, 57.6455
-T_END = 3.0e-5
+# The plate of the beryllium-plate case (Table 1, eqs. 54-57): L = 2 |x0| (s = alpha (x - x0)
+# starts at the left end), W the height of its particle block.
+CASE_FILE = Path(__file__).resolve().parents[2] / "models" / "shtc" / "cases" / "beryllium-plate.toml"
+with CASE_FILE.open("rb") as case_file:
+    CASE = tomllib.load(case_file)
+X0 = CASE["initial"]["x0"]
+LENGTH = 2.0 * abs(X0)
+THICKNESS = CASE["particles"][0]["max"][1] - CASE["particles"][0]["min"][1]
+DENSITY = CASE["material"]["rest_density"]
+C0, CS = CASE["material"]["sound_speed"], CASE["material"]["shear_speed"]
+AMPLITUDE, OMEGA = CASE["initial"]["amplitude"], CASE["initial"]["omega"]
+T_END = CASE["run"]["t_end"]
 
 
 def embed(f):
@@ -151,12 +158,17 @@ class PlateMesh:
         return force, energy
 
 
+def mode_shape(x, initial=CASE["initial"]):
+    """The first free-free mode of eqs. (55)-(56): a1 (sinh s + sin s) - a2 (cosh s + cos s),
+    s = alpha (x - x0); the linear displacement is A mode_shape(x) sin(omega t)."""
+    s = initial["alpha"] * (np.asarray(x) - initial["x0"])
+    return initial["a1"] * (np.sinh(s) + np.sin(s)) - initial["a2"] * (np.cosh(s) + np.cos(s))
+
+
 def initial_velocity(reference, amplitude):
-    """Eq. (55): v_y = A omega (a1 (sinh s + sin s) - a2 (cosh s + cos s)), s = alpha (x + L/2)."""
-    s = ALPHA * (reference[:, 0] + 0.5 * LENGTH)
+    """Eq. (55): v_y = A omega mode_shape(x)."""
     velocity = np.zeros_like(reference)
-    velocity[:, 1] = amplitude * OMEGA * (A1 * (np.sinh(s) + np.sin(s)) -
-                                         A2 * (np.cosh(s) + np.cos(s)))
+    velocity[:, 1] = amplitude * OMEGA * mode_shape(reference[:, 0])
     return velocity
 
 
@@ -249,16 +261,13 @@ def main():
                   "largest difference of the centre point's y over the run: "
                   f"{np.max(np.abs(np.interp(ts, t, y) - ys)):.3e} m "
                   f"(amplitude {np.max(np.abs(y)):.3e} m)."]
-    ax.plot(t * 1e6, AMPLITUDE * (A1 * (math.sinh(ALPHA * LENGTH / 2) + math.sin(ALPHA * LENGTH / 2))
-                                  - A2 * (math.cosh(ALPHA * LENGTH / 2) +
-                                          math.cos(ALPHA * LENGTH / 2)))
-            * np.sin(OMEGA * t) * 1e3, "b:", lw=1, label="linear theory, eq. (56)")
+    ax.plot(t * 1e6, AMPLITUDE * mode_shape(0.0) * np.sin(OMEGA * t) * 1e3, "b:", lw=1,
+            label="linear theory, eq. (56)")
     ax.set_xlabel("t (µs)")
     ax.set_ylabel("centre point y (mm)")
     ax.set_title("Beryllium plate at eq. (56)'s amplitude")
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(out / "plate_fe.png", dpi=110)
+    save_figure(fig, out / "plate_fe.png")
     (out / "plate_fe.md").write_text("\n".join(lines) + "\n")
     print("\n".join(lines))
 

@@ -39,6 +39,15 @@ def missing_runs(runs, names):
     return [n for n in names if not (runs / n / "summary.json").is_file()]
 
 
+def save_figure(fig, path, dpi=110):
+    """Lays out, writes and closes a matplotlib figure."""
+    import matplotlib.pyplot as plt  # here: the modules importing this one need not plot
+
+    fig.tight_layout()
+    fig.savefig(path, dpi=dpi)
+    plt.close(fig)
+
+
 def fit_sinusoid(t, y, omegas):
     """Least-squares y = c + a sin(w t) + b cos(w t), best w of `omegas`."""
     best = None

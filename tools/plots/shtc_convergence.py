@@ -45,7 +45,7 @@ from pathlib import Path
 
 import plate_fe
 import shtc_fluids
-from revsph_runs import case_of, figure_parser, figure_script_main, write_csv
+from revsph_runs import case_of, figure_parser, figure_script_main, save_figure, write_csv
 from shtc_fluids import cavity_at_ghia_points, couette_on_segment, couette_ring_means
 from shtc_solids import model_timoshenko, plate_period
 
@@ -56,7 +56,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 DPI = 110
-PLATE_LENGTH, PLATE_THICKNESS = 0.06, 0.01
+PLATE_LENGTH, PLATE_THICKNESS = plate_fe.LENGTH, plate_fe.THICKNESS
 
 
 def plate_overrides(n):
@@ -225,9 +225,7 @@ def plate_convergence(runs, out, report):
     penalty_ax.set_ylabel("fitted period of the centre point (µs)")
     penalty_ax.set_title("The penalty (eq. 39) stiffens the plate")
     penalty_ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(out / "plate_convergence.png", dpi=DPI)
-    plt.close(fig)
+    save_figure(fig, out / "plate_convergence.png", DPI)
 
 
 def energy_error_of(run):
@@ -278,9 +276,7 @@ def plate_energy(runs, out, report):
     dr_ax.set_xlabel("W / dr (dt of eq. 58)")
     dr_ax.set_title("Energy error against resolution")
     dr_ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(out / "plate_energy_error.png", dpi=DPI)
-    plt.close(fig)
+    save_figure(fig, out / "plate_energy_error.png", DPI)
 
 
 def error_figure(out, stem, dr, curves, title, ylabel):
@@ -293,9 +289,7 @@ def error_figure(out, stem, dr, curves, title, ylabel):
     ax.set_ylabel(ylabel)
     ax.set_title(title)
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(out / f"{stem}.png", dpi=DPI)
-    plt.close(fig)
+    save_figure(fig, out / f"{stem}.png", DPI)
 
 
 def couette_convergence(runs, out, report):

@@ -39,7 +39,8 @@ import functools
 import sys
 from pathlib import Path
 
-from revsph_runs import case_of, figure_parser, figure_script_main, read_csv, snapshots, write_csv
+from revsph_runs import (case_of, figure_parser, figure_script_main, read_csv, save_figure, snapshots,
+                         write_csv)
 
 import matplotlib
 
@@ -191,9 +192,7 @@ def couette_figures(runs, out, report):
     right.set_xlabel("r")
     right.set_ylabel("v_y - omega r")
     right.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(out / "couette_profile.png", dpi=DPI)
-    plt.close(fig)
+    save_figure(fig, out / "couette_profile.png", DPI)
     budget_figure(runs / "taylor-couette-step-ends", out / "couette_energy",
                   "Taylor-Couette dr = 1/20, step_ends (paper 2, Fig. 10 right)", report,
                   "Taylor-Couette")
@@ -250,9 +249,7 @@ def budget_figure(run, stem, title, report, what):
     bottom.set_xlabel("t")
     bottom.set_ylabel("energy")
     bottom.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(stem.with_suffix(".png"), dpi=DPI)
-    plt.close(fig)
+    save_figure(fig, stem.with_suffix(".png"), DPI)
     report.append((f"{what}: energy budget at the end, (E - E(0) - W) / W (W the walls' work, "
                    f"{how})", f"{(total[-1] - total[0] - work[-1]) / work[-1]:.3e}"))
 
@@ -330,16 +327,12 @@ def cavity_figures(runs, out, report):
     axes[0].legend(fontsize=7)
     axes[1].set_xlabel("x")
     axes[1].set_ylabel("v on y = 1/2")
-    fig.tight_layout()
-    fig.savefig(out / "cavity_centrelines.png", dpi=DPI)
-    plt.close(fig)
+    save_figure(fig, out / "cavity_centrelines.png", DPI)
     energy_axes.set_xlabel("t")
     energy_axes.set_ylabel("energy / final total")
     energy_axes.set_title("Lid-driven cavity energies (paper 2, Fig. 13 right)")
     energy_axes.legend(fontsize=6)
-    energy_fig.tight_layout()
-    energy_fig.savefig(out / "cavity_energy.png", dpi=DPI)
-    plt.close(energy_fig)
+    save_figure(energy_fig, out / "cavity_energy.png", DPI)
 
 
 def main():

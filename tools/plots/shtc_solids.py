@@ -38,7 +38,7 @@ import sys
 
 import plate_fe
 from revsph_runs import (case_of, figure_parser, figure_script_main, fit_sinusoid, read_csv,
-                         write_csv)
+                         save_figure, write_csv)
 
 import matplotlib
 
@@ -128,8 +128,7 @@ def plate_figures(runs, out, report):
     # Linear prediction at the probe particle: y = A (a1 (sinh s + sin s) - a2 (cosh s + cos s))
     # sin(omega t), s = alpha (x - x0), the displacement whose rate is eq. (55).
     x_probe = read_csv(run / "diagnostics.csv")["probe_x"][0]
-    s = initial["alpha"] * (x_probe - initial["x0"])
-    mode = initial["a1"] * (np.sinh(s) + np.sin(s)) - initial["a2"] * (np.cosh(s) + np.cos(s))
+    mode = plate_fe.mode_shape(x_probe, initial)
     linear = initial["amplitude"] * mode * np.sin(omega * t)
     timoshenko = model_timoshenko(case)
     period = 2.0 * np.pi / fitted
@@ -173,9 +172,7 @@ def plate_figures(runs, out, report):
     ax.set_ylabel("y of the centre point (mm)")
     ax.set_title("Beryllium plate (paper 2, Fig. 2), dr = W/40")
     ax.legend(fontsize=7, loc="lower left")
-    fig.tight_layout()
-    fig.savefig(out / "plate_centre.png", dpi=DPI)
-    plt.close(fig)
+    save_figure(fig, out / "plate_centre.png", DPI)
 
     energy = read_csv(run / "energy.csv")
     energy_figure(energy, out / "plate_energy", "Beryllium plate (paper 2, Fig. 3)", report,
@@ -197,9 +194,7 @@ def plate_figures(runs, out, report):
                        f"{spread[0]:.3e} / {spread[1]:.3e}"))
     axes[-1].set_xlabel("x (mm)")
     fig.suptitle("Beryllium plate (paper 2, Fig. 4): tensile instability")
-    fig.tight_layout()
-    fig.savefig(out / "plate_penalty.png", dpi=DPI)
-    plt.close(fig)
+    save_figure(fig, out / "plate_penalty.png", DPI)
 
 
 def nearest_neighbour_spread(position):
@@ -231,9 +226,7 @@ def energy_figure(energy, stem, title, report, what):
     bottom.plot(energy["time"], (energy["total"] - total0) / total0, color="k")
     bottom.set_ylabel("(E - E(0)) / E(0)")
     bottom.set_xlabel("t (s)")
-    fig.tight_layout()
-    fig.savefig(stem.with_suffix(".png"), dpi=DPI)
-    plt.close(fig)
+    save_figure(fig, stem.with_suffix(".png"), DPI)
     report.append((f"{what}: max relative total-energy error",
                    f"{np.max(np.abs(energy['relative_error'])):.3e}"))
 
@@ -265,9 +258,7 @@ def column_figures(runs, out, report):
     bottom.axhline(0.0, color="k", lw=0.5)
     bottom.set_ylabel("L_z (kg m²/s)")
     bottom.set_xlabel("t (s)")
-    fig.tight_layout()
-    fig.savefig(out / "column_top.png", dpi=DPI)
-    plt.close(fig)
+    save_figure(fig, out / "column_top.png", DPI)
 
 
 def main():
