@@ -87,38 +87,6 @@ TEST(ShtcPlateSteps, EnergyErrorIsSecondOrderInTheTimeStep) {
   EXPECT_LT(coarse / fine, 5.5) << "coarse " << coarse << ", fine " << fine;
 }
 
-double diagnostic(revsph::Simulation& simulation, const char* name);
-double probe_y(revsph::Simulation& simulation) {
-  return diagnostic(simulation, "probe_y");
-}
-
-TEST(ShtcPlateSteps, PapersCayleyUpdateFollowsTheExactOneButIsDeclaredIrreversible) {
-  // discretisation.distortion_update = "cayley" (the paper's eq. 49, for comparison): the two
-  // updates are both second order and differ by O(dt^3) per step, so over 1000 steps (a fifth of
-  // the small plate's period) the centre points must agree to far better than the distance they
-  // moved; rounded in doubles the Cayley update has no exact inverse, which the case declares.
-  auto exact = make_simulation("beryllium-plate-small");
-  auto cayley =
-      make_simulation("beryllium-plate-small", {{"discretisation.distortion_update", "cayley"}});
-  EXPECT_TRUE(exact->info().irreversible_terms.empty());
-  ASSERT_EQ(cayley->info().irreversible_terms.size(), 1u);
-  const double start = probe_y(*exact);
-  exact->advance(1000);
-  cayley->advance(1000);
-  const double moved = std::fabs(probe_y(*exact) - start);
-  std::printf("centre point moved %.3e m; Cayley - exact %.3e m\n", moved,
-              probe_y(*cayley) - probe_y(*exact));
-  EXPECT_GT(moved, 1e-4) << "the plate must bend";
-  EXPECT_LT(std::fabs(probe_y(*cayley) - probe_y(*exact)), 1e-7 * moved); // measured 7e-10
-  EXPECT_NE(hash_of(*cayley), hash_of(*exact)) << "two different updates";
-
-  auto reversed =
-      make_simulation("beryllium-plate-small", {{"discretisation.distortion_update", "cayley"}});
-  VerifyOptions options;
-  options.steps = 200;
-  EXPECT_FALSE(revsph::verify_reversibility(*reversed, options).identical());
-}
-
 // The small cavity with tau = infinity: an elastic square driven by its lid, which ramps up
 // within the test's steps (ramp_time = 0.05 s, 153 steps); walls.no_slip as given.
 std::unique_ptr<revsph::Simulation> make_elastic_cavity(const std::string& no_slip) {
@@ -173,6 +141,37 @@ double term(const revsph::EnergyBudget& budget, const char* name) {
   }
   ADD_FAILURE() << "no energy term " << name;
   return NAN;
+}
+
+double probe_y(revsph::Simulation& simulation) {
+  return diagnostic(simulation, "probe_y");
+}
+
+TEST(ShtcPlateSteps, PapersCayleyUpdateFollowsTheExactOneButIsDeclaredIrreversible) {
+  // discretisation.distortion_update = "cayley" (the paper's eq. 49, for comparison): the two
+  // updates are both second order and differ by O(dt^3) per step, so over 1000 steps (a fifth of
+  // the small plate's period) the centre points must agree to far better than the distance they
+  // moved; rounded in doubles the Cayley update has no exact inverse, which the case declares.
+  auto exact = make_simulation("beryllium-plate-small");
+  auto cayley =
+      make_simulation("beryllium-plate-small", {{"discretisation.distortion_update", "cayley"}});
+  EXPECT_TRUE(exact->info().irreversible_terms.empty());
+  ASSERT_EQ(cayley->info().irreversible_terms.size(), 1u);
+  const double start = probe_y(*exact);
+  exact->advance(1000);
+  cayley->advance(1000);
+  const double moved = std::fabs(probe_y(*exact) - start);
+  std::printf("centre point moved %.3e m; Cayley - exact %.3e m\n", moved,
+              probe_y(*cayley) - probe_y(*exact));
+  EXPECT_GT(moved, 1e-4) << "the plate must bend";
+  EXPECT_LT(std::fabs(probe_y(*cayley) - probe_y(*exact)), 1e-7 * moved); // measured 7e-10
+  EXPECT_NE(hash_of(*cayley), hash_of(*exact)) << "two different updates";
+
+  auto reversed =
+      make_simulation("beryllium-plate-small", {{"discretisation.distortion_update", "cayley"}});
+  VerifyOptions options;
+  options.steps = 200;
+  EXPECT_FALSE(revsph::verify_reversibility(*reversed, options).identical());
 }
 
 TEST_P(ShtcDrivenWalls, EnergyGrowsByTheWorkOfTheWalls) {
