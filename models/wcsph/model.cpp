@@ -1,10 +1,9 @@
 #include "models/wcsph/model.hpp"
 
-#include "core/cell_order.hpp"
 #include "core/verlet.hpp"
 #include "models/wcsph/equations.hpp"
-#include "models/wcsph/forces.hpp"
 #include "models/wcsph/gresho.hpp"
+#include "models/wcsph/pair_terms.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,23 +12,12 @@ namespace revsph::wcsph {
 
 namespace {
 
-// At most a few cells per particle, so a large empty domain cannot exhaust memory.
-std::size_t cell_budget(std::size_t particles) {
-  return 4 * particles + 4096;
-}
-
-// Real coordinates of a field, written into `out` from index `first` on.
-template <class Arith, int D>
-void real_coordinates(const StateField<typename Arith::Raw>& field, CoordinateArrays<D>& out,
-                      std::size_t first) {
-  for (int k = 0; k < D; ++k) {
-    const auto raw = field.component(k);
-    out[k].resize(std::max(out[k].size(), first + raw.size()));
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < raw.size(); ++i) {
-      out[k][first + i] = Arith::real(raw[i], field.info().scale);
-    }
-  }
+// D copies of one summed quantity's description, for the acceleration's components.
+template <int D>
+std::array<SummedQuantity, D> acceleration_quantities(const fixedpoint::Scale& scale) {
+  std::array<SummedQuantity, D> quantities{};
+  quantities.fill({"acceleration", scale});
+  return quantities;
 }
 
 } // namespace
@@ -38,14 +26,14 @@ template <int D, class Arith>
 Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, Raw> state)
     : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
       kernel_(parameters_.support_radius),
-      carrier_cells_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
-                     cell_budget(state_.position.count() + state_.dummy_position.count())),
-      wall_cells_(parameters_.domain,
-                  std::max(parameters_.support_radius, parameters_.wall_radius) *
-                      parameters_.cell_size_factor,
-                  cell_budget(state_.wall_position.count())),
-      density_sums_(parameters_.density_scale),
-      acceleration_sums_(sums_at<typename Arith::Sums, D>(parameters_.acceleration_scale)) {
+      layout_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
+              {{"fluid", state_.position.count()}, {"dummy", state_.dummy_position.count()}}),
+      walls_(parameters_.domain,
+             std::max(parameters_.support_radius, parameters_.wall_radius) *
+                 parameters_.cell_size_factor,
+             state_.wall_position.count(), "wall"),
+      density_sums_(SummedQuantity{"density", parameters_.density_scale}),
+      acceleration_sums_(acceleration_quantities<D>(parameters_.acceleration_scale)) {
   if (parameters_.anti_clump_pressure > 0.0) {
     anti_clump_kernel_.emplace(0.5 * parameters_.dr); // App. A: support dr / 2
   }
@@ -106,24 +94,12 @@ void Model<D, Arith>::update_constants() {
   if (constants_valid_) {
     return;
   }
-  wall_position_ = {};
-  real_coordinates<Arith, D>(state_.wall_position, wall_position_, 0);
-  try {
-    wall_cells_.build(view_of<D>(wall_position_));
-  } catch (const PointOutsideDomain& outside) {
-    throw SimulationFault({"wall", outside.index(), "position", outside.what()}, -1);
+  CoordinateArrays<D> wall_position;
+  for (int k = 0; k < D; ++k) {
+    wall_position[k] = CarrierField<Arith>{&state_.wall_position}.reals(k);
   }
-  const std::size_t fluid = fluid_count();
-  const std::size_t dummies = state_.dummy_position.count();
-  mass_.resize(fluid + dummies);
-  for (std::size_t a = 0; a < fluid; ++a) {
-    mass_[a] = Arith::real(state_.mass.at(0, a), state_.mass.info().scale);
-  }
-  for (std::size_t d = 0; d < dummies; ++d) {
-    mass_[fluid + d] = Arith::real(state_.dummy_mass.at(0, d), state_.dummy_mass.info().scale);
-  }
-  dummy_position_ = {};
-  real_coordinates<Arith, D>(state_.dummy_position, dummy_position_, 0);
+  walls_.place(std::move(wall_position));
+  mass_ = CarrierField<Arith>{&state_.mass, &state_.dummy_mass}.reals();
   constants_valid_ = true;
 }
 
@@ -133,61 +109,68 @@ void Model<D, Arith>::update_derived() {
     return;
   }
   update_constants();
+  const CarrierField<Arith> position = carrier_position();
+  layout_.build([&](int axis, std::size_t a) { return position.real(axis, a); },
+                parameters_.support_radius);
+  const std::size_t carriers = layout_.slot_count();
+  layout_.gather(std::span<const double>(mass_), slot_mass_);
+  const std::vector<Raw> density_constant =
+      CarrierField<Arith>{&state_.density_constant, &state_.dummy_density_constant}.raws();
+  layout_.gather(std::span<const Raw>(density_constant), slot_density_constant_);
+  slot_is_fluid_.resize(carriers);
+  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
   const std::size_t fluid = fluid_count();
-  const std::size_t carriers = mass_.size();
-  // Straight from the fixed-point state: no copy of all coordinates in doubles.
-  sort_into_cells<D>(
-      carrier_cells_, carriers, [&](int axis, std::size_t a) { return real_position(axis, a); },
-      [&](std::size_t a) {
-        return std::pair{carrier_set(a, fluid), index_in_set(a, fluid)};
-      },
-      slot_position_);
-  // Gather the other carrier arrays into cell order.
-  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
-  slot_mass_.resize(carriers);
-  slot_density_constant_.resize(carriers);
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < carriers; ++s) {
+    slot_is_fluid_[s] = carrier_of_slot[s] < fluid;
+  }
+  walls_.find_near(layout_, parameters_.wall_radius);
+
+  sum_pairs<Arith>(layout_, DensityTerm<D, Arith>{kernel_, slot_mass_, slot_density_constant_},
+                   density_sums_);
+  const std::span<const double> slot_density = density_sums_.values(0);
+  FaultRecorder faults;
+  pressure_over_density_squared_.resize(carriers);
+  if (anti_clump_kernel_) {
+    inverse_density_squared_.resize(carriers);
+  }
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < carriers; ++s) {
+    const double rho = slot_density[s];
+    if (!(rho > 0.0)) {
+      layout_.record_fault(faults, s, "density", "density not positive");
+    }
+    pressure_over_density_squared_[s] =
+        tait_pressure(rho, parameters_.rest_density, parameters_.sound_speed) / (rho * rho);
+    if (anti_clump_kernel_) {
+      inverse_density_squared_[s] = 1.0 / (rho * rho);
+    }
+  }
+  faults.throw_if_any();
+  const AccelerationTerm<D> acceleration{kernel_,
+                                         slot_mass_,
+                                         pressure_over_density_squared_,
+                                         inverse_density_squared_,
+                                         slot_is_fluid_,
+                                         anti_clump_kernel_ ? &*anti_clump_kernel_ : nullptr,
+                                         parameters_.anti_clump_pressure,
+                                         parameters_.wall_potential(),
+                                         parameters_.gravity};
+  sum_pairs<Arith>(layout_, acceleration, acceleration_sums_, walls_.cross_pairs());
+
+  density_.resize(carriers); // in the canonical order, for the outputs
+  for (int k = 0; k < D; ++k) {
+    acceleration_[k].resize(fluid);
+  }
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < carriers; ++s) {
     const std::uint32_t a = carrier_of_slot[s];
-    slot_mass_[s] = mass_[a];
-    slot_density_constant_[s] = a < fluid ? state_.density_constant.at(0, a)
-                                          : state_.dummy_density_constant.at(0, a - fluid);
-  }
-  const CoordinateView<D> x = view_of<D>(slot_position_);
-  carrier_pairs_.build<D>(carrier_cells_, x, parameters_.support_radius);
-  const CoordinateView<D> wall_x = view_of<D>(wall_position_);
-  find_neighbours<D>(wall_cells_, wall_x, x, parameters_.wall_radius, SelfPairs::included,
-                     wall_neighbours_);
-
-  FaultRecorder faults;
-  compute_density<D, Arith>(kernel_, x, slot_mass_, slot_density_constant_, carrier_pairs_,
-                            carrier_of_slot, fluid, density_sums_, slot_density_, faults);
-  faults.throw_if_any();
-  pressure_over_density_squared_.resize(carriers);
-#pragma omp parallel for schedule(static)
-  for (std::size_t s = 0; s < carriers; ++s) {
-    const double rho = slot_density_[s];
-    pressure_over_density_squared_[s] =
-        tait_pressure(rho, parameters_.rest_density, parameters_.sound_speed) / (rho * rho);
-  }
-  if (anti_clump_kernel_) {
-    inverse_density_squared_.resize(carriers);
-#pragma omp parallel for schedule(static)
-    for (std::size_t s = 0; s < carriers; ++s) {
-      inverse_density_squared_[s] = 1.0 / (slot_density_[s] * slot_density_[s]);
+    density_[a] = slot_density[s];
+    if (a < fluid) {
+      for (int k = 0; k < D; ++k) {
+        acceleration_[k][a] = acceleration_sums_.value(k, s);
+      }
     }
-  }
-  compute_acceleration<D, Arith>(
-      kernel_, x, wall_x, slot_mass_, pressure_over_density_squared_, inverse_density_squared_,
-      carrier_pairs_, wall_neighbours_, carrier_of_slot, fluid, parameters_.gravity,
-      parameters_.wall_potential(), anti_clump_kernel_ ? &*anti_clump_kernel_ : nullptr,
-      parameters_.anti_clump_pressure, acceleration_sums_, acceleration_, faults);
-  faults.throw_if_any();
-
-  density_.resize(carriers); // in the canonical order, for the outputs
-#pragma omp parallel for schedule(static)
-  for (std::size_t s = 0; s < carriers; ++s) {
-    density_[carrier_of_slot[s]] = slot_density_[s];
   }
   derived_valid_ = true;
 }
@@ -220,27 +203,33 @@ std::array<std::vector<double>, D> Model<D, Arith>::real_velocity() const {
 template <int D, class Arith>
 std::array<std::vector<double>, D> Model<D, Arith>::filtered_velocity() {
   update_derived();
-  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
   const std::size_t fluid = fluid_count();
   const std::array<std::vector<double>, D> velocity = real_velocity();
   std::array<std::vector<double>, D> slot_velocity;
   for (int k = 0; k < D; ++k) {
     slot_velocity[k].assign(carrier_of_slot.size(), 0.0);
     for (std::size_t s = 0; s < carrier_of_slot.size(); ++s) {
-      if (carrier_of_slot[s] < fluid) {
+      if (slot_is_fluid_[s]) {
         slot_velocity[k][s] = velocity[k][carrier_of_slot[s]];
       }
     }
   }
-  std::array<std::vector<double>, D> slot_filtered;
-  shepard_filter<D>(kernel_, view_of<D>(slot_position_), slot_mass_, slot_density_, slot_velocity,
-                    carrier_pairs_, carrier_of_slot, fluid, slot_filtered);
+  // The weights V w are about 1 in sum; the weighted velocities share the velocity's scale.
+  std::array<SummedQuantity, D + 1> quantities{};
+  quantities.fill({"filtered_velocity", parameters_.velocity_scale});
+  quantities[0] = {"shepard_weight", fixedpoint::Scale::covering(1.0, 50)};
+  PairSums<Arith, D + 1> sums(quantities);
+  sum_pairs<Arith>(
+      layout_,
+      ShepardTerm<D>{kernel_, slot_mass_, density_sums_.values(0), slot_velocity, slot_is_fluid_},
+      sums);
   std::array<std::vector<double>, D> filtered;
   for (int k = 0; k < D; ++k) {
     filtered[k].resize(fluid);
     for (std::size_t s = 0; s < carrier_of_slot.size(); ++s) {
-      if (carrier_of_slot[s] < fluid) {
-        filtered[k][carrier_of_slot[s]] = slot_filtered[k][s];
+      if (slot_is_fluid_[s]) {
+        filtered[k][carrier_of_slot[s]] = sums.value(k + 1, s) / sums.value(0, s);
       }
     }
   }
@@ -283,25 +272,20 @@ typename Model<D, Arith>::ParticleEnergies Model<D, Arith>::particle_energies() 
     }
     energies.kinetic[a] = 0.5 * m * v_squared;
     energies.gravitational[a] =
-        m * parameters_.gravity * (real_position(D - 1, a) - parameters_.gravity_reference_height);
+        m * parameters_.gravity * (fluid_position(D - 1, a) - parameters_.gravity_reference_height);
     energies.compressional[a] =
         m * compressional_energy_per_mass(density_[a], parameters_.rest_density,
                                           parameters_.sound_speed); // eq. (3)
   }
-  // eq. (7), attributed to the fluid particle; the wall lists are per slot.
-  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
-  const CoordinateView<D> x = view_of<D>(slot_position_);
-  const CoordinateView<D> wall_x = view_of<D>(wall_position_);
+  // Eq. (7), attributed to the fluid particle.
+  PairSums<FloatArithmetic, 1> wall_sums(SummedQuantity{"wall_energy", fixedpoint::Scale()});
+  sum_cross_pairs<FloatArithmetic>(layout_, WallEnergyTerm<D>{slot_mass_, slot_is_fluid_, wall},
+                                   wall_sums, walls_.cross_pairs());
+  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
   for (std::size_t s = 0; s < carrier_of_slot.size(); ++s) {
-    const std::uint32_t a = carrier_of_slot[s];
-    if (a >= n) {
-      continue;
+    if (slot_is_fluid_[s]) {
+      energies.wall[carrier_of_slot[s]] = wall_sums.value(0, s);
     }
-    double wall_energy = 0.0;
-    for (const std::uint32_t w : wall_neighbours_.of(s)) {
-      wall_energy += mass_[a] * wall.energy_per_fluid_mass(squared_distance<D>(x, s, wall_x, w));
-    }
-    energies.wall[a] = wall_energy;
   }
   // Dummy particles store compressional energy too (their density follows the fluid).
   for (std::size_t d = n; d < density_.size(); ++d) {
@@ -387,8 +371,8 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics() {
   double raw_sum = 0.0;
   double filtered_sum = 0.0;
   for (std::size_t a = 0; a < fluid_count(); ++a) {
-    const auto [exact_x, exact_y] = gresho::velocity(real_position(0, a) - parameters_.centre[0],
-                                                     real_position(1, a) - parameters_.centre[1]);
+    const auto [exact_x, exact_y] = gresho::velocity(fluid_position(0, a) - parameters_.centre[0],
+                                                     fluid_position(1, a) - parameters_.centre[1]);
     const double volume = mass_[a] / density_[a];
     raw_sum += volume * ((velocity[0][a] - exact_x) * (velocity[0][a] - exact_x) +
                          (velocity[1][a] - exact_y) * (velocity[1][a] - exact_y));

@@ -5,13 +5,14 @@
 // conservative wall eq. 7, dummy-particle walls and the anti-clump force of App. A). The active
 // Shepard filter of App. A is the one irreversible option (after_step).
 
-#include "core/cell_list.hpp"
+#include "core/carrier_field.hpp"
 #include "core/energy.hpp"
+#include "core/fixed_targets.hpp"
 #include "core/kernel_wendland.hpp"
-#include "core/neighbour_list.hpp"
-#include "core/pair_list.hpp"
+#include "core/pair_sum.hpp"
 #include "core/particle_view.hpp"
 #include "core/simulation.hpp"
+#include "core/slot_layout.hpp"
 #include "core/step_composition.hpp"
 #include "models/wcsph/parameters.hpp"
 #include "models/wcsph/state.hpp"
@@ -73,11 +74,12 @@ private:
     std::vector<double> dummy_compressional;
   };
   std::size_t fluid_count() const { return state_.position.count(); }
-  // Coordinate `axis` of carrier a (fluid, then dummies) in metres.
-  double real_position(int axis, std::size_t a) const {
-    const std::size_t fluid = fluid_count();
-    return a < fluid ? Arith::real(state_.position.at(axis, a), state_.position.info().scale)
-                     : dummy_position_[axis][a - fluid];
+  double fluid_position(int axis, std::size_t a) const {
+    return Arith::real(state_.position.at(axis, a), state_.position.info().scale);
+  }
+  // The density carriers' positions (fluid, then dummies).
+  CarrierField<Arith> carrier_position() const {
+    return {&state_.position, &state_.dummy_position};
   }
   void update_derived();
   void update_constants();
@@ -91,25 +93,20 @@ private:
   WendlandQuintic<D> kernel_;
   std::optional<WendlandQuintic<D>> anti_clump_kernel_;
 
-  // Constant parts (wall and dummy positions, masses), converted once.
+  // Constant parts (wall positions, masses), converted once.
   bool constants_valid_ = false;
-  CoordinateArrays<D> wall_position_;
   std::vector<double> mass_; // carriers: fluid then dummies
-  CoordinateArrays<D> dummy_position_;
-  // Derived from the state, recomputed after every drift. The neighbour loops run over the
-  // carriers in cell order (slots, core/pair_list.hpp) for memory locality and to visit each pair
-  // once; the state and everything the model reports stay in the canonical particle order.
+  // Derived from the state, recomputed after every drift. The pair loops run over the carriers
+  // in cell order (slots, core/slot_layout.hpp); the state and everything the model reports stay
+  // in the canonical particle order.
   bool derived_valid_ = false;
-  CellList<D> carrier_cells_; // its sorted_points() maps a slot to its carrier
-  CellList<D> wall_cells_;
-  CoordinateArrays<D> slot_position_;
+  SlotLayout<D> layout_;  // carriers: the fluid and dummy particles
+  FixedTargets<D> walls_; // the wall particles of eq. (7)
   std::vector<double> slot_mass_;
   std::vector<Raw> slot_density_constant_;
-  HalfPairList carrier_pairs_;
-  NeighbourList wall_neighbours_; // per slot: wall particles within the wall radius
-  typename Arith::Sums density_sums_;
-  std::array<typename Arith::Sums, D> acceleration_sums_;
-  std::vector<double> slot_density_;
+  std::vector<std::uint8_t> slot_is_fluid_;
+  PairSums<Arith, 1> density_sums_;
+  PairSums<Arith, D> acceleration_sums_;
   std::vector<double> pressure_over_density_squared_; // slots
   std::vector<double> inverse_density_squared_;       // slots, with the anti-clump force
   std::vector<double> density_;                       // carriers, canonical order

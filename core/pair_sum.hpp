@@ -1,0 +1,273 @@
+#pragma once
+// The one pair-sum loop of the engine (design note §3). A model writes its SPH sums as small
+// pair terms, the way HOOMD-blue plugs a pair evaluator into one generic neighbour loop; this
+// file runs them over the half pair list of a SlotLayout and accumulates the results exactly.
+//
+// A pair term T provides
+//   static constexpr int width;                           // how many quantities it sums
+//   void pair(const PairGeometry<D>& p, std::array<double, width>& to_a,
+//             std::array<double, width>& to_b) const;     // a pair's contribution to each side
+// and optionally
+//   bool receives(std::uint32_t slot) const;              // whether a slot's sums are wanted
+//                                                         // (default: every slot)
+//   template <class Add> void self(std::uint32_t slot, Add& add) const;
+//                                                         // the particle's own terms (b = a, an
+//                                                         // external field, a constant) through
+//                                                         // add(q, value) and add.raw(q, raw)
+//   void cross_pair(const PairGeometry<D>& p, std::array<double, width>& to_a) const;
+//                                                         // one-sided terms from fixed targets
+//                                                         // (a CrossPairs list: walls, say)
+// The model names each summed quantity and gives its fixed-point scale (PairSums). Every term is
+// rounded once to that scale and added in integers (FixedArithmetic), so a sum is the same for
+// any order of its terms: any thread count, any cell size, any future domain decomposition. With
+// FloatArithmetic (the paper's FloPA) the terms are added as doubles in the order the pair list
+// fixes (the same for any thread count, not for any cell size). A sum that overflows its scale
+// or is not finite stops the run with a SimulationFault naming the particle and the quantity.
+
+#include "core/arithmetic.hpp"
+#include "core/fault.hpp"
+#include "core/geometry.hpp"
+#include "core/neighbour_list.hpp"
+#include "core/slot_layout.hpp"
+
+#include <array>
+#include <cmath>
+#include <concepts>
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace revsph {
+
+template <int D>
+struct PairGeometry {
+  std::uint32_t a = 0;          // slot
+  std::uint32_t b = 0;          // slot of the partner, or the target's index in a cross pair
+  std::array<double, D> x_ab{}; // x_a - x_b
+  double r_squared = 0.0;       // |x_ab|^2, summed over the axes in order
+  double r = 0.0;               // sqrt(r_squared)
+};
+
+// A quantity a pair loop sums: its name in fault reports and its fixed-point scale.
+struct SummedQuantity {
+  const char* name;
+  fixedpoint::Scale scale;
+};
+
+// The sums of one pair loop: K quantities per slot, and their values after the loop.
+template <class Arith, int K>
+class PairSums {
+public:
+  explicit PairSums(const std::array<SummedQuantity, K>& quantities)
+      : quantities_(quantities), sums_(make_sums(quantities, std::make_index_sequence<K>{})) {}
+  explicit PairSums(const SummedQuantity& quantity) requires(K == 1)
+      : PairSums(std::array<SummedQuantity, 1>{quantity}) {}
+
+  // Quantity q of slot s (zero for a slot the term does not receive).
+  double value(int q, std::size_t slot) const { return values_[q][slot]; }
+  std::span<const double> values(int q) const { return values_[q]; }
+  const std::array<SummedQuantity, K>& quantities() const { return quantities_; }
+
+  // For the loops below.
+  typename Arith::Sums& sums(int q) { return sums_[q]; }
+  std::vector<double>& mutable_values(int q) { return values_[q]; }
+  std::array<typename Arith::Sum, K> local_sums() const {
+    return make_local(std::make_index_sequence<K>{});
+  }
+
+private:
+  template <std::size_t... Q>
+  static std::array<typename Arith::Sums, K> make_sums(const std::array<SummedQuantity, K>& q,
+                                                       std::index_sequence<Q...>) {
+    return {typename Arith::Sums(q[Q].scale)...};
+  }
+  template <std::size_t... Q>
+  std::array<typename Arith::Sum, K> make_local(std::index_sequence<Q...>) const {
+    return {typename Arith::Sum(quantities_[Q].scale)...};
+  }
+
+  std::array<SummedQuantity, K> quantities_;
+  std::array<typename Arith::Sums, K> sums_;
+  std::array<std::vector<double>, K> values_;
+};
+
+// What a term's self() adds to its slot's sums.
+template <class Arith, int K>
+class SelfTerms {
+public:
+  SelfTerms(PairSums<Arith, K>& sums, std::size_t slot) : sums_(sums), slot_(slot) {}
+  void operator()(int q, double term) { sums_.sums(q).add(slot_, term); }
+  // A value already in raw units of the quantity's scale (a stored constant).
+  void raw(int q, typename Arith::Raw value) { sums_.sums(q).add_raw(slot_, value); }
+
+private:
+  PairSums<Arith, K>& sums_;
+  std::size_t slot_;
+};
+
+// Fixed targets that act on the slots one-sidedly (the wall particles of paper 1 eq. 7): their
+// positions and, per slot, the targets within reach (core/neighbour_list.hpp).
+template <int D>
+struct CrossPairs {
+  CoordinateView<D> targets;
+  const NeighbourList* of_slot = nullptr;
+};
+
+template <class Term, int D>
+concept PairTerm = requires(const Term& term, const PairGeometry<D>& pair,
+                            std::array<double, Term::width>& to_a,
+                            std::array<double, Term::width>& to_b) {
+  { Term::width } -> std::convertible_to<int>;
+  term.pair(pair, to_a, to_b);
+};
+
+template <class Term>
+concept ReceivesSomeSlots = requires(const Term& term, std::uint32_t slot) {
+  { term.receives(slot) } -> std::convertible_to<bool>;
+};
+
+template <class Term, class Arith>
+concept HasSelfTerms = requires(const Term& term, std::uint32_t slot,
+                                SelfTerms<Arith, Term::width>& add) {
+  term.self(slot, add);
+};
+
+template <class Term, int D>
+concept HasCrossPairs = requires(const Term& term, const PairGeometry<D>& pair,
+                                 std::array<double, Term::width>& to_a) {
+  term.cross_pair(pair, to_a);
+};
+
+namespace detail {
+
+template <class Term>
+bool receives(const Term& term, std::uint32_t slot) {
+  if constexpr (ReceivesSomeSlots<Term>) {
+    return term.receives(slot);
+  } else {
+    return true;
+  }
+}
+
+template <int D>
+void fill_geometry(const CoordinateView<D>& x_a, std::uint32_t a, const CoordinateView<D>& x_b,
+                   std::uint32_t b, PairGeometry<D>& pair) {
+  pair.a = a;
+  pair.b = b;
+  pair.r_squared = 0.0;
+  for (int k = 0; k < D; ++k) {
+    pair.x_ab[k] = x_a[k][a] - x_b[k][b];
+    pair.r_squared += pair.x_ab[k] * pair.x_ab[k];
+  }
+  pair.r = std::sqrt(pair.r_squared);
+}
+
+// Self terms, then every wanted slot's value; a sum that does not fit becomes a fault.
+template <class Arith, int D, class Term, int K>
+void finish_sums(const SlotLayout<D>& layout, const Term& term, PairSums<Arith, K>& sums) {
+  const std::size_t n = layout.slot_count();
+  for (int q = 0; q < K; ++q) {
+    sums.mutable_values(q).resize(n);
+  }
+  FaultRecorder faults;
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < n; ++s) {
+    const auto slot = static_cast<std::uint32_t>(s);
+    if (!receives(term, slot)) {
+      for (int q = 0; q < K; ++q) {
+        sums.mutable_values(q)[s] = 0.0;
+      }
+      continue;
+    }
+    if constexpr (HasSelfTerms<Term, Arith>) {
+      SelfTerms<Arith, K> add(sums, s);
+      term.self(slot, add);
+    }
+    for (int q = 0; q < K; ++q) {
+      if (!sums.sums(q).try_value(s, sums.mutable_values(q)[s])) {
+        layout.record_fault(faults, s, sums.quantities()[q].name,
+                            "overflow or non-finite value in a pair sum");
+      }
+    }
+  }
+  faults.throw_if_any();
+}
+
+} // namespace detail
+
+// Sums `term` over every pair of the layout (and, if the term has cross pairs, over `cross`), then
+// adds the self terms and converts: sums.value(q, slot) afterwards. Throws SimulationFault (step
+// unknown) for the lowest-index particle whose sum does not fit.
+template <class Arith, int D, PairTerm<D> Term>
+void sum_pairs(const SlotLayout<D>& layout, const Term& term, PairSums<Arith, Term::width>& sums,
+               const CrossPairs<D>& cross = {}) {
+  constexpr int K = Term::width;
+  const std::size_t n = layout.slot_count();
+  for (int q = 0; q < K; ++q) {
+    sums.sums(q).reset(n);
+  }
+  const CoordinateView<D> x = layout.position();
+  layout.pairs().for_each_slot([&](std::uint32_t a, std::span<const std::uint32_t> partners) {
+    std::array<typename Arith::Sum, K> own = sums.local_sums();
+    PairGeometry<D> pair;
+    std::array<double, K> to_a{};
+    std::array<double, K> to_b{};
+    for (const std::uint32_t b : partners) {
+      detail::fill_geometry<D>(x, a, x, b, pair);
+      term.pair(pair, to_a, to_b);
+      for (int q = 0; q < K; ++q) {
+        own[q].add(to_a[q]);
+        sums.sums(q).add(b, to_b[q]);
+      }
+    }
+    if constexpr (HasCrossPairs<Term, D>) {
+      if (detail::receives(term, a)) {
+        for (const std::uint32_t w : cross.of_slot->of(a)) {
+          detail::fill_geometry<D>(x, a, cross.targets, w, pair);
+          term.cross_pair(pair, to_a);
+          for (int q = 0; q < K; ++q) {
+            own[q].add(to_a[q]);
+          }
+        }
+      }
+    }
+    for (int q = 0; q < K; ++q) {
+      sums.sums(q).add_sum(a, own[q]);
+    }
+  });
+  detail::finish_sums<Arith>(layout, term, sums);
+}
+
+// Only the one-sided terms of fixed targets: for every wanted slot a, the sum over the targets
+// listed for it of term.cross_pair, in ascending target order, plus its self terms.
+template <class Arith, int D, class Term>
+requires HasCrossPairs<Term, D>
+void sum_cross_pairs(const SlotLayout<D>& layout, const Term& term,
+                     PairSums<Arith, Term::width>& sums, const CrossPairs<D>& cross) {
+  constexpr int K = Term::width;
+  const std::size_t n = layout.slot_count();
+  for (int q = 0; q < K; ++q) {
+    sums.sums(q).reset(n);
+  }
+  const CoordinateView<D> x = layout.position();
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < n; ++s) {
+    const auto a = static_cast<std::uint32_t>(s);
+    if (!detail::receives(term, a)) {
+      continue;
+    }
+    PairGeometry<D> pair;
+    std::array<double, K> to_a{};
+    for (const std::uint32_t w : cross.of_slot->of(a)) {
+      detail::fill_geometry<D>(x, a, cross.targets, w, pair);
+      term.cross_pair(pair, to_a);
+      for (int q = 0; q < K; ++q) {
+        sums.sums(q).add(s, to_a[q]);
+      }
+    }
+  }
+  detail::finish_sums<Arith>(layout, term, sums);
+}
+
+} // namespace revsph

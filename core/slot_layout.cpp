@@ -1,0 +1,55 @@
+#include "core/slot_layout.hpp"
+
+#include <algorithm>
+
+namespace revsph {
+
+namespace {
+
+std::size_t total_count(const std::vector<CarrierSet>& sets) {
+  std::size_t total = 0;
+  for (const CarrierSet& set : sets) {
+    total += set.count;
+  }
+  return total;
+}
+
+} // namespace
+
+template <int D>
+SlotLayout<D>::SlotLayout(const Box<D>& domain, double cell_size, std::vector<CarrierSet> sets)
+    : sets_(std::move(sets)), carrier_count_(total_count(sets_)),
+      cells_(domain, cell_size, 4 * carrier_count_ + 4096) {
+  first_carrier_.push_back(0);
+  for (const CarrierSet& set : sets_) {
+    first_carrier_.push_back(first_carrier_.back() + set.count);
+  }
+}
+
+template <int D>
+std::size_t SlotLayout<D>::set_of_carrier(std::size_t carrier) const {
+  // The first set whose range ends after the carrier (sets are few: a linear scan).
+  std::size_t set = 0;
+  while (set + 1 < sets_.size() && carrier >= first_carrier_[set + 1]) {
+    ++set;
+  }
+  return set;
+}
+
+template <int D>
+std::pair<const char*, std::size_t> SlotLayout<D>::particle_of_carrier(std::size_t carrier) const {
+  const std::size_t set = set_of_carrier(carrier);
+  return {sets_[set].name.c_str(), carrier - first_carrier_[set]};
+}
+
+template <int D>
+void SlotLayout<D>::record_fault(FaultRecorder& faults, std::size_t slot, const char* variable,
+                                 const char* reason) const {
+  const auto [set, index] = particle_of_carrier(cells_.sorted_points()[slot]);
+  faults.record(index, set, variable, reason);
+}
+
+template class SlotLayout<2>;
+template class SlotLayout<3>;
+
+} // namespace revsph

@@ -1,0 +1,128 @@
+#pragma once
+// The particles that take part in a model's pair sums (its carriers) sorted into cell order, with
+// the half pair list over them: the one place where particles become slots.
+//
+// Carriers are the particles of one or more particle sets, numbered set after set: carrier c of a
+// layout over sets {fluid: 100, dummy: 20} is fluid particle c for c < 100, dummy particle c - 100
+// otherwise. build() sorts them into the cells of a CellList; slot s then holds carrier
+// carrier_of_slot()[s], and the pair loops (core/pair_sum.hpp) run over slots, which keeps the
+// partners of a particle close in memory and visits every pair once. Everything a model reports
+// stays in the canonical particle order: gather() and scatter() cross between the two, and
+// record_fault() names a slot's particle by its set and index in the set.
+
+#include "core/cell_list.hpp"
+#include "core/fault.hpp"
+#include "core/geometry.hpp"
+#include "core/pair_list.hpp"
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace revsph {
+
+struct CarrierSet {
+  std::string name; // the particle set, as the state declares it
+  std::size_t count = 0;
+};
+
+template <int D>
+class SlotLayout {
+public:
+  // cell_size >= every radius the pairs are listed for (the support radius times the case's
+  // cell_size_factor). The grid is coarsened if it would need more than a few cells per carrier,
+  // so that a large, sparse domain cannot exhaust memory.
+  SlotLayout(const Box<D>& domain, double cell_size, std::vector<CarrierSet> sets);
+
+  // Sorts the carriers into cells by coordinate(axis, carrier) (metres) and lists the pairs
+  // closer than `radius`. A carrier outside the domain becomes a SimulationFault (step unknown)
+  // naming its set and index.
+  template <class Coordinate>
+  void build(const Coordinate& coordinate, double radius);
+
+  std::size_t carrier_count() const { return carrier_count_; }
+  std::size_t slot_count() const { return carrier_count_; }
+  const std::vector<CarrierSet>& sets() const { return sets_; }
+  // The first carrier of set k: set k's particle i is carrier first_carrier(k) + i.
+  std::size_t first_carrier(std::size_t set) const { return first_carrier_[set]; }
+  // The set of a carrier (an index into sets()).
+  std::size_t set_of_carrier(std::size_t carrier) const;
+
+  std::span<const std::uint32_t> carrier_of_slot() const { return cells_.sorted_points(); }
+  CoordinateView<D> position() const { return view_of<D>(slot_position_); }
+  const HalfPairList& pairs() const { return pairs_; }
+  const CellList<D>& cells() const { return cells_; }
+
+  // by_slot[s] = by_carrier[carrier_of_slot[s]].
+  template <class T>
+  void gather(std::span<const T> by_carrier, std::vector<T>& by_slot) const;
+  // by_carrier[carrier_of_slot[s]] = by_slot[s].
+  template <class T>
+  void scatter(std::span<const T> by_slot, std::vector<T>& by_carrier) const;
+
+  // Records a fault of the particle in slot s (thread-safe, like FaultRecorder::record).
+  void record_fault(FaultRecorder& faults, std::size_t slot, const char* variable,
+                    const char* reason) const;
+  // The set name and index in the set of a carrier.
+  std::pair<const char*, std::size_t> particle_of_carrier(std::size_t carrier) const;
+
+private:
+  std::vector<CarrierSet> sets_;
+  std::vector<std::size_t> first_carrier_; // one per set, then the total
+  std::size_t carrier_count_ = 0;
+  CellList<D> cells_;
+  CoordinateArrays<D> slot_position_;
+  HalfPairList pairs_;
+};
+
+template <int D>
+template <class Coordinate>
+void SlotLayout<D>::build(const Coordinate& coordinate, double radius) {
+  try {
+    cells_.build(carrier_count_, coordinate);
+  } catch (const PointOutsideDomain& outside) {
+    const auto [set, index] = particle_of_carrier(outside.index());
+    throw SimulationFault(
+        {set, index, "position", "left the domain: " + std::string(outside.what())}, -1);
+  }
+  const std::span<const std::uint32_t> carrier = cells_.sorted_points();
+  for (int k = 0; k < D; ++k) {
+    slot_position_[k].resize(carrier_count_);
+  }
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < carrier_count_; ++s) {
+    for (int k = 0; k < D; ++k) {
+      slot_position_[k][s] = coordinate(k, carrier[s]);
+    }
+  }
+  pairs_.build<D>(cells_, position(), radius);
+}
+
+template <int D>
+template <class T>
+void SlotLayout<D>::gather(std::span<const T> by_carrier, std::vector<T>& by_slot) const {
+  const std::span<const std::uint32_t> carrier = cells_.sorted_points();
+  by_slot.resize(carrier.size());
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < carrier.size(); ++s) {
+    by_slot[s] = by_carrier[carrier[s]];
+  }
+}
+
+template <int D>
+template <class T>
+void SlotLayout<D>::scatter(std::span<const T> by_slot, std::vector<T>& by_carrier) const {
+  const std::span<const std::uint32_t> carrier = cells_.sorted_points();
+  by_carrier.resize(carrier.size());
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < carrier.size(); ++s) {
+    by_carrier[carrier[s]] = by_slot[s];
+  }
+}
+
+extern template class SlotLayout<2>;
+extern template class SlotLayout<3>;
+
+} // namespace revsph
