@@ -1,22 +1,24 @@
 #pragma once
-// The sums of SHTC-SPH that depend on the positions alone, in one pass over the pairs of a
-// HalfPairList (arrays indexed by slot):
+// The sums of SHTC-SPH that depend on the positions alone, one pair term for core's pair loop
+// (core/pair_sum.hpp; arrays indexed by slot):
 //   rho_a    = sum_b m_b w_ab + C_rho,a                  (paper 2 eq. 7, the sum includes b = a)
 //   lambda_a = sum_b m_b h dw_ab/dh + C_lambda,a         (eq. 40, the sum includes b = a)
 //   H_a      = sum_b m_b x_ab (x) grad w_ab              (eq. 21a), grad w_ab = w'/r x_ab (eq. 6)
 // and H_a^-1 (zero where H_a is singular: a particle with fewer than d independent neighbours has
 // no velocity gradient and no shear stress). The pair terms for (b, a) equal those for (a, b)
-// up to the mass factor (the tensor product of two odd vectors is even), so each is computed once.
-// Sums in double in the order the pair list fixes: the same bits for any thread count, and a
-// deterministic function of the positions — what the reversible step needs of them.
+// up to the mass factor (the tensor product of two odd vectors is even). Every sum is exact in
+// integers at SumScales::density: the same bits for any thread count and any cell size, a
+// deterministic function of the positions, which is what the reversible step needs of them.
 
-#include "core/geometry.hpp"
+#include "core/arithmetic.hpp"
 #include "core/kernel_wendland.hpp"
-#include "core/pair_list.hpp"
+#include "core/pair_sum.hpp"
+#include "core/slot_layout.hpp"
 
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -26,24 +28,60 @@ template <int D>
 using GradientMatrix = Eigen::Matrix<double, D, D>;
 
 template <int D>
+struct KernelSumsTerm {
+  static constexpr int width = 2 + D * D; // rho, lambda, H row by row
+  const WendlandQuintic<D>& kernel;
+  std::span<const double> mass;
+  std::span<const std::int64_t> density_constant; // raw at the density scale; empty: zero
+  std::span<const std::int64_t> lambda_constant;  // the same
+
+  void pair(const PairGeometry<D>& p, std::array<double, width>& to_a,
+            std::array<double, width>& to_b) const {
+    const double w = kernel.value(p.r);
+    const double scale_derivative = kernel.scale_derivative(p.r);
+    const double slope = kernel.derivative_over_r(p.r);
+    to_a[0] = mass[p.b] * w;
+    to_b[0] = mass[p.a] * w;
+    to_a[1] = mass[p.b] * scale_derivative;
+    to_b[1] = mass[p.a] * scale_derivative;
+    for (int i = 0; i < D; ++i) {
+      for (int j = 0; j < D; ++j) {
+        const double position_term = p.x_ab[i] * (slope * p.x_ab[j]);
+        to_a[2 + i * D + j] = mass[p.b] * position_term;
+        to_b[2 + i * D + j] = mass[p.a] * position_term;
+      }
+    }
+  }
+  template <class Add>
+  void self(std::uint32_t s, Add& add) const {
+    add(0, mass[s] * kernel.value(0.0));
+    add(1, mass[s] * kernel.scale_derivative(0.0));
+    if (!density_constant.empty()) {
+      add.raw(0, density_constant[s]);
+      add.raw(1, lambda_constant[s]);
+    }
+  }
+};
+
+template <int D>
 struct KernelSums {
+  explicit KernelSums(const fixedpoint::Scale& density_scale) : totals(quantities(density_scale)) {}
+
   std::vector<double> density;
   std::vector<double> lambda;
   std::vector<GradientMatrix<D>> h_matrix;
   std::vector<GradientMatrix<D>> h_inverse;
-};
+  PairSums<FixedArithmetic, 2 + D * D> totals;
 
-// x_ab = x_a - x_b and |x_ab|^2 (summed over the axes in order), for the pair loops.
-template <int D>
-double separation(const CoordinateView<D>& x, std::uint32_t a, std::uint32_t b,
-                  Eigen::Matrix<double, D, 1>& x_ab) {
-  double r_squared = 0.0;
-  for (int k = 0; k < D; ++k) {
-    x_ab(k) = x[k][a] - x[k][b];
-    r_squared += x_ab(k) * x_ab(k);
+private:
+  static std::array<SummedQuantity, 2 + D * D> quantities(const fixedpoint::Scale& scale) {
+    std::array<SummedQuantity, 2 + D * D> q{};
+    q.fill({"renormalisation_matrix", scale});
+    q[0] = {"density", scale};
+    q[1] = {"lambda", scale};
+    return q;
   }
-  return r_squared;
-}
+};
 
 // H^-1, or zero when H is singular relative to its own scale (too few neighbours, not a small
 // kernel).
@@ -57,45 +95,29 @@ GradientMatrix<D> renormalisation_inverse(const GradientMatrix<D>& h) {
   return h.inverse();
 }
 
+// The sums over the layout's pairs; the constants are raw at the density scale (empty: zero).
 template <int D>
-void compute_kernel_sums(const WendlandQuintic<D>& kernel, const CoordinateView<D>& x,
-                         std::span<const double> mass, std::span<const double> density_constant,
-                         std::span<const double> lambda_constant, const HalfPairList& pairs,
-                         KernelSums<D>& sums) {
-  const std::size_t n = mass.size();
+void compute_kernel_sums(const WendlandQuintic<D>& kernel, const SlotLayout<D>& layout,
+                         std::span<const double> mass,
+                         std::span<const std::int64_t> density_constant,
+                         std::span<const std::int64_t> lambda_constant, KernelSums<D>& sums) {
+  sum_pairs<FixedArithmetic>(
+      layout, KernelSumsTerm<D>{kernel, mass, density_constant, lambda_constant}, sums.totals);
+  const std::size_t n = layout.slot_count();
   sums.density.resize(n);
   sums.lambda.resize(n);
   sums.h_matrix.resize(n);
   sums.h_inverse.resize(n);
-  const double self_weight = kernel.value(0.0);
-  const double self_scale_derivative = kernel.scale_derivative(0.0);
 #pragma omp parallel for schedule(static)
-  for (std::size_t a = 0; a < n; ++a) {
-    sums.density[a] = mass[a] * self_weight;
-    sums.lambda[a] = mass[a] * self_scale_derivative;
-    sums.h_matrix[a].setZero();
-  }
-  pairs.for_each_slot([&](std::uint32_t a, std::span<const std::uint32_t> partners) {
-    for (const std::uint32_t b : partners) {
-      Eigen::Matrix<double, D, 1> x_ab;
-      const double r = std::sqrt(separation<D>(x, a, b, x_ab));
-      const double w = kernel.value(r);
-      const double scale_derivative = kernel.scale_derivative(r);
-      const GradientMatrix<D> position_term =
-          x_ab * (kernel.derivative_over_r(r) * x_ab).transpose();
-      sums.density[a] += mass[b] * w;
-      sums.density[b] += mass[a] * w;
-      sums.lambda[a] += mass[b] * scale_derivative;
-      sums.lambda[b] += mass[a] * scale_derivative;
-      sums.h_matrix[a] += mass[b] * position_term;
-      sums.h_matrix[b] += mass[a] * position_term;
+  for (std::size_t s = 0; s < n; ++s) {
+    sums.density[s] = sums.totals.value(0, s);
+    sums.lambda[s] = sums.totals.value(1, s);
+    for (int i = 0; i < D; ++i) {
+      for (int j = 0; j < D; ++j) {
+        sums.h_matrix[s](i, j) = sums.totals.value(2 + i * D + j, s);
+      }
     }
-  });
-#pragma omp parallel for schedule(static)
-  for (std::size_t a = 0; a < n; ++a) {
-    sums.density[a] += density_constant[a];
-    sums.lambda[a] += lambda_constant[a];
-    sums.h_inverse[a] = renormalisation_inverse<D>(sums.h_matrix[a]);
+    sums.h_inverse[s] = renormalisation_inverse<D>(sums.h_matrix[s]);
   }
 }
 

@@ -10,10 +10,13 @@
 // Adami, Hu & Adams, J. Comput. Phys. 2012, with Shepard's average in place of their fluid-side
 // extrapolation).
 //
-// Reversible: v_b is linear in the fluid's velocities and v_w (both odd under R), every term
-// and the quotient change sign exactly when they do, and the sums run in the pair list's order,
-// the same for any thread count. A boundary particle with no fluid within reach keeps v_w.
+// Reversible: v_b is linear in the fluid's velocities and v_w (both odd under R); the sums are
+// exact in integers (odd-symmetric rounding of odd terms), so they and the quotient change sign
+// exactly when the velocities do, for any thread count and cell size. A boundary particle with no
+// fluid within reach keeps v_w.
 
+#include "core/arithmetic.hpp"
+#include "core/pair_sum.hpp"
 #include "models/shtc/kernel_sums.hpp"
 
 #include <span>
@@ -21,37 +24,56 @@
 
 namespace revsph::shtc {
 
+// Quantity 0: sum_a m_a w_ab (the Shepard weight), 1..D: sum_a m_a w_ab v_a, for wall slots b.
+template <int D>
+struct MirrorTerm {
+  static constexpr int width = D + 1;
+  const WendlandQuintic<D>& kernel;
+  std::span<const double> mass;
+  std::span<const std::uint8_t> is_wall;
+  const CoordinateArrays<D>& velocity;
+
+  bool receives(std::uint32_t s) const { return is_wall[s] != 0; }
+  void pair(const PairGeometry<D>& p, std::array<double, D + 1>& to_a,
+            std::array<double, D + 1>& to_b) const {
+    to_a.fill(0.0);
+    to_b.fill(0.0);
+    if (is_wall[p.a] == is_wall[p.b]) {
+      return; // fluid-fluid or wall-wall
+    }
+    const std::uint32_t fluid = is_wall[p.a] ? p.b : p.a;
+    std::array<double, D + 1>& to_wall = is_wall[p.a] ? to_a : to_b;
+    const double weight = mass[fluid] * kernel.value(p.r);
+    to_wall[0] = weight;
+    for (int k = 0; k < D; ++k) {
+      to_wall[k + 1] = weight * velocity[k][fluid];
+    }
+  }
+};
+
+template <int D>
+PairSums<FixedArithmetic, D + 1> mirror_sums(const fixedpoint::Scale& weight_scale,
+                                             const fixedpoint::Scale& velocity_sum_scale) {
+  std::array<SummedQuantity, D + 1> q{};
+  q.fill({"mirrored_velocity", velocity_sum_scale});
+  q[0] = {"mirror_weight", weight_scale};
+  return PairSums<FixedArithmetic, D + 1>(q);
+}
+
 // `velocity` (by slot) holds the fluid's velocities and, for wall slots, v_w; on return the
 // wall slots hold the mirrored velocities. is_wall[s]: whether slot s is a boundary particle.
 template <int D>
-void mirror_wall_velocities(const WendlandQuintic<D>& kernel, const CoordinateView<D>& x,
+void mirror_wall_velocities(const WendlandQuintic<D>& kernel, const SlotLayout<D>& layout,
                             std::span<const double> mass, std::span<const std::uint8_t> is_wall,
-                            const HalfPairList& pairs, CoordinateArrays<D>& velocity,
-                            std::vector<Vec<D>>& fluid_sum, std::vector<double>& weight_sum) {
-  const std::size_t n = mass.size();
-  fluid_sum.assign(n, Vec<D>{});
-  weight_sum.assign(n, 0.0);
-  pairs.for_each_slot([&](std::uint32_t a, std::span<const std::uint32_t> partners) {
-    for (const std::uint32_t b : partners) {
-      if (is_wall[a] == is_wall[b]) {
-        continue; // fluid-fluid or wall-wall
-      }
-      Eigen::Matrix<double, D, 1> x_ab;
-      const double w = kernel.value(std::sqrt(separation<D>(x, a, b, x_ab)));
-      const std::uint32_t wall = is_wall[a] ? a : b;
-      const std::uint32_t fluid = is_wall[a] ? b : a;
-      const double weight = mass[fluid] * w;
-      weight_sum[wall] += weight;
-      for (int k = 0; k < D; ++k) {
-        fluid_sum[wall][k] += weight * velocity[k][fluid];
-      }
-    }
-  });
+                            CoordinateArrays<D>& velocity, PairSums<FixedArithmetic, D + 1>& sums) {
+  sum_pairs<FixedArithmetic>(layout, MirrorTerm<D>{kernel, mass, is_wall, velocity}, sums);
+  const std::size_t n = layout.slot_count();
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < n; ++s) {
-    if (is_wall[s] && weight_sum[s] > 0.0) {
+    const double weight = sums.value(0, s);
+    if (is_wall[s] && weight > 0.0) {
       for (int k = 0; k < D; ++k) {
-        velocity[k][s] = 2.0 * velocity[k][s] - fluid_sum[s][k] / weight_sum[s];
+        velocity[k][s] = 2.0 * velocity[k][s] - sums.value(k + 1, s) / weight;
       }
     }
   }

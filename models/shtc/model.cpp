@@ -1,6 +1,5 @@
 #include "models/shtc/model.hpp"
 
-#include "core/cell_order.hpp"
 #include "core/verlet.hpp"
 #include "models/shtc/elastic_energy.hpp"
 #include "models/shtc/forces.hpp"
@@ -16,11 +15,6 @@ namespace revsph::shtc {
 
 namespace {
 
-// At most a few cells per particle, so a large empty domain cannot exhaust memory.
-std::size_t cell_budget(std::size_t particles) {
-  return 4 * particles + 4096;
-}
-
 constexpr int mass_fraction_bits = 52; // masses are constants; their double view stays exact
 
 } // namespace
@@ -30,9 +24,16 @@ Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state,
                 std::optional<std::size_t> probe_particle)
     : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
       probe_particle_(probe_particle), kernel_(parameters_.support_radius()),
-      carrier_cells_(parameters_.domain,
-                     parameters_.support_radius() * parameters_.cell_size_factor,
-                     cell_budget(state_.position.count() + state_.boundary_position.count())) {}
+      sum_scales_(sum_scales(parameters_.density_scale, parameters_.material.rest_density,
+                             parameters_.material.sound_speed, parameters_.penalty_speed,
+                             parameters_.support_radius())),
+      layout_(
+          parameters_.domain, parameters_.support_radius() * parameters_.cell_size_factor,
+          {{"material", state_.position.count()}, {"boundary", state_.boundary_position.count()}}),
+      sums_(sum_scales_.density),
+      acceleration_sums_(acceleration_sums<D>(sum_scales_.acceleration)),
+      gradients_(sum_scales_.velocity_sum),
+      mirror_sums_(mirror_sums<D>(sum_scales_.density, sum_scales_.mirror_velocity_sum)) {}
 
 template <int D>
 std::span<const Substep<Model<D>>> Model<D>::palindrome() {
@@ -98,26 +99,29 @@ Vec<D> Model<D>::wall_velocity_now(std::size_t i) const {
 template <int D>
 void Model<D>::initialise_constants() {
   const std::size_t n = carrier_count();
-  // Unit masses and no constants: the density sums are then sum_b w_ab.
-  mass_.assign(n, 1.0);
-  density_constant_.assign(n, 0.0);
-  lambda_constant_.assign(n, 0.0);
+  // Equal trial masses m0 and no constants: the density sums are then m0 sum_b w_ab, and
+  // m_a = rho0 V_a = rho0 m0 / that. m0 = rho0 / w(0) keeps the trial sums near rho0 (a few times
+  // it, as many as there are neighbours), within the density scale's range.
+  const double trial_mass = parameters_.material.rest_density / kernel_.value(0.0);
+  mass_.assign(n, trial_mass);
+  for (ParticleSetState<D>* set : {&state_.material, &state_.boundary}) {
+    set->density_constant.info().scale = parameters_.density_scale;
+    set->lambda_constant.info().scale = parameters_.density_scale;
+    std::fill(set->density_constant.all().begin(), set->density_constant.all().end(), 0);
+    std::fill(set->lambda_constant.all().begin(), set->lambda_constant.all().end(), 0);
+  }
   constants_valid_ = true;
   geometry_valid_ = false;
   update_geometry();
-  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
   std::vector<double> mass(n);
   for (std::size_t s = 0; s < n; ++s) {
-    mass[carrier_of_slot[s]] = parameters_.material.rest_density / sums_.density[s];
+    mass[carrier_of_slot[s]] = parameters_.material.rest_density * trial_mass / sums_.density[s];
   }
   const double largest = *std::max_element(mass.begin(), mass.end());
   const fixedpoint::Scale mass_scale = fixedpoint::Scale::covering(largest, mass_fraction_bits);
   for (ParticleSetState<D>* set : {&state_.material, &state_.boundary}) {
     set->mass.info().scale = mass_scale;
-    set->density_constant.info().scale = parameters_.density_scale;
-    set->lambda_constant.info().scale = parameters_.density_scale;
-    std::fill(set->density_constant.all().begin(), set->density_constant.all().end(), 0);
-    std::fill(set->lambda_constant.all().begin(), set->lambda_constant.all().end(), 0);
   }
   for (std::size_t a = 0; a < n; ++a) {
     fixedpoint::try_to_fixed(mass[a], mass_scale, set_of(a).mass.at(0, index_in_set(a)));
@@ -164,7 +168,7 @@ void Model<D>::drift(double dt) {
 template <int D>
 void Model<D>::update_carrier_velocities() {
   update_geometry();
-  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
   const std::size_t n = carrier_count();
   const std::size_t material = material_count();
   const auto& v_scale = state_.velocity.info().scale;
@@ -184,16 +188,15 @@ void Model<D>::update_carrier_velocities() {
   }
   if (parameters_.mirrored_walls) {
     slot_mirrored_velocity_ = slot_velocity_;
-    mirror_wall_velocities<D>(kernel_, view_of<D>(slot_position_), slot_mass_, slot_is_wall_,
-                              carrier_pairs_, slot_mirrored_velocity_, wall_fluid_sum_,
-                              wall_weight_sum_);
+    mirror_wall_velocities<D>(kernel_, layout_, slot_mass_, slot_is_wall_, slot_mirrored_velocity_,
+                              mirror_sums_);
   }
 }
 
 template <int D>
 void Model<D>::update_distortion(double dt) {
   update_carrier_velocities();
-  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
   const std::size_t n = carrier_count();
   const bool driven = walls_work();
   if (driven) {
@@ -207,15 +210,14 @@ void Model<D>::update_distortion(double dt) {
       parameters_.mirrored_walls
           ? SeenVelocities<D>{view_of<D>(slot_mirrored_velocity_), velocity, slot_is_wall_}
           : SeenVelocities<D>{velocity, velocity, {}};
-  velocity_gradients<D>(kernel_, view_of<D>(slot_position_), seen, slot_mass_, carrier_pairs_,
-                        sums_.h_inverse, velocity_sum_, velocity_gradient_);
+  velocity_gradients<D>(kernel_, layout_, seen, slot_mass_, sums_.h_inverse, gradients_);
   FaultRecorder faults;
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < n; ++s) {
     const std::uint32_t a = carrier_of_slot[s];
     ExactDistortion<D> distortion = distortion_of(a);
     // dt L is odd in v bit for bit: the update with -dt L undoes this one exactly.
-    const Matrix<D> step = dt * velocity_gradient_[s];
+    const Matrix<D> step = dt * gradients_.gradient[s];
     const DistortionScales& scales = parameters_.distortion_scales;
     const bool updated =
         parameters_.cayley_distortion_update
@@ -291,19 +293,7 @@ void Model<D>::update_constants() {
   if (constants_valid_) {
     return;
   }
-  const std::size_t n = carrier_count();
-  mass_.resize(n);
-  density_constant_.resize(n);
-  lambda_constant_.resize(n);
-  for (std::size_t a = 0; a < n; ++a) {
-    const ParticleSetState<D>& set = set_of(a);
-    const std::size_t i = index_in_set(a);
-    mass_[a] = fixedpoint::to_real(set.mass.at(0, i), set.mass.info().scale);
-    density_constant_[a] =
-        fixedpoint::to_real(set.density_constant.at(0, i), set.density_constant.info().scale);
-    lambda_constant_[a] =
-        fixedpoint::to_real(set.lambda_constant.at(0, i), set.lambda_constant.info().scale);
-  }
+  mass_ = CarrierField<FixedArithmetic>{&state_.material.mass, &state_.boundary.mass}.reals();
   // Mirrored walls pretend velocities even at rest, and do work.
   walls_work_ = any_wall_moves(state_) ||
                 (parameters_.mirrored_walls && state_.boundary_position.count() > 0);
@@ -317,34 +307,27 @@ void Model<D>::update_geometry() {
   }
   update_constants();
   const std::size_t n = carrier_count();
-  sort_into_cells<D>(
-      carrier_cells_, n, [&](int axis, std::size_t a) { return real_position(axis, a); },
-      [&](std::size_t a) {
-        return std::pair{set_name(a), index_in_set(a)};
-      },
-      slot_position_);
-  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
-  slot_mass_.resize(n);
-  slot_density_constant_.resize(n);
-  slot_lambda_constant_.resize(n);
-#pragma omp parallel for schedule(static)
-  for (std::size_t s = 0; s < n; ++s) {
-    const std::uint32_t a = carrier_of_slot[s];
-    slot_mass_[s] = mass_[a];
-    slot_density_constant_[s] = density_constant_[a];
-    slot_lambda_constant_[s] = lambda_constant_[a];
-  }
-  const CoordinateView<D> x = view_of<D>(slot_position_);
-  carrier_pairs_.build<D>(carrier_cells_, x, parameters_.support_radius());
-  compute_kernel_sums<D>(kernel_, x, slot_mass_, slot_density_constant_, slot_lambda_constant_,
-                         carrier_pairs_, sums_);
+  const CarrierField<FixedArithmetic> position = carrier_position();
+  layout_.build([&](int axis, std::size_t a) { return position.real(axis, a); },
+                parameters_.support_radius());
+  layout_.gather(std::span<const double>(mass_), slot_mass_);
+  const std::vector<std::int64_t> density_constant =
+      CarrierField<FixedArithmetic>{&state_.material.density_constant,
+                                    &state_.boundary.density_constant}
+          .raws();
+  const std::vector<std::int64_t> lambda_constant =
+      CarrierField<FixedArithmetic>{&state_.material.lambda_constant,
+                                    &state_.boundary.lambda_constant}
+          .raws();
+  layout_.gather(std::span<const std::int64_t>(density_constant), slot_density_constant_);
+  layout_.gather(std::span<const std::int64_t>(lambda_constant), slot_lambda_constant_);
+  compute_kernel_sums<D>(kernel_, layout_, slot_mass_, slot_density_constant_,
+                         slot_lambda_constant_, sums_);
   FaultRecorder faults;
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < n; ++s) {
-    if (!(sums_.density[s] > 0.0) || !std::isfinite(sums_.density[s]) ||
-        !std::isfinite(sums_.lambda[s])) {
-      const std::uint32_t a = carrier_of_slot[s];
-      faults.record(index_in_set(a), set_name(a), "density", "density non-finite or not positive");
+    if (!(sums_.density[s] > 0.0)) {
+      layout_.record_fault(faults, s, "density", "density not positive");
     }
   }
   faults.throw_if_any();
@@ -357,7 +340,7 @@ void Model<D>::update_force() {
     return;
   }
   update_geometry();
-  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
   const std::size_t n = carrier_count();
   slot_distortion_.resize(n);
   slot_stress_.resize(n);
@@ -369,9 +352,8 @@ void Model<D>::update_force() {
                                 sums_.h_inverse[s]); // eq. (21b)
   }
   const PenaltyParameters penalty{parameters_.penalty_speed, parameters_.material.rest_density};
-  compute_acceleration<D>(kernel_, penalty_strength(penalty), view_of<D>(slot_position_),
-                          slot_mass_, slot_stress_, sums_.lambda, carrier_pairs_,
-                          slot_acceleration_);
+  compute_acceleration<D>(kernel_, penalty_strength(penalty), layout_, slot_mass_, slot_stress_,
+                          sums_.lambda, acceleration_sums_, slot_acceleration_);
   const std::size_t material = material_count();
   FaultRecorder faults;
   for (int k = 0; k < D; ++k) {
@@ -403,7 +385,7 @@ const CoordinateArrays<D>& Model<D>::acceleration() {
 template <int D>
 typename Model<D>::CarrierValues Model<D>::carrier_values() {
   update_force();
-  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
   const std::size_t n = carrier_count();
   CarrierValues values{std::vector<double>(n), std::vector<double>(n), std::vector<Matrix<D>>(n)};
   for (std::size_t s = 0; s < n; ++s) {
@@ -511,7 +493,7 @@ void Model<D>::derived_views(const ViewSink& sink) {
     if (range.first != 0 && walls_work()) {
       update_carrier_velocities();
       const CoordinateArrays<D>& seen = slot_velocity_seen();
-      const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+      const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
       std::vector<double> wall(count * D);
       for (std::size_t s = 0; s < carrier_of_slot.size(); ++s) {
         const std::size_t a = carrier_of_slot[s];
@@ -545,7 +527,7 @@ void Model<D>::derived_views(const ViewSink& sink) {
 template <int D>
 void Model<D>::shear_accelerations(CoordinateArrays<D>& acceleration, StressOf carriers) {
   update_geometry();
-  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
   const std::size_t n = carrier_count();
   const std::size_t material = material_count();
   slot_shear_stress_.resize(n);
@@ -561,8 +543,8 @@ void Model<D>::shear_accelerations(CoordinateArrays<D>& acceleration, StressOf c
     const Matrix<D> distortion = to_matrix<D>(distortion_of(a), parameters_.distortion_scales);
     slot_shear_stress_[s] = shear_stress<D>(parameters_.material, distortion, sums_.h_inverse[s]);
   }
-  compute_acceleration<D>(kernel_, 0.0, view_of<D>(slot_position_), slot_mass_, slot_shear_stress_,
-                          sums_.lambda, carrier_pairs_, acceleration);
+  compute_acceleration<D>(kernel_, 0.0, layout_, slot_mass_, slot_shear_stress_, sums_.lambda,
+                          acceleration_sums_, acceleration);
 }
 
 template <int D>
@@ -580,7 +562,7 @@ double Model<D>::wall_power() {
   update_carrier_velocities();
   WallForces forces;
   wall_forces(forces);
-  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
   const std::size_t material = material_count();
   std::vector<double> power(carrier_count() - material, 0.0);
   for (std::size_t s = 0; s < carrier_count(); ++s) {
@@ -608,7 +590,7 @@ double Model<D>::wall_power() {
 
 template <int D>
 bool Model<D>::add_wall_work(double dt) {
-  const std::span<const std::uint32_t> carrier_of_slot = carrier_cells_.sorted_points();
+  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
   const std::size_t material = material_count();
   bool fits = true;
   for (std::size_t s = 0; s < carrier_count(); ++s) {

@@ -16,16 +16,19 @@
 // velocity; state.hpp), together the carriers. The neighbour loops run over the carriers in cell order (slots); the state and every
 // output stay in canonical order.
 
-#include "core/cell_list.hpp"
+#include "core/carrier_field.hpp"
 #include "core/energy.hpp"
 #include "core/kernel_wendland.hpp"
-#include "core/pair_list.hpp"
+#include "core/pair_sum.hpp"
 #include "core/particle_view.hpp"
 #include "core/simulation.hpp"
+#include "core/slot_layout.hpp"
 #include "core/step_composition.hpp"
 #include "models/shtc/kernel_sums.hpp"
 #include "models/shtc/parameters.hpp"
 #include "models/shtc/state.hpp"
+#include "models/shtc/sum_scales.hpp"
+#include "models/shtc/velocity_gradient.hpp"
 
 #include <optional>
 #include <span>
@@ -94,6 +97,10 @@ private:
   };
 
   double real_position(int axis, std::size_t a) const;
+  // The carriers' positions (material, then boundary).
+  CarrierField<FixedArithmetic> carrier_position() const {
+    return {&state_.position, &state_.boundary_position};
+  }
   ParticleSetState<D>& set_of(std::size_t a) {
     return a < material_count() ? state_.material : state_.boundary;
   }
@@ -152,29 +159,30 @@ private:
   std::optional<std::size_t> probe_particle_;
   WendlandQuintic<D> kernel_;
 
+  SumScales sum_scales_;
+
   bool constants_valid_ = false;
-  std::vector<double> mass_, density_constant_, lambda_constant_; // carriers
+  std::vector<double> mass_; // carriers
   bool walls_work_ = false;
   // Derived from the positions.
   bool geometry_valid_ = false;
-  CellList<D> carrier_cells_; // its sorted_points() maps a slot to its carrier
-  CoordinateArrays<D> slot_position_;
-  std::vector<double> slot_mass_, slot_density_constant_, slot_lambda_constant_;
-  HalfPairList carrier_pairs_;
+  SlotLayout<D> layout_; // carriers: material, then boundary particles
+  std::vector<double> slot_mass_;
+  std::vector<std::int64_t> slot_density_constant_, slot_lambda_constant_;
   KernelSums<D> sums_; // slots
   // Derived from the positions and the distortions.
   bool force_valid_ = false;
   std::vector<GradientMatrix<D>> slot_distortion_;
   std::vector<GradientMatrix<D>> slot_stress_;
+  PairSums<FixedArithmetic, D> acceleration_sums_;
   CoordinateArrays<D> slot_acceleration_;
   CoordinateArrays<D> acceleration_; // material, canonical order
   // Scratch of the distortion sub-step.
   CoordinateArrays<D> slot_velocity_;
-  std::vector<GradientMatrix<D>> velocity_sum_, velocity_gradient_;
+  VelocityGradients<D> gradients_;
   std::vector<std::uint8_t> slot_is_wall_;
   CoordinateArrays<D> slot_mirrored_velocity_; // walls: 2 v_w - the fluid's (mirrored walls)
-  std::vector<Vec<D>> wall_fluid_sum_;
-  std::vector<double> wall_weight_sum_;
+  PairSums<FixedArithmetic, D + 1> mirror_sums_;
   std::vector<GradientMatrix<D>> slot_shear_stress_;
   WallForces wall_force_before_, wall_force_after_;
 };

@@ -1,10 +1,14 @@
 #pragma once
-// A small disordered particle cloud in cell order with its half pair list, for tests of pair
-// loops: a jittered square (2D) or cubic (3D) lattice of spacing 0.1 with unequal masses.
+// Small disordered particle clouds for tests of pair loops (a jittered square or cubic lattice of
+// spacing 0.1 with unequal masses), the slot layout over them, and conversions between the
+// points' order and the layout's slot order.
 
 #include "core/cell_list.hpp"
 #include "core/geometry.hpp"
 #include "core/pair_list.hpp"
+#include "core/slot_layout.hpp"
+
+#include <algorithm>
 
 #include <cstdint>
 #include <random>
@@ -26,26 +30,19 @@ CoordinateArrays<D> in_cell_order(const CellList<D>& cells, const CoordinateArra
 
 template <int D>
 struct Cloud {
-  CellList<D> cells;
-  CoordinateArrays<D> x; // slot order
+  CoordinateArrays<D> x;
   std::vector<double> mass;
-  HalfPairList pairs;
   double support = 0.0;
 };
 
-// A jittered square (2D) or cubic (3D) lattice of spacing dr, in cell order with its pair list.
+// A jittered square (2D) or cubic (3D) lattice of spacing dr with unequal masses.
 template <int D>
 Cloud<D> jittered_lattice(int per_axis, std::uint64_t seed) {
   const double dr = 0.1;
   const double support = 3.0 * dr;
-  Box<D> box;
-  for (int k = 0; k < D; ++k) {
-    box.min[k] = -dr;
-    box.max[k] = (per_axis + 1) * dr;
-  }
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> jitter(-0.2 * dr, 0.2 * dr);
-  CoordinateArrays<D> points;
+  Cloud<D> cloud{{}, {}, support};
   int total = 1;
   for (int k = 0; k < D; ++k) {
     total *= per_axis;
@@ -53,32 +50,65 @@ Cloud<D> jittered_lattice(int per_axis, std::uint64_t seed) {
   for (int i = 0; i < total; ++i) {
     int rest = i;
     for (int k = 0; k < D; ++k) {
-      points[k].push_back((rest % per_axis) * dr + jitter(rng));
+      cloud.x[k].push_back((rest % per_axis) * dr + jitter(rng));
       rest /= per_axis;
     }
   }
-  Cloud<D> cloud{CellList<D>(box, support, 1 << 20), {}, {}, {}, support};
-  cloud.cells.build(view_of<D>(points));
-  cloud.x = in_cell_order<D>(cloud.cells, points);
   std::uniform_real_distribution<double> mass(0.8, 1.2); // unequal masses: a and b differ
   for (int i = 0; i < total; ++i) {
     cloud.mass.push_back(mass(rng));
   }
-  cloud.pairs.template build<D>(cloud.cells, view_of<D>(cloud.x), support);
   return cloud;
 }
 
 // Two points at (1, 1) and (8, 8), unit masses, kernel support 1: out of each other's reach.
 inline Cloud<2> two_isolated_points() {
-  const double support = 1.0;
-  Cloud<2> cloud{CellList<2>(Box<2>{{0.0, 0.0}, {10.0, 10.0}}, support, 1000),
-                 CoordinateArrays<2>{std::vector<double>{1.0, 8.0}, std::vector<double>{1.0, 8.0}},
-                 {1.0, 1.0},
-                 {},
-                 support};
-  cloud.cells.build(view_of<2>(cloud.x));
-  cloud.pairs.build<2>(cloud.cells, view_of<2>(cloud.x), support);
-  return cloud;
+  return {CoordinateArrays<2>{std::vector<double>{1.0, 8.0}, std::vector<double>{1.0, 8.0}},
+          {1.0, 1.0},
+          1.0};
+}
+
+// A slot layout (one particle set, "cloud") over points, with the pairs closer than `support`.
+template <int D>
+SlotLayout<D> layout_over(const CoordinateArrays<D>& x, double support) {
+  Box<D> box;
+  for (int k = 0; k < D; ++k) {
+    box.min[k] = *std::min_element(x[k].begin(), x[k].end()) - support;
+    box.max[k] = *std::max_element(x[k].begin(), x[k].end()) + support;
+  }
+  SlotLayout<D> layout(box, support, {{"cloud", x[0].size()}});
+  layout.build([&](int axis, std::size_t i) { return x[axis][i]; }, support);
+  return layout;
+}
+
+// Per-point values into the layout's slot order, and back.
+template <int D, class T>
+std::vector<T> to_slots(const SlotLayout<D>& layout, const std::vector<T>& by_point) {
+  std::vector<T> by_slot;
+  layout.gather(std::span<const T>(by_point), by_slot);
+  return by_slot;
+}
+template <int D, class T>
+std::vector<T> to_points(const SlotLayout<D>& layout, const std::vector<T>& by_slot) {
+  std::vector<T> by_point;
+  layout.scatter(std::span<const T>(by_slot), by_point);
+  return by_point;
+}
+template <int D>
+CoordinateArrays<D> to_slots(const SlotLayout<D>& layout, const CoordinateArrays<D>& by_point) {
+  CoordinateArrays<D> by_slot;
+  for (int k = 0; k < D; ++k) {
+    by_slot[k] = to_slots<D>(layout, by_point[k]);
+  }
+  return by_slot;
+}
+template <int D>
+CoordinateArrays<D> to_points(const SlotLayout<D>& layout, const CoordinateArrays<D>& by_slot) {
+  CoordinateArrays<D> by_point;
+  for (int k = 0; k < D; ++k) {
+    by_point[k] = to_points<D>(layout, by_slot[k]);
+  }
+  return by_point;
 }
 
 } // namespace revsph::testing

@@ -39,8 +39,7 @@ template <int D>
 double internal_energy(const Problem<D>& p, const CoordinateArrays<D>& x,
                        const std::vector<GradientMatrix<D>>& a) {
   const revsph::WendlandQuintic<D> kernel(p.cloud.support);
-  const auto sums =
-      revsph::testing::kernel_sums_of<D>(kernel, x, p.cloud.mass, p.cloud.pairs, p.lambda_constant);
+  const auto sums = revsph::testing::kernel_sums_of<D>(kernel, x, p.cloud.mass, p.lambda_constant);
   double energy = revsph::shtc::penalty_energy<D>(p.penalty, p.cloud.mass, sums.lambda);
   for (std::size_t i = 0; i < p.cloud.mass.size(); ++i) {
     energy += p.cloud.mass[i] * (revsph::shtc::bulk_energy(p.material, sums.density[i]) +
@@ -81,25 +80,24 @@ TYPED_TEST(ShtcForce, IsMinusTheEnergyRateAlongTheDistortionFlow) {
       }
     }
 
-    const auto sums = revsph::testing::kernel_sums_of<D>(kernel, p.cloud.x, p.cloud.mass,
-                                                         p.cloud.pairs, p.lambda_constant);
+    const auto sums =
+        revsph::testing::kernel_sums_of<D>(kernel, p.cloud.x, p.cloud.mass, p.lambda_constant);
     std::vector<GradientMatrix<D>> stress(n);
     for (std::size_t i = 0; i < n; ++i) {
       stress[i] =
           revsph::shtc::stress<D>(p.material, sums.density[i], p.distortion[i], sums.h_inverse[i]);
     }
-    CoordinateArrays<D> acceleration;
-    revsph::shtc::compute_acceleration<D>(kernel, revsph::shtc::penalty_strength(p.penalty),
-                                          revsph::view_of<D>(p.cloud.x), p.cloud.mass, stress,
-                                          sums.lambda, p.cloud.pairs, acceleration);
+    const CoordinateArrays<D> acceleration =
+        revsph::testing::acceleration_of<D>(kernel, revsph::shtc::penalty_strength(p.penalty),
+                                            p.cloud.x, p.cloud.mass, stress, sums.lambda);
     double power = 0.0; // sum_a m_a a_a . v_a
     for (std::size_t i = 0; i < n; ++i) {
       for (int k = 0; k < D; ++k) {
         power += p.cloud.mass[i] * acceleration[k][i] * v[k][i];
       }
     }
-    const auto gradient = revsph::testing::velocity_gradients_of<D>(kernel, p.cloud.x, v,
-                                                                    p.cloud.mass, p.cloud.pairs);
+    const auto gradient =
+        revsph::testing::velocity_gradients_of<D>(kernel, p.cloud.x, v, p.cloud.mass);
     auto moved = [&](double e) {
       CoordinateArrays<D> x = p.cloud.x;
       std::vector<GradientMatrix<D>> a(n);

@@ -55,7 +55,7 @@ TYPED_TEST(ShtcTensilePenalty, AccelerationIsMinusTheEnergyGradient) {
   }
 
   const revsph::shtc::KernelSums<D> sums =
-      revsph::testing::kernel_sums_of<D>(kernel, cloud.x, cloud.mass, cloud.pairs, constant);
+      revsph::testing::kernel_sums_of<D>(kernel, cloud.x, cloud.mass, constant);
   const std::vector<double>& lambda = sums.lambda;
   const std::vector<double> expected_lambda =
       all_pairs_lambda<D>(kernel, cloud.x, cloud.mass, constant);
@@ -67,10 +67,8 @@ TYPED_TEST(ShtcTensilePenalty, AccelerationIsMinusTheEnergyGradient) {
   // The force loop with zero stress leaves the penalty acceleration alone.
   const std::vector<revsph::shtc::GradientMatrix<D>> no_stress(
       n, revsph::shtc::GradientMatrix<D>::Zero());
-  CoordinateArrays<D> acceleration;
-  revsph::shtc::compute_acceleration<D>(kernel, revsph::shtc::penalty_strength(parameters),
-                                        revsph::view_of<D>(cloud.x), cloud.mass, no_stress, lambda,
-                                        cloud.pairs, acceleration);
+  const CoordinateArrays<D> acceleration = revsph::testing::acceleration_of<D>(
+      kernel, revsph::shtc::penalty_strength(parameters), cloud.x, cloud.mass, no_stress, lambda);
 
   auto energy_at = [&](const CoordinateArrays<D>& x) {
     return revsph::shtc::penalty_energy<D>(parameters, cloud.mass,

@@ -44,7 +44,7 @@ CoordinateArrays<D> linear_velocity(const Cloud<D>& cloud, const GradientMatrix<
 template <int D>
 std::vector<GradientMatrix<D>> gradients_of(const Cloud<D>& cloud, const CoordinateArrays<D>& v) {
   const revsph::WendlandQuintic<D> kernel(cloud.support);
-  return revsph::testing::velocity_gradients_of<D>(kernel, cloud.x, v, cloud.mass, cloud.pairs);
+  return revsph::testing::velocity_gradients_of<D>(kernel, cloud.x, v, cloud.mass);
 }
 
 // Random velocities at the points of a cloud.
@@ -127,7 +127,7 @@ TEST(ShtcVelocityGradientSetup, IsZeroForAnIsolatedParticle) {
   const Cloud<2> cloud = revsph::testing::two_isolated_points();
   const revsph::WendlandQuintic<2> kernel(cloud.support);
   const auto gradient =
-      revsph::testing::velocity_gradients_of<2>(kernel, cloud.x, cloud.x, cloud.mass, cloud.pairs);
+      revsph::testing::velocity_gradients_of<2>(kernel, cloud.x, cloud.x, cloud.mass);
   EXPECT_EQ(gradient[0], GradientMatrix<2>::Zero());
   EXPECT_EQ(gradient[1], GradientMatrix<2>::Zero());
 }
