@@ -6,6 +6,7 @@
 #include "core/arithmetic.hpp"
 #include "core/energy.hpp"
 #include "core/fault.hpp"
+#include "core/particle_sets.hpp"
 #include "core/particle_view.hpp"
 #include "core/state_snapshot.hpp"
 #include "core/step_composition.hpp"
@@ -20,11 +21,8 @@
 
 namespace revsph {
 
-struct ParticleCount {
-  std::string particle_set;
-  std::size_t count = 0;
-  bool moving = true;
-};
+// A particle set's name, size and motion (core/particle_sets.hpp).
+using ParticleCount = SetSize;
 
 struct SimulationInfo {
   std::string case_name;
@@ -32,9 +30,11 @@ struct SimulationInfo {
   int dimension = 2;
   Arithmetic arithmetic = Arithmetic::fixed;
   double dt = 0.0;
+  // Filled by ModelSimulation from the state's particle sets.
   std::vector<ParticleCount> particles;
-  // Dissipative operations outside the reversible step (an active filter, say): with any of
-  // them the case cannot return bit for bit, and the verifier says so.
+  // The sub-steps and hooks that act irreversibly in this case ("name: what"), filled by
+  // ModelSimulation from their declarations (core/step_composition.hpp): with any of them the
+  // case cannot return bit for bit, and the verifier says so.
   std::vector<std::string> irreversible_terms;
   // What the setup computed that a reader of the output should be able to see and repeat
   // (e.g. the initial state correction's seed, iterations and residual), as name-value pairs.
@@ -74,11 +74,20 @@ concept HasDiagnostics = requires(M& model) {
   { model.diagnostics() } -> std::same_as<std::vector<EnergyTerm>>;
 };
 
-// Optional: an irreversible operation after each full step (listed in irreversible_terms).
+// Optional: operations after each full step, outside the palindrome (core/step_composition.hpp).
 template <class M>
-concept HasIrreversibleStep = requires(M& model, std::int64_t step) {
-  model.after_step(step);
+concept HasStepHooks = requires {
+  { M::step_hooks() } -> std::convertible_to<std::span<const StepHook<M>>>;
 };
+
+template <class M>
+std::span<const StepHook<M>> step_hooks_of() {
+  if constexpr (HasStepHooks<M>) {
+    return M::step_hooks();
+  } else {
+    return {};
+  }
+}
 
 class Simulation {
 public:
@@ -113,19 +122,23 @@ protected:
 template <Model M>
 class ModelSimulation final : public Simulation {
 public:
-  explicit ModelSimulation(M model) : model_(std::move(model)) {
+  // Checks the declarations: a palindromic step, every state field in a set with a scale.
+  explicit ModelSimulation(M model) : model_(std::move(model)), info_(model_.info()) {
     require_palindrome<M>(M::palindrome());
+    require_complete(model_.state());
+    info_.particles = set_sizes(model_.state());
+    info_.irreversible_terms = irreversible_terms<M>(model_, M::palindrome(), step_hooks_of<M>());
   }
 
-  const SimulationInfo& info() const override { return model_.info(); }
+  const SimulationInfo& info() const override { return info_; }
 
   void advance(std::int64_t steps) override {
     const double dt = model_.info().dt;
     for (std::int64_t s = 0; s < steps; ++s) {
       try {
         apply_step<M>(model_, M::palindrome(), dt);
-        if constexpr (HasIrreversibleStep<M>) {
-          model_.after_step(steps_taken_ + 1);
+        for (const StepHook<M>& hook : step_hooks_of<M>()) {
+          hook.apply(model_, steps_taken_ + 1);
         }
       } catch (const SimulationFault& fault) {
         throw SimulationFault(fault.fault(), steps_taken_ + 1);
@@ -183,6 +196,7 @@ private:
   }
 
   M model_;
+  SimulationInfo info_;
 };
 
 } // namespace revsph

@@ -1,10 +1,10 @@
 #pragma once
 // The one declaration of a state variable (name, unit, parity, scale) and its storage.
 //
-// A model's state is a struct of StateField members plus a for_each_field() that visits them in a
-// fixed order. That single declaration drives the time reversal (odd fields are negated), the
-// state hash, the bitwise comparison of the verifier and the snapshots: no code is written per
-// model for those.
+// A model's state is a struct of particle sets, each a struct of StateField members
+// (core/particle_sets.hpp). That single declaration drives the time reversal (odd fields are
+// negated), the state hash, the bitwise comparison of the verifier and the snapshots: no code is
+// written per model for those.
 
 #include "fixedpoint/scale.hpp"
 
@@ -21,6 +21,9 @@ namespace revsph {
 // Behaviour under time reversal R: odd variables (velocities, fluxes) change sign.
 enum class Parity { even, odd };
 
+// Declared with designated initialisers: {.name = "velocity", .unit = "m/s", .parity =
+// Parity::odd, .components = D}. The set's name is stamped by declare_state, the scale by the
+// setup (set_scale); a field without one is an error before the first step (require_complete).
 struct VariableInfo {
   std::string particle_set; // "fluid", "wall", … (a model may have several species)
   std::string name;         // "velocity"
@@ -41,7 +44,12 @@ public:
   explicit StateField(VariableInfo info) : info_(std::move(info)) {}
 
   const VariableInfo& info() const { return info_; }
-  VariableInfo& info() { return info_; }
+  void set_scale(const fixedpoint::Scale& scale) {
+    info_.scale = scale;
+    has_scale_ = true;
+  }
+  bool has_scale() const { return has_scale_; }
+  void set_particle_set(std::string name) { info_.particle_set = std::move(name); }
   std::size_t count() const { return count_; }
   int components() const { return info_.components; }
 
@@ -67,6 +75,7 @@ public:
 
 private:
   VariableInfo info_;
+  bool has_scale_ = false;
   std::size_t count_ = 0;
   std::vector<Raw> values_;
 };

@@ -2,9 +2,10 @@
 // A model-independent copy of a state: every declared field with its raw bits.
 //
 // Fixed-point fields are stored as their int64 values; double fields (FloPA) as their IEEE bit
-// patterns. Capture, restore and the time reversal are generic over any state struct that
-// declares its fields through for_each_field().
+// patterns. Capture, restore and the time reversal are generic over any declared state
+// (core/particle_sets.hpp).
 
+#include "core/particle_sets.hpp"
 #include "core/state_field.hpp"
 
 #include <bit>
@@ -38,12 +39,6 @@ struct StateSnapshot {
   FieldSnapshot* find(const std::string& particle_set, const std::string& name);
 };
 
-// A state struct: visits its StateField members, always in the same order.
-template <class State>
-concept DeclaredState = requires(State& state) {
-  state.for_each_field([](auto& /*field*/) {});
-};
-
 template <class Raw>
 constexpr RawKind raw_kind_of() {
   if constexpr (std::same_as<Raw, double>) {
@@ -67,7 +62,7 @@ FieldSnapshot snapshot_of(const StateField<Raw>& field) {
 template <DeclaredState State>
 StateSnapshot capture_state(State& state) {
   StateSnapshot snapshot;
-  state.for_each_field([&](auto& field) { snapshot.fields.push_back(snapshot_of(field)); });
+  for_each_field(state, [&](auto& field) { snapshot.fields.push_back(snapshot_of(field)); });
   return snapshot;
 }
 
@@ -78,7 +73,7 @@ void require_same_layout(const FieldSnapshot& expected, const FieldSnapshot& fou
 template <DeclaredState State>
 void restore_state(State& state, const StateSnapshot& snapshot) {
   std::size_t index = 0;
-  state.for_each_field([&](auto& field) {
+  for_each_field(state, [&](auto& field) {
     using Raw = typename std::remove_cvref_t<decltype(field)>::value_type;
     if (index >= snapshot.fields.size()) {
       throw std::invalid_argument("snapshot has fewer fields than the model declares");
@@ -99,7 +94,7 @@ void restore_state(State& state, const StateSnapshot& snapshot) {
 // whose negation overflows.
 template <class Arith, DeclaredState State>
 void apply_time_reversal(State& state) {
-  state.for_each_field([](auto& field) {
+  for_each_field(state, [](auto& field) {
     if (field.info().parity != Parity::odd) {
       return;
     }

@@ -7,11 +7,14 @@
 // step Phi with R Phi R Phi = id: bitwise time reversibility. The verifier can check each
 // sub-step on its own (verify/reversibility.hpp).
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace revsph {
 
@@ -20,7 +23,45 @@ struct Substep {
   std::string_view name;
   double dt_fraction; // this sub-step advances its group by dt_fraction * dt
   void (*apply)(Model& model, double dt);
+  // The one declaration of an irreversible sub-step (dissipation, an update without an exact
+  // inverse): null for an exactly invertible one; otherwise what it does irreversibly in this
+  // case, or "" where it does nothing irreversible (a relaxation sub-step in a solid, say). The
+  // verifier, info() and the output read this (irreversible_terms below).
+  std::string (*irreversible)(const Model& model) = nullptr;
 };
+
+// An operation after every full step, outside the palindrome (an active filter, say): always
+// irreversible where it acts, so it says what it does in this case ("" where it does nothing).
+template <class Model>
+struct StepHook {
+  std::string_view name;
+  void (*apply)(Model& model, std::int64_t step);
+  std::string (*irreversible)(const Model& model);
+};
+
+// "name: what it does" for every sub-step (each name once) and hook that acts irreversibly here.
+template <class Model>
+std::vector<std::string> irreversible_terms(const Model& model,
+                                            std::span<const Substep<Model>> sequence,
+                                            std::span<const StepHook<Model>> hooks) {
+  std::vector<std::string> terms;
+  std::vector<std::string_view> seen;
+  for (const Substep<Model>& s : sequence) {
+    if (s.irreversible == nullptr || std::find(seen.begin(), seen.end(), s.name) != seen.end()) {
+      continue;
+    }
+    seen.push_back(s.name);
+    if (const std::string what = s.irreversible(model); !what.empty()) {
+      terms.push_back(std::string(s.name) + ": " + what);
+    }
+  }
+  for (const StepHook<Model>& hook : hooks) {
+    if (const std::string what = hook.irreversible(model); !what.empty()) {
+      terms.push_back(std::string(hook.name) + ": " + what);
+    }
+  }
+  return terms;
+}
 
 // Throws std::logic_error unless the sequence reads the same both ways (names, fractions and
 // functions) and each named sub-step's fractions add up to one full step.

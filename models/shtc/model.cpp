@@ -1,5 +1,6 @@
 #include "models/shtc/model.hpp"
 
+#include "core/case_values.hpp"
 #include "core/verlet.hpp"
 #include "models/shtc/elastic_energy.hpp"
 #include "models/shtc/forces.hpp"
@@ -27,9 +28,9 @@ Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state,
       sum_scales_(sum_scales(parameters_.density_scale, parameters_.material.rest_density,
                              parameters_.material.sound_speed, parameters_.penalty_speed,
                              parameters_.support_radius())),
-      layout_(
-          parameters_.domain, parameters_.support_radius() * parameters_.cell_size_factor,
-          {{"material", state_.position.count()}, {"boundary", state_.boundary_position.count()}}),
+      layout_(parameters_.domain, parameters_.support_radius() * parameters_.cell_size_factor,
+              {{"material", state_.material.position.count()},
+               {"boundary", state_.boundary.position.count()}}),
       sums_(sum_scales_.density),
       acceleration_sums_(acceleration_sums<D>(sum_scales_.acceleration)),
       gradients_(sum_scales_.velocity_sum),
@@ -38,28 +39,56 @@ Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state,
 template <int D>
 std::span<const Substep<Model<D>>> Model<D>::palindrome() {
   static constexpr Substep<Model> sequence[] = {
-      {"relaxation", 0.5, &Model::relaxation_substep},
+      {"relaxation", 0.5, &Model::relaxation_substep, &Model::relaxation_irreversibility},
       {"kick", 0.5, &Model::kick_substep},
       {"drift", 0.5, &Model::drift_substep},
-      {"distortion", 1.0, &Model::distortion_substep},
+      {"distortion", 1.0, &Model::distortion_substep, &Model::distortion_irreversibility},
       {"drift", 0.5, &Model::drift_substep},
       {"kick", 0.5, &Model::kick_substep},
-      {"relaxation", 0.5, &Model::relaxation_substep},
+      {"relaxation", 0.5, &Model::relaxation_substep, &Model::relaxation_irreversibility},
   };
   return sequence;
 }
 
 template <int D>
+std::string Model<D>::relaxation_description() const {
+  return "relaxation of the distortion, tau = " +
+         format_scientific(*parameters_.relaxation_time, 3) + " s (paper 2 eqs. 51-53)";
+}
+
+template <int D>
+std::string Model<D>::distortion_irreversibility(const Model& model) {
+  std::string what;
+  if (model.parameters_.cayley_distortion_update) {
+    what = "the paper's Cayley distortion update (eq. 49), rounded to fixed point: not exactly "
+           "invertible";
+  }
+  if (model.parameters_.relaxation_time && !model.parameters_.relaxation_splitting.at_step_ends) {
+    what += (what.empty() ? "" : "; ") + model.relaxation_description() + " after the update";
+  }
+  return what;
+}
+
+template <int D>
+std::string Model<D>::relaxation_irreversibility(const Model& model) {
+  if (model.parameters_.relaxation_time && model.parameters_.relaxation_splitting.at_step_ends) {
+    return model.relaxation_description() + " at the step's ends";
+  }
+  return "";
+}
+
+template <int D>
 double Model<D>::real_position(int axis, std::size_t a) const {
   return a < material_count()
-             ? fixedpoint::to_real(state_.position.at(axis, a), state_.position.info().scale)
-             : fixedpoint::to_real(state_.boundary_position.at(axis, a - material_count()),
-                                   state_.boundary_position.info().scale);
+             ? fixedpoint::to_real(state_.material.position.at(axis, a),
+                                   state_.material.position.info().scale)
+             : fixedpoint::to_real(state_.boundary.position.at(axis, a - material_count()),
+                                   state_.boundary.position.info().scale);
 }
 
 template <int D>
 ExactDistortion<D> Model<D>::distortion_of(std::size_t a) {
-  const ParticleSetState<D>& set = set_of(a);
+  const CarrierFields<D>& set = set_of(a);
   const std::size_t i = index_in_set(a);
   ExactDistortion<D> distortion;
   distortion.log_det = set.log_det.at(0, i);
@@ -71,7 +100,7 @@ ExactDistortion<D> Model<D>::distortion_of(std::size_t a) {
 
 template <int D>
 void Model<D>::store_distortion(std::size_t a, const ExactDistortion<D>& distortion) {
-  ParticleSetState<D>& set = set_of(a);
+  CarrierFields<D>& set = set_of(a);
   const std::size_t i = index_in_set(a);
   set.log_det.at(0, i) = distortion.log_det;
   for (int c = 0; c < D * D; ++c) {
@@ -81,17 +110,17 @@ void Model<D>::store_distortion(std::size_t a, const ExactDistortion<D>& distort
 
 template <int D>
 Vec<D> Model<D>::wall_velocity_now(std::size_t i) const {
-  const std::int64_t clock = state_.drive_time.at(0, i);
+  const std::int64_t clock = state_.boundary.drive_time.at(0, i);
   Vec<D> v{};
   if (clock == 0) {
     return v;
   }
-  const double time = fixedpoint::to_real(clock, state_.drive_time.info().scale);
+  const double time = fixedpoint::to_real(clock, state_.boundary.drive_time.info().scale);
   // Odd in the clock: a reversed run pretends the opposite velocity at the same |t|.
   const double factor = std::copysign(parameters_.drive_ramp(std::fabs(time)), time);
   for (int k = 0; k < D; ++k) {
-    v[k] = factor *
-           fixedpoint::to_real(state_.wall_velocity.at(k, i), state_.wall_velocity.info().scale);
+    v[k] = factor * fixedpoint::to_real(state_.boundary.wall_velocity.at(k, i),
+                                        state_.boundary.wall_velocity.info().scale);
   }
   return v;
 }
@@ -104,9 +133,9 @@ void Model<D>::initialise_constants() {
   // it, as many as there are neighbours), within the density scale's range.
   const double trial_mass = parameters_.material.rest_density / kernel_.value(0.0);
   mass_.assign(n, trial_mass);
-  for (ParticleSetState<D>* set : {&state_.material, &state_.boundary}) {
-    set->density_constant.info().scale = parameters_.density_scale;
-    set->lambda_constant.info().scale = parameters_.density_scale;
+  for (CarrierFields<D>* set : {&state_.material.carried, &state_.boundary.carried}) {
+    set->density_constant.set_scale(parameters_.density_scale);
+    set->lambda_constant.set_scale(parameters_.density_scale);
     std::fill(set->density_constant.all().begin(), set->density_constant.all().end(), 0);
     std::fill(set->lambda_constant.all().begin(), set->lambda_constant.all().end(), 0);
   }
@@ -120,8 +149,8 @@ void Model<D>::initialise_constants() {
   }
   const double largest = *std::max_element(mass.begin(), mass.end());
   const fixedpoint::Scale mass_scale = fixedpoint::Scale::covering(largest, mass_fraction_bits);
-  for (ParticleSetState<D>* set : {&state_.material, &state_.boundary}) {
-    set->mass.info().scale = mass_scale;
+  for (CarrierFields<D>* set : {&state_.material.carried, &state_.boundary.carried}) {
+    set->mass.set_scale(mass_scale);
   }
   for (std::size_t a = 0; a < n; ++a) {
     fixedpoint::try_to_fixed(mass[a], mass_scale, set_of(a).mass.at(0, index_in_set(a)));
@@ -131,7 +160,7 @@ void Model<D>::initialise_constants() {
   update_geometry();
   for (std::size_t s = 0; s < n; ++s) {
     const std::size_t a = carrier_of_slot[s];
-    ParticleSetState<D>& set = set_of(a);
+    CarrierFields<D>& set = set_of(a);
     const std::size_t i = index_in_set(a);
     if (!fixedpoint::try_to_fixed(parameters_.material.rest_density - sums_.density[s],
                                   parameters_.density_scale, set.density_constant.at(0, i)) ||
@@ -147,18 +176,18 @@ template <int D>
 void Model<D>::kick(double dt) {
   update_force();
   FaultRecorder faults;
-  add_rate<FixedArithmetic, D>(state_.velocity, acceleration_, dt, faults);
+  add_rate<FixedArithmetic, D>(state_.material.velocity, acceleration_, dt, faults);
 }
 
 template <int D>
 void Model<D>::drift(double dt) {
   FaultRecorder faults;
-  revsph::drift<FixedArithmetic>(state_.position, state_.velocity, dt, faults);
+  revsph::drift<FixedArithmetic>(state_.material.position, state_.material.velocity, dt, faults);
   // The walls' clock runs forward by dt whatever the direction of time: drive_time holds the
   // direction in its sign (state.hpp), so R drift R drift = id holds for it too.
   const auto tick = static_cast<std::int64_t>(
-      std::llround(dt / fixedpoint::to_real(1, state_.drive_time.info().scale)));
-  for (std::int64_t& clock : state_.drive_time.all()) {
+      std::llround(dt / fixedpoint::to_real(1, state_.boundary.drive_time.info().scale)));
+  for (std::int64_t& clock : state_.boundary.drive_time.all()) {
     clock += tick;
   }
   geometry_valid_ = false;
@@ -171,7 +200,7 @@ void Model<D>::update_carrier_velocities() {
   const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
   const std::size_t n = carrier_count();
   const std::size_t material = material_count();
-  const auto& v_scale = state_.velocity.info().scale;
+  const auto& v_scale = state_.material.velocity.info().scale;
   for (int k = 0; k < D; ++k) {
     slot_velocity_[k].resize(n);
   }
@@ -183,7 +212,7 @@ void Model<D>::update_carrier_velocities() {
     const Vec<D> wall = a < material ? Vec<D>{} : wall_velocity_now(a - material);
     for (int k = 0; k < D; ++k) {
       slot_velocity_[k][s] =
-          a < material ? fixedpoint::to_real(state_.velocity.at(k, a), v_scale) : wall[k];
+          a < material ? fixedpoint::to_real(state_.material.velocity.at(k, a), v_scale) : wall[k];
     }
   }
   if (parameters_.mirrored_walls) {
@@ -258,7 +287,7 @@ void Model<D>::relax_all(double dt) {
 #pragma omp parallel for schedule(static)
   for (std::size_t a = 0; a < n; ++a) {
     ExactDistortion<D> distortion = distortion_of(a);
-    ParticleSetState<D>& set = set_of(a);
+    CarrierFields<D>& set = set_of(a);
     const std::size_t i = index_in_set(a);
     if (!relax(distortion, set.dissipated_energy.at(0, i), dt)) {
       faults.record(i, set_name(a), "distortion", "overflow or non-finite value in the relaxation");
@@ -293,10 +322,12 @@ void Model<D>::update_constants() {
   if (constants_valid_) {
     return;
   }
-  mass_ = CarrierField<FixedArithmetic>{&state_.material.mass, &state_.boundary.mass}.reals();
+  mass_ =
+      CarrierField<FixedArithmetic>{&state_.material.carried.mass, &state_.boundary.carried.mass}
+          .reals();
   // Mirrored walls pretend velocities even at rest, and do work.
   walls_work_ = any_wall_moves(state_) ||
-                (parameters_.mirrored_walls && state_.boundary_position.count() > 0);
+                (parameters_.mirrored_walls && state_.boundary.position.count() > 0);
   constants_valid_ = true;
 }
 
@@ -312,12 +343,12 @@ void Model<D>::update_geometry() {
                 parameters_.support_radius());
   layout_.gather(std::span<const double>(mass_), slot_mass_);
   const std::vector<std::int64_t> density_constant =
-      CarrierField<FixedArithmetic>{&state_.material.density_constant,
-                                    &state_.boundary.density_constant}
+      CarrierField<FixedArithmetic>{&state_.material.carried.density_constant,
+                                    &state_.boundary.carried.density_constant}
           .raws();
   const std::vector<std::int64_t> lambda_constant =
-      CarrierField<FixedArithmetic>{&state_.material.lambda_constant,
-                                    &state_.boundary.lambda_constant}
+      CarrierField<FixedArithmetic>{&state_.material.carried.lambda_constant,
+                                    &state_.boundary.carried.lambda_constant}
           .raws();
   layout_.gather(std::span<const std::int64_t>(density_constant), slot_density_constant_);
   layout_.gather(std::span<const std::int64_t>(lambda_constant), slot_lambda_constant_);
@@ -404,13 +435,13 @@ typename Model<D>::ParticleEnergies Model<D>::particle_energies(const CarrierVal
   const double cp = parameters_.penalty_speed;
   ParticleEnergies energies{std::vector<double>(n, 0.0), std::vector<double>(n),
                             std::vector<double>(n), std::vector<double>(n), std::vector<double>(n)};
-  const auto& v_scale = state_.velocity.info().scale;
+  const auto& v_scale = state_.material.velocity.info().scale;
   for (std::size_t a = 0; a < n; ++a) {
     const double m = mass_[a];
     if (a < material_count()) {
       double v_squared = 0.0;
       for (int k = 0; k < D; ++k) {
-        const double v = fixedpoint::to_real(state_.velocity.at(k, a), v_scale);
+        const double v = fixedpoint::to_real(state_.material.velocity.at(k, a), v_scale);
         v_squared += v * v;
       }
       energies.kinetic[a] = 0.5 * m * v_squared;
@@ -447,9 +478,10 @@ EnergyBudget Model<D>::energy() {
   if (walls_work()) {
     // What the walls have put in, counted negative: the total stays constant.
     double work = 0.0;
-    for (std::size_t i = 0; i < state_.boundary_position.count(); ++i) {
-      work += mass_[material_count() + i] *
-              fixedpoint::to_real(state_.wall_work.at(0, i), state_.wall_work.info().scale);
+    for (std::size_t i = 0; i < state_.boundary.position.count(); ++i) {
+      work +=
+          mass_[material_count() + i] * fixedpoint::to_real(state_.boundary.wall_work.at(0, i),
+                                                            state_.boundary.wall_work.info().scale);
     }
     budget.terms.push_back({"wall_work", -work});
   }
@@ -610,8 +642,9 @@ bool Model<D>::add_wall_work(double dt) {
                 slot_mirrored_velocity_[k][s];
       }
     }
-    fits = fits && FixedArithmetic::try_increment(state_.wall_work.at(0, a - material),
-                                                  0.5 * dt * work, state_.wall_work.info().scale);
+    fits = fits &&
+           FixedArithmetic::try_increment(state_.boundary.wall_work.at(0, a - material),
+                                          0.5 * dt * work, state_.boundary.wall_work.info().scale);
   }
   return fits;
 }
@@ -630,13 +663,13 @@ std::vector<EnergyTerm> Model<D>::diagnostics() {
   // particle order: the same for any thread count.
   update_constants();
   Vec<3> angular{};
-  const auto& v_scale = state_.velocity.info().scale;
+  const auto& v_scale = state_.material.velocity.info().scale;
   for (std::size_t a = 0; a < material_count(); ++a) {
     Vec<3> x{};
     Vec<3> v{};
     for (int k = 0; k < D; ++k) {
       x[k] = real_position(k, a);
-      v[k] = fixedpoint::to_real(state_.velocity.at(k, a), v_scale);
+      v[k] = fixedpoint::to_real(state_.material.velocity.at(k, a), v_scale);
     }
     angular[0] += mass_[a] * (x[1] * v[2] - x[2] * v[1]);
     angular[1] += mass_[a] * (x[2] * v[0] - x[0] * v[2]);

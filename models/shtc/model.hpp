@@ -78,14 +78,18 @@ public:
 
   // Per material particle, canonical order (for tests).
   const CoordinateArrays<D>& acceleration();
-  std::size_t material_count() const { return state_.position.count(); }
-  std::size_t carrier_count() const { return material_count() + state_.boundary_position.count(); }
+  std::size_t material_count() const { return state_.material.position.count(); }
+  std::size_t carrier_count() const { return material_count() + state_.boundary.position.count(); }
 
 private:
   static void kick_substep(Model& model, double dt) { model.kick(dt); }
   static void drift_substep(Model& model, double dt) { model.drift(dt); }
   static void distortion_substep(Model& model, double dt) { model.update_distortion(dt); }
   static void relaxation_substep(Model& model, double dt) { model.relax_at_step_end(dt); }
+  // What each sub-step does irreversibly in this case ("" for nothing; step_composition.hpp).
+  static std::string distortion_irreversibility(const Model& model);
+  static std::string relaxation_irreversibility(const Model& model);
+  std::string relaxation_description() const;
 
   // Per carrier, canonical order.
   struct ParticleEnergies {
@@ -99,10 +103,10 @@ private:
   double real_position(int axis, std::size_t a) const;
   // The carriers' positions (material, then boundary).
   CarrierField<FixedArithmetic> carrier_position() const {
-    return {&state_.position, &state_.boundary_position};
+    return {&state_.material.position, &state_.boundary.position};
   }
-  ParticleSetState<D>& set_of(std::size_t a) {
-    return a < material_count() ? state_.material : state_.boundary;
+  CarrierFields<D>& set_of(std::size_t a) {
+    return a < material_count() ? state_.material.carried : state_.boundary.carried;
   }
   const char* set_name(std::size_t a) const {
     return a < material_count() ? "material" : "boundary";

@@ -63,12 +63,12 @@ void fill_vectors(const CaseFile& case_file, const std::vector<Vec<D>>& values,
 // A = I for every particle: the material starts undistorted.
 template <int D>
 void set_undistorted(const CaseFile& case_file, const DistortionScales& scales,
-                     const fixedpoint::Scale& dissipated_scale, ParticleSetState<D>& set,
+                     const fixedpoint::Scale& dissipated_scale, CarrierFields<D>& set,
                      std::size_t count) {
-  set.log_det.info().scale = scales.log_det;
-  set.dissipated_energy.info().scale = dissipated_scale;
-  set.unimodular.info().scale = scales.unimodular;
-  set.resize(count);
+  set.log_det.set_scale(scales.log_det);
+  set.dissipated_energy.set_scale(dissipated_scale);
+  set.unimodular.set_scale(scales.unimodular);
+  std::apply([&](auto&... fields) { (fields.resize(count), ...); }, set.fields());
   ExactDistortion<D> identity;
   if (!try_make_distortion<D>(Matrix<D>::Identity(), scales, identity)) {
     case_file.fail("fixed_point.unimodular_exponent", "the identity does not fit this scale");
@@ -154,23 +154,23 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   }
 
   State<D> state;
-  state.position.info().scale = parameters.position_scale;
-  state.velocity.info().scale = parameters.velocity_scale;
-  state.boundary_position.info().scale = parameters.position_scale;
-  fill_vectors<D>(case_file, material_positions, state.position, "position");
-  fill_vectors<D>(case_file, velocities, state.velocity, "velocity");
-  fill_vectors<D>(case_file, boundary_positions, state.boundary_position, "position");
-  state.wall_velocity.info().scale = parameters.velocity_scale;
-  fill_vectors<D>(case_file, boundary_velocities, state.wall_velocity, "wall velocity");
+  state.material.position.set_scale(parameters.position_scale);
+  state.material.velocity.set_scale(parameters.velocity_scale);
+  state.boundary.position.set_scale(parameters.position_scale);
+  fill_vectors<D>(case_file, material_positions, state.material.position, "position");
+  fill_vectors<D>(case_file, velocities, state.material.velocity, "velocity");
+  fill_vectors<D>(case_file, boundary_positions, state.boundary.position, "position");
+  state.boundary.wall_velocity.set_scale(parameters.velocity_scale);
+  fill_vectors<D>(case_file, boundary_velocities, state.boundary.wall_velocity, "wall velocity");
   const bool moving_walls = any_wall_moves(state);
-  state.drive_time.info().scale = parameters.drive_time_scale;
-  state.drive_time.resize(boundary_positions.size());
-  state.wall_work.info().scale = parameters.dissipated_scale;
-  state.wall_work.resize(boundary_positions.size());
+  state.boundary.drive_time.set_scale(parameters.drive_time_scale);
+  state.boundary.drive_time.resize(boundary_positions.size());
+  state.boundary.wall_work.set_scale(parameters.dissipated_scale);
+  state.boundary.wall_work.resize(boundary_positions.size());
   set_undistorted<D>(case_file, parameters.distortion_scales, parameters.dissipated_scale,
-                     state.material, material_positions.size());
+                     state.material.carried, material_positions.size());
   set_undistorted<D>(case_file, parameters.distortion_scales, parameters.dissipated_scale,
-                     state.boundary, boundary_positions.size());
+                     state.boundary.carried, boundary_positions.size());
 
   SimulationInfo info;
   info.case_name = case_name(case_file);
@@ -178,8 +178,6 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   info.dimension = D;
   info.arithmetic = Arithmetic::fixed;
   info.dt = parameters.dt;
-  info.particles = {{"material", material_positions.size(), true},
-                    {"boundary", boundary_positions.size(), false}};
   info.setup_report.emplace_back("dt", scientific(parameters.dt));
   info.setup_report.emplace_back("sound_speed", scientific(parameters.material.sound_speed));
   info.setup_report.emplace_back("shear_speed", scientific(parameters.material.shear_speed));
@@ -191,9 +189,6 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   }
   if (parameters.cayley_distortion_update) {
     info.setup_report.emplace_back("distortion_update", "cayley");
-    info.irreversible_terms.push_back(
-        "the paper's Cayley distortion update (eq. 49), rounded to fixed point: not exactly "
-        "invertible");
   }
   if (parameters.relaxation_time) {
     info.setup_report.emplace_back("relaxation_time", scientific(*parameters.relaxation_time));
@@ -203,9 +198,6 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
                                    scientific(parameters.relaxation_splitting.relaxation_time));
     info.setup_report.emplace_back("relaxation_splitting.substeps",
                                    std::to_string(parameters.relaxation_splitting.substeps));
-    info.irreversible_terms.push_back(
-        "relaxation of the distortion, tau = " + scientific(*parameters.relaxation_time) +
-        " s (paper 2 eqs. 51-53)");
   }
 
   std::optional<std::size_t> probe;

@@ -27,11 +27,11 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
     : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
       kernel_(parameters_.support_radius),
       layout_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
-              {{"fluid", state_.position.count()}, {"dummy", state_.dummy_position.count()}}),
+              {{"fluid", state_.fluid.position.count()}, {"dummy", state_.dummy.position.count()}}),
       walls_(parameters_.domain,
              std::max(parameters_.support_radius, parameters_.wall_radius) *
                  parameters_.cell_size_factor,
-             state_.wall_position.count(), "wall"),
+             state_.wall.position.count(), "wall"),
       density_sums_(SummedQuantity{"density", parameters_.density_scale}),
       acceleration_sums_(acceleration_quantities<D>(parameters_.acceleration_scale)) {
   if (parameters_.anti_clump_pressure > 0.0) {
@@ -42,14 +42,15 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
 template <int D, class Arith>
 void Model<D, Arith>::initialise_density_constants(std::span<const double> target_density) {
   // With C_a = 0 the density is the plain kernel sum; C_a = target - that sum.
-  std::fill(state_.density_constant.all().begin(), state_.density_constant.all().end(), Raw{});
-  std::fill(state_.dummy_density_constant.all().begin(), state_.dummy_density_constant.all().end(),
+  std::fill(state_.fluid.density_constant.all().begin(), state_.fluid.density_constant.all().end(),
+            Raw{});
+  std::fill(state_.dummy.density_constant.all().begin(), state_.dummy.density_constant.all().end(),
             Raw{});
   invalidate_derived();
   update_derived();
   const std::size_t fluid = fluid_count();
   for (std::size_t a = 0; a < density_.size(); ++a) {
-    auto& field = a < fluid ? state_.density_constant : state_.dummy_density_constant;
+    auto& field = a < fluid ? state_.fluid.density_constant : state_.dummy.density_constant;
     const std::size_t i = a < fluid ? a : a - fluid;
     if (!Arith::try_from_real(target_density[a] - density_[a], field.info().scale,
                               field.at(0, i))) {
@@ -74,13 +75,13 @@ template <int D, class Arith>
 void Model<D, Arith>::kick(double dt) {
   update_derived();
   FaultRecorder faults;
-  add_rate<Arith, D>(state_.velocity, acceleration_, dt, faults);
+  add_rate<Arith, D>(state_.fluid.velocity, acceleration_, dt, faults);
 }
 
 template <int D, class Arith>
 void Model<D, Arith>::drift(double dt) {
   FaultRecorder faults;
-  revsph::drift<Arith>(state_.position, state_.velocity, dt, faults);
+  revsph::drift<Arith>(state_.fluid.position, state_.fluid.velocity, dt, faults);
   derived_valid_ = false;
 }
 
@@ -96,10 +97,10 @@ void Model<D, Arith>::update_constants() {
   }
   CoordinateArrays<D> wall_position;
   for (int k = 0; k < D; ++k) {
-    wall_position[k] = CarrierField<Arith>{&state_.wall_position}.reals(k);
+    wall_position[k] = CarrierField<Arith>{&state_.wall.position}.reals(k);
   }
   walls_.place(std::move(wall_position));
-  mass_ = CarrierField<Arith>{&state_.mass, &state_.dummy_mass}.reals();
+  mass_ = CarrierField<Arith>{&state_.fluid.mass, &state_.dummy.mass}.reals();
   constants_valid_ = true;
 }
 
@@ -115,7 +116,7 @@ void Model<D, Arith>::update_derived() {
   const std::size_t carriers = layout_.slot_count();
   layout_.gather(std::span<const double>(mass_), slot_mass_);
   const std::vector<Raw> density_constant =
-      CarrierField<Arith>{&state_.density_constant, &state_.dummy_density_constant}.raws();
+      CarrierField<Arith>{&state_.fluid.density_constant, &state_.dummy.density_constant}.raws();
   layout_.gather(std::span<const Raw>(density_constant), slot_density_constant_);
   slot_is_fluid_.resize(carriers);
   const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
@@ -190,11 +191,11 @@ const std::array<std::vector<double>, D>& Model<D, Arith>::acceleration() {
 template <int D, class Arith>
 std::array<std::vector<double>, D> Model<D, Arith>::real_velocity() const {
   std::array<std::vector<double>, D> velocity;
-  const auto& scale = state_.velocity.info().scale;
+  const auto& scale = state_.fluid.velocity.info().scale;
   for (int k = 0; k < D; ++k) {
     velocity[k].resize(fluid_count());
     for (std::size_t a = 0; a < fluid_count(); ++a) {
-      velocity[k][a] = Arith::real(state_.velocity.at(k, a), scale);
+      velocity[k][a] = Arith::real(state_.fluid.velocity.at(k, a), scale);
     }
   }
   return velocity;
@@ -237,16 +238,32 @@ std::array<std::vector<double>, D> Model<D, Arith>::filtered_velocity() {
 }
 
 template <int D, class Arith>
-void Model<D, Arith>::after_step(std::int64_t step) {
+std::span<const StepHook<Model<D, Arith>>> Model<D, Arith>::step_hooks() {
+  static constexpr StepHook<Model> hooks[] = {
+      {"shepard_filter", &Model::shepard_hook, &Model::shepard_filter_acts}};
+  return hooks;
+}
+
+template <int D, class Arith>
+std::string Model<D, Arith>::shepard_filter_acts(const Model& model) {
+  if (!model.parameters_.shepard_active) {
+    return "";
+  }
+  return "active Shepard filter every " + std::to_string(model.parameters_.shepard_every) +
+         " steps (paper 1 App. A)";
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::filter_velocity(std::int64_t step) {
   if (!parameters_.shepard_active || step % parameters_.shepard_every != 0) {
     return;
   }
   // App. A active filter: u := u~. Dissipative, so outside the reversible palindrome.
   const std::array<std::vector<double>, D> filtered = filtered_velocity();
-  const auto& scale = state_.velocity.info().scale;
+  const auto& scale = state_.fluid.velocity.info().scale;
   for (int k = 0; k < D; ++k) {
     for (std::size_t a = 0; a < fluid_count(); ++a) {
-      if (!Arith::try_from_real(filtered[k][a], scale, state_.velocity.at(k, a))) {
+      if (!Arith::try_from_real(filtered[k][a], scale, state_.fluid.velocity.at(k, a))) {
         throw SimulationFault({"fluid", a, "velocity", "the filtered velocity overflows"}, -1);
       }
     }

@@ -3,7 +3,7 @@
 // velocity Verlet kick(dt/2) drift(dt) kick(dt/2), the acceleration a deterministic function of
 // the positions (closed-form density eq. 5, Tait pressure eq. 2, pressure force eq. 1b, gravity,
 // conservative wall eq. 7, dummy-particle walls and the anti-clump force of App. A). The active
-// Shepard filter of App. A is the one irreversible option (after_step).
+// Shepard filter of App. A is the one irreversible option (a step hook, step_hooks()).
 
 #include "core/carrier_field.hpp"
 #include "core/energy.hpp"
@@ -20,6 +20,7 @@
 #include <array>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace revsph::wcsph {
@@ -55,8 +56,9 @@ public:
     constants_valid_ = false;
   }
   void reverse_time();
-  // The active Shepard filter every shepard_every steps (irreversible; listed in info()).
-  void after_step(std::int64_t step);
+  // The active Shepard filter every shepard_every steps (App. A; irreversible where active).
+  static std::span<const StepHook<Model>> step_hooks();
+  void filter_velocity(std::int64_t step);
 
   // Sub-steps (paper 1 §4, steps 1–3).
   void kick(double dt);
@@ -69,17 +71,19 @@ public:
 private:
   static void kick_substep(Model& model, double dt) { model.kick(dt); }
   static void drift_substep(Model& model, double dt) { model.drift(dt); }
+  static void shepard_hook(Model& model, std::int64_t step) { model.filter_velocity(step); }
+  static std::string shepard_filter_acts(const Model& model);
   struct ParticleEnergies {
     std::vector<double> kinetic, gravitational, compressional, wall;
     std::vector<double> dummy_compressional;
   };
-  std::size_t fluid_count() const { return state_.position.count(); }
+  std::size_t fluid_count() const { return state_.fluid.position.count(); }
   double fluid_position(int axis, std::size_t a) const {
-    return Arith::real(state_.position.at(axis, a), state_.position.info().scale);
+    return Arith::real(state_.fluid.position.at(axis, a), state_.fluid.position.info().scale);
   }
   // The density carriers' positions (fluid, then dummies).
   CarrierField<Arith> carrier_position() const {
-    return {&state_.position, &state_.dummy_position};
+    return {&state_.fluid.position, &state_.dummy.position};
   }
   void update_derived();
   void update_constants();

@@ -209,22 +209,23 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   State<D, Raw> state;
   const fixedpoint::Scale mass_scale =
       fixedpoint::Scale::covering(largest_mass, mass_fraction_bits);
-  state.position.info().scale = parameters.position_scale;
-  state.velocity.info().scale = parameters.velocity_scale;
-  state.mass.info().scale = mass_scale;
-  state.density_constant.info().scale = parameters.density_scale;
-  state.wall_position.info().scale = parameters.position_scale;
-  state.dummy_position.info().scale = parameters.position_scale;
-  state.dummy_mass.info().scale = mass_scale;
-  state.dummy_density_constant.info().scale = parameters.density_scale;
-  fill_vectors<Arith, D>(case_file, "particles", fluid_positions, state.position, "position");
-  fill_vectors<Arith, D>(case_file, "initial.field", initial.velocity, state.velocity, "velocity");
-  fill_scalars<Arith>(fluid_masses, state.mass);
-  state.density_constant.resize(fluid_positions.size());
-  fill_vectors<Arith, D>(case_file, "particles", wall_positions, state.wall_position, "position");
-  fill_vectors<Arith, D>(case_file, "particles", dummy_positions, state.dummy_position, "position");
-  fill_scalars<Arith>(dummy_masses, state.dummy_mass);
-  state.dummy_density_constant.resize(dummy_positions.size());
+  state.fluid.position.set_scale(parameters.position_scale);
+  state.fluid.velocity.set_scale(parameters.velocity_scale);
+  state.fluid.mass.set_scale(mass_scale);
+  state.fluid.density_constant.set_scale(parameters.density_scale);
+  state.wall.position.set_scale(parameters.position_scale);
+  state.dummy.position.set_scale(parameters.position_scale);
+  state.dummy.mass.set_scale(mass_scale);
+  state.dummy.density_constant.set_scale(parameters.density_scale);
+  fill_vectors<Arith, D>(case_file, "particles", fluid_positions, state.fluid.position, "position");
+  fill_vectors<Arith, D>(case_file, "initial.field", initial.velocity, state.fluid.velocity,
+                         "velocity");
+  fill_scalars<Arith>(fluid_masses, state.fluid.mass);
+  state.fluid.density_constant.resize(fluid_positions.size());
+  fill_vectors<Arith, D>(case_file, "particles", wall_positions, state.wall.position, "position");
+  fill_vectors<Arith, D>(case_file, "particles", dummy_positions, state.dummy.position, "position");
+  fill_scalars<Arith>(dummy_masses, state.dummy.mass);
+  state.dummy.density_constant.resize(dummy_positions.size());
 
   SimulationInfo info;
   info.case_name = case_name(case_file);
@@ -233,14 +234,6 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   info.arithmetic = options.arithmetic;
   info.dt = parameters.dt;
   info.setup_report = std::move(setup_report);
-  info.particles = {{"fluid", fluid_positions.size(), true},
-                    {"wall", wall_positions.size(), false},
-                    {"dummy", dummy_positions.size(), false}};
-  if (parameters.shepard_active) {
-    info.irreversible_terms.push_back("active Shepard filter every " +
-                                      std::to_string(parameters.shepard_every) +
-                                      " steps (paper 1 App. A)");
-  }
   Model<D, Arith> model(parameters, std::move(info), std::move(state));
   model.initialise_density_constants(initial.target_density);
   return std::make_unique<ModelSimulation<Model<D, Arith>>>(std::move(model));

@@ -1,41 +1,59 @@
 #pragma once
-// The state of a WCSPH simulation, declared once: every field with its particle set, unit,
-// parity under time reversal and (set at setup) fixed-point scale.
+// The state of a WCSPH simulation, declared once (core/particle_sets.hpp): three particle sets,
+// every field with its unit, parity under time reversal and (set at setup) fixed-point scale.
 
+#include "core/particle_sets.hpp"
 #include "core/state_field.hpp"
+
+#include <tuple>
 
 namespace revsph::wcsph {
 
+template <int D>
+inline constexpr const char* mass_unit = D == 1 ? "kg/m^2" : (D == 2 ? "kg/m" : "kg");
+
+// The fluid: positions and velocities evolve (eqs. 1b, 1c); masses (per unit depth in 2D) and the
+// density integration constants C_a = rho0 - rho_a(t = 0) of eq. (5) are constants.
+template <int D, class Raw>
+struct Fluid {
+  static constexpr SetInfo set{.name = "fluid", .motion = Motion::moving};
+  StateField<Raw> position{{.name = "position", .unit = "m", .components = D}};
+  StateField<Raw> velocity{
+      {.name = "velocity", .unit = "m/s", .parity = Parity::odd, .components = D}};
+  StateField<Raw> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
+  StateField<Raw> density_constant{
+      {.name = "density_constant", .unit = "kg/m^3", .evolved = false}};
+  auto fields() { return std::tie(position, velocity, mass, density_constant); }
+};
+
+// Wall particles (§3.3): fixed, they carry only their positions.
+template <int D, class Raw>
+struct Wall {
+  static constexpr SetInfo set{.name = "wall", .motion = Motion::fixed};
+  StateField<Raw> position{{.name = "position", .unit = "m", .components = D, .evolved = false}};
+  auto fields() { return std::tie(position); }
+};
+
+// Dummy particles (App. A): fixed walls that take part in the density and the pressure force like
+// fluid particles, with their own masses and integration constants.
+template <int D, class Raw>
+struct Dummy {
+  static constexpr SetInfo set{.name = "dummy", .motion = Motion::fixed};
+  StateField<Raw> position{{.name = "position", .unit = "m", .components = D, .evolved = false}};
+  StateField<Raw> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
+  StateField<Raw> density_constant{
+      {.name = "density_constant", .unit = "kg/m^3", .evolved = false}};
+  auto fields() { return std::tie(position, mass, density_constant); }
+};
+
 template <int D, class Raw>
 struct State {
-  // Evolved: positions and velocities of the fluid particles (eqs. 1b, 1c).
-  StateField<Raw> position{{"fluid", "position", "m", Parity::even, D, {}, true}};
-  StateField<Raw> velocity{{"fluid", "velocity", "m/s", Parity::odd, D, {}, true}};
-  // Constant: particle masses (per unit depth in 2D) and the density integration constants
-  // C_a = rho0 - rho_a(t = 0) of eq. (5).
-  StateField<Raw> mass{{"fluid", "mass", D == 2 ? "kg/m" : "kg", Parity::even, 1, {}, false}};
-  StateField<Raw> density_constant{
-      {"fluid", "density_constant", "kg/m^3", Parity::even, 1, {}, false}};
-  // Constant: wall particles (§3.3) are fixed and carry only their positions.
-  StateField<Raw> wall_position{{"wall", "position", "m", Parity::even, D, {}, false}};
-  // Constant: dummy particles (App. A) are fixed walls that take part in the density and the
-  // pressure force like fluid particles, with their own masses and integration constants.
-  StateField<Raw> dummy_position{{"dummy", "position", "m", Parity::even, D, {}, false}};
-  StateField<Raw> dummy_mass{{"dummy", "mass", D == 2 ? "kg/m" : "kg", Parity::even, 1, {}, false}};
-  StateField<Raw> dummy_density_constant{
-      {"dummy", "density_constant", "kg/m^3", Parity::even, 1, {}, false}};
+  Fluid<D, Raw> fluid;
+  Wall<D, Raw> wall;
+  Dummy<D, Raw> dummy;
 
-  template <class Visit>
-  void for_each_field(Visit&& visit) {
-    visit(position);
-    visit(velocity);
-    visit(mass);
-    visit(density_constant);
-    visit(wall_position);
-    visit(dummy_position);
-    visit(dummy_mass);
-    visit(dummy_density_constant);
-  }
+  State() { declare_state(*this); }
+  auto sets() { return std::tie(fluid, wall, dummy); }
 };
 
 } // namespace revsph::wcsph

@@ -35,11 +35,11 @@ double equilibrium_error(const std::string& dr) {
   const auto& state = model.state();
   double error = 0.0;
   double reference = 0.0;
-  for (std::size_t a = 0; a < state.position.count(); ++a) {
-    const double x =
-        revsph::fixedpoint::to_real(state.position.at(0, a), state.position.info().scale);
-    const double y =
-        revsph::fixedpoint::to_real(state.position.at(1, a), state.position.info().scale);
+  for (std::size_t a = 0; a < state.fluid.position.count(); ++a) {
+    const double x = revsph::fixedpoint::to_real(state.fluid.position.at(0, a),
+                                                 state.fluid.position.info().scale);
+    const double y = revsph::fixedpoint::to_real(state.fluid.position.at(1, a),
+                                                 state.fluid.position.info().scale);
     const double r = std::hypot(x, y);
     const double u = revsph::wcsph::gresho::azimuthal_velocity(r);
     const double exact_x = r > 0 ? -u * u / r * x / r : 0.0;
@@ -126,18 +126,19 @@ double max_density_deviation(Wcsph2D& model, double support_radius, double rest_
   };
   const revsph::WendlandQuintic<2> kernel(support_radius);
   double largest = 0.0;
-  for (std::size_t a = 0; a < state.position.count(); ++a) {
-    const auto xa = coordinates(state.position, a);
+  for (std::size_t a = 0; a < state.fluid.position.count(); ++a) {
+    const auto xa = coordinates(state.fluid.position, a);
     double density = 0.0;
-    for (std::size_t b = 0; b < state.position.count(); ++b) {
-      const auto xb = coordinates(state.position, b);
-      density += revsph::fixedpoint::to_real(state.mass.at(0, b), state.mass.info().scale) *
-                 kernel.value(std::hypot(xa[0] - xb[0], xa[1] - xb[1]));
-    }
-    for (std::size_t f = 0; f < state.dummy_position.count(); ++f) {
-      const auto xf = coordinates(state.dummy_position, f);
+    for (std::size_t b = 0; b < state.fluid.position.count(); ++b) {
+      const auto xb = coordinates(state.fluid.position, b);
       density +=
-          revsph::fixedpoint::to_real(state.dummy_mass.at(0, f), state.dummy_mass.info().scale) *
+          revsph::fixedpoint::to_real(state.fluid.mass.at(0, b), state.fluid.mass.info().scale) *
+          kernel.value(std::hypot(xa[0] - xb[0], xa[1] - xb[1]));
+    }
+    for (std::size_t f = 0; f < state.dummy.position.count(); ++f) {
+      const auto xf = coordinates(state.dummy.position, f);
+      density +=
+          revsph::fixedpoint::to_real(state.dummy.mass.at(0, f), state.dummy.mass.info().scale) *
           kernel.value(std::hypot(xa[0] - xf[0], xa[1] - xf[1]));
     }
     largest = std::max(largest, std::abs(density - rest_density) / rest_density);
