@@ -75,6 +75,7 @@ void CellList<D>::sort_into_cells(std::size_t n) {
   }
 }
 
+template class CellList<1>;
 template class CellList<2>;
 template class CellList<3>;
 

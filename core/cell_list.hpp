@@ -66,7 +66,9 @@ public:
       lo[k] = centre[k] > 0 ? centre[k] - 1 : 0;
       hi[k] = centre[k] + 1 < cells_per_axis_[k] ? centre[k] + 1 : cells_per_axis_[k] - 1;
     }
-    if constexpr (D == 2) {
+    if constexpr (D == 1) {
+      visit_cells(static_cast<std::size_t>(lo[0]), static_cast<std::size_t>(hi[0]), visit);
+    } else if constexpr (D == 2) {
       for (int y = lo[1]; y <= hi[1]; ++y) {
         const std::size_t row = static_cast<std::size_t>(y) * cells_per_axis_[0];
         visit_cells(row + lo[0], row + hi[0], visit);
@@ -145,6 +147,7 @@ void CellList<D>::build(std::size_t n, Coordinate&& coordinate) {
   sort_into_cells(n);
 }
 
+extern template class CellList<1>;
 extern template class CellList<2>;
 extern template class CellList<3>;
 

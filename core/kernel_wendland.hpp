@@ -1,8 +1,10 @@
 #pragma once
 // The Wendland quintic (C2) kernel, written with its support radius h (w = 0 for r >= h):
 //   w(r) = alpha_D (1 - q)^4 (1 + 4 q),   q = r / h,
-//   alpha_2 = 7 / (pi h^2),   alpha_3 = 21 / (2 pi h^3),
-// so that its integral over the support is 1. Paper 1 uses it with h = 3 dr (Table 1).
+//   alpha_1 = 3 / (2 h),   alpha_2 = 7 / (pi h^2),   alpha_3 = 21 / (2 pi h^3),
+// so that its integral over the support is 1 (in 1D: 2 h int_0^1 (1 - q)^4 (1 + 4q) dq = 2h / 3).
+// Paper 1 uses it with h = 3 dr (Table 1). It is positive definite in up to three dimensions
+// (Wendland's psi_{3,1}), so the same function serves 1D.
 
 #include <numbers>
 
@@ -10,14 +12,12 @@ namespace revsph {
 
 template <int D>
 class WendlandQuintic {
-  static_assert(D == 2 || D == 3, "the Wendland quintic is defined here for 2D and 3D");
+  static_assert(D >= 1 && D <= 3, "the Wendland quintic is defined here for 1D, 2D and 3D");
 
 public:
   explicit WendlandQuintic(double support_radius)
       : support_(support_radius), inverse_support_(1.0 / support_radius),
-        normalisation_(D == 2 ? 7.0 / (std::numbers::pi * support_radius * support_radius)
-                              : 21.0 / (2.0 * std::numbers::pi * support_radius * support_radius *
-                                        support_radius)) {}
+        normalisation_(normalisation(support_radius)) {}
 
   double support_radius() const { return support_; }
 
@@ -72,6 +72,16 @@ public:
   }
 
 private:
+  static double normalisation(double h) {
+    if constexpr (D == 1) {
+      return 3.0 / (2.0 * h);
+    } else if constexpr (D == 2) {
+      return 7.0 / (std::numbers::pi * h * h);
+    } else {
+      return 21.0 / (2.0 * std::numbers::pi * h * h * h);
+    }
+  }
+
   double support_;
   double inverse_support_;
   double normalisation_;

@@ -98,6 +98,10 @@ NeighbourList find_neighbours_brute_force(const CoordinateView<D>& targets,
   return result;
 }
 
+template void find_neighbours<1>(const CellList<1>&, const CoordinateView<1>&,
+                                 const CoordinateView<1>&, double, SelfPairs, NeighbourList&);
+template NeighbourList find_neighbours_brute_force<1>(const CoordinateView<1>&,
+                                                      const CoordinateView<1>&, double, SelfPairs);
 template void find_neighbours<2>(const CellList<2>&, const CoordinateView<2>&,
                                  const CoordinateView<2>&, double, SelfPairs, NeighbourList&);
 template void find_neighbours<3>(const CellList<3>&, const CoordinateView<3>&,

@@ -22,7 +22,8 @@ SlotRange row_range(std::span<const std::uint32_t> cell_start, std::size_t row, 
 }
 
 // The rows of the 3^D block around `cell` that come after the cell's own row in cell (= slot)
-// order, as slot ranges of three cells each (clamped): one row in 2D, up to four in 3D. The rest
+// order, as slot ranges of three cells each (clamped): none in 1D (the own row is the whole
+// axis), one row in 2D, up to four in 3D. The rest
 // of the own row depends on the slot and is handled by the caller.
 template <int D>
 int forward_rows(std::span<const std::uint32_t> cell_start, const std::array<int, D>& per_axis,
@@ -32,7 +33,9 @@ int forward_rows(std::span<const std::uint32_t> cell_start, const std::array<int
   auto add_row = [&](std::size_t row) {
     ranges[count++] = row_range(cell_start, row, cell[0] - 1, cell[0] + 1, nx);
   };
-  if constexpr (D == 2) {
+  if constexpr (D == 1) {
+    (void)add_row;
+  } else if constexpr (D == 2) {
     if (cell[1] + 1 < per_axis[1]) {
       add_row(static_cast<std::size_t>(cell[1] + 1) * nx);
     }
@@ -150,6 +153,7 @@ void HalfPairList::build(const CellList<D>& cells, const CoordinateView<D>& x, d
   }
 }
 
+template void HalfPairList::build<1>(const CellList<1>&, const CoordinateView<1>&, double);
 template void HalfPairList::build<2>(const CellList<2>&, const CoordinateView<2>&, double);
 template void HalfPairList::build<3>(const CellList<3>&, const CoordinateView<3>&, double);
 

@@ -70,6 +70,7 @@ void HalfPairList::for_each_slot(Visit&& visit) const {
   }
 }
 
+extern template void HalfPairList::build<1>(const CellList<1>&, const CoordinateView<1>&, double);
 extern template void HalfPairList::build<2>(const CellList<2>&, const CoordinateView<2>&, double);
 extern template void HalfPairList::build<3>(const CellList<3>&, const CoordinateView<3>&, double);
 

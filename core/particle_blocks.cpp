@@ -19,10 +19,12 @@ template <int D>
 Vec<D> lattice_periods(Lattice lattice, double spacing) {
   Vec<D> period{};
   period.fill(spacing);
-  if (lattice == Lattice::hexagonal) {
-    period[1] = spacing * std::sqrt(3.0) / 2.0;
-    if constexpr (D == 3) {
-      period[2] = spacing * std::sqrt(2.0 / 3.0);
+  if constexpr (D >= 2) {
+    if (lattice == Lattice::hexagonal) {
+      period[1] = spacing * std::sqrt(3.0) / 2.0;
+      if constexpr (D == 3) {
+        period[2] = spacing * std::sqrt(2.0 / 3.0);
+      }
     }
   }
   if (lattice == Lattice::body_centred_cubic) {
@@ -96,30 +98,37 @@ std::vector<Vec<D>> lattice_points_outside(Lattice lattice, const Box<D>& region
   auto point = [&](long column, long row, long layer) {
     Vec<D> p{};
     p[0] = region.min[0] + (0.5 + static_cast<double>(column)) * period[0];
-    p[1] = region.min[1] + (0.5 + static_cast<double>(row)) * period[1];
+    if constexpr (D == 1) {
+      return p; // a 1D lattice is a row of equally spaced points
+    } else {
+      p[1] = region.min[1] + (0.5 + static_cast<double>(row)) * period[1];
+    }
     if constexpr (D == 3) {
       p[2] = region.min[2] + (0.5 + static_cast<double>(layer)) * period[2];
     }
-    if (lattice == Lattice::hexagonal) {
-      // Odd rows shift by half a spacing; in 3D odd layers (B of ABAB stacking) shift by
-      // (spacing / 2, row period / 3).
-      p[0] += (row % 2 == 1 ? 0.5 * spacing : 0.0);
-      if (D == 3 && layer % 2 == 1) {
-        p[0] += 0.5 * spacing;
-        p[1] += period[1] / 3.0;
+    if constexpr (D >= 2) {
+      if (lattice == Lattice::hexagonal) {
+        // Odd rows shift by half a spacing; in 3D odd layers (B of ABAB stacking) shift by
+        // (spacing / 2, row period / 3).
+        p[0] += (row % 2 == 1 ? 0.5 * spacing : 0.0);
+        if (D == 3 && layer % 2 == 1) {
+          p[0] += 0.5 * spacing;
+          p[1] += period[1] / 3.0;
+        }
       }
-    }
-    if (lattice == Lattice::body_centred_cubic && layer % 2 == 1) {
-      // Cube centres: half a spacing along x and y from the corner layers.
-      p[0] += 0.5 * spacing;
-      p[1] += 0.5 * spacing;
+      if (lattice == Lattice::body_centred_cubic && layer % 2 == 1) {
+        // Cube centres: half a spacing along x and y from the corner layers.
+        p[0] += 0.5 * spacing;
+        p[1] += 0.5 * spacing;
+      }
     }
     return p;
   };
   std::vector<Vec<D>> points;
   const long layers = D == 3 ? counts[D - 1] : 1;
+  const long rows = D >= 2 ? counts[D >= 2 ? 1 : 0] : 1;
   for (long layer = 0; layer < layers; ++layer) {
-    for (long row = 0; row < counts[1]; ++row) {
+    for (long row = 0; row < rows; ++row) {
       for (long column = 0; column < counts[0]; ++column) {
         const Vec<D> p = point(column, row, layer);
         if (hollow != nullptr && strictly_inside<D>(*hollow, p)) {
@@ -310,6 +319,9 @@ BlockSpec<D> read_block(const CaseFile& case_file, std::size_t index, double def
   const std::string lattice_name = case_file.string_or(field("lattice"), "square");
   if (lattice_name == "hexagonal") {
     spec.lattice = Lattice::hexagonal;
+    if (D == 1) {
+      case_file.fail(field("lattice"), "a 1D block is a row of particles: use \"square\"");
+    }
   } else if (lattice_name == "vogel") {
     spec.lattice = Lattice::vogel;
     if (D != 2) {
@@ -470,12 +482,19 @@ read_particle_blocks(const CaseFile& case_file, double default_spacing, const Bo
   return blocks;
 }
 
+template std::vector<Vec<1>> lattice_points<1>(Lattice, const Box<1>&, double);
 template std::vector<Vec<2>> lattice_points<2>(Lattice, const Box<2>&, double);
 template std::vector<Vec<3>> lattice_points<3>(Lattice, const Box<3>&, double);
+template double lattice_cell_volume<1>(Lattice, double);
 template double lattice_cell_volume<2>(Lattice, double);
 template double lattice_cell_volume<3>(Lattice, double);
+template Box<1> read_domain<1>(const CaseFile&);
 template Box<2> read_domain<2>(const CaseFile&);
 template Box<3> read_domain<3>(const CaseFile&);
+template std::vector<ParticleBlock<1>> read_particle_blocks<1>(const CaseFile&, double,
+                                                               const Box<1>&,
+                                                               std::span<const std::string_view>,
+                                                               const ParticleBudget&);
 template std::vector<ParticleBlock<2>> read_particle_blocks<2>(const CaseFile&, double,
                                                                const Box<2>&,
                                                                std::span<const std::string_view>,

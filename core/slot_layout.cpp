@@ -49,6 +49,7 @@ void SlotLayout<D>::record_fault(FaultRecorder& faults, std::size_t slot, const 
   faults.record(index, set, variable, reason);
 }
 
+template class SlotLayout<1>;
 template class SlotLayout<2>;
 template class SlotLayout<3>;
 

@@ -122,6 +122,7 @@ void SlotLayout<D>::scatter(std::span<const T> by_slot, std::vector<T>& by_carri
   }
 }
 
+extern template class SlotLayout<1>;
 extern template class SlotLayout<2>;
 extern template class SlotLayout<3>;
 

@@ -46,11 +46,21 @@ std::string xdmf_document(int dimension, const std::vector<XdmfSnapshot>& snapsh
       out << "        <Grid Name=\"" << set.name << "\" GridType=\"Uniform\">\n"
           << "          <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << set.count
           << "\" NodesPerElement=\"1\"/>\n"
-          << "          <Geometry GeometryType=\"" << (dimension == 2 ? "XY" : "XYZ") << "\">\n";
+          << "          <Geometry GeometryType=\""
+          << (dimension == 1 ? "X_Y_Z" : dimension == 2 ? "XY" : "XYZ") << "\">\n";
       bool has_position = false;
       for (const XdmfField& field : set.fields) {
         if (field.name == "position") {
           data_item(out, "            ", snapshot, set, field);
+          if (dimension == 1) {
+            // XDMF has no one-coordinate geometry: y = z = 0 x, as function items of x.
+            for (int axis = 1; axis < 3; ++axis) {
+              out << "            <DataItem ItemType=\"Function\" Function=\"0 * $0\" "
+                  << "Dimensions=\"" << set.count << "\">\n";
+              data_item(out, "              ", snapshot, set, field);
+              out << "            </DataItem>\n";
+            }
+          }
           has_position = true;
         }
       }

@@ -1,6 +1,7 @@
 #include "models/shtc/setup.hpp"
 
 #include "core/case_values.hpp"
+#include "core/dimension.hpp"
 #include "core/particle_blocks.hpp"
 #include "core/run_settings.hpp"
 #include "models/shtc/model.hpp"
@@ -235,14 +236,9 @@ std::unique_ptr<Simulation> create(const CaseFile& case_file, const SimulationOp
         "SHTC-SPH runs in fixed point only: its distortion update is exact in integers "
         "(models/shtc/README.md)");
   }
-  const std::int64_t dimension = case_file.integer("dimension");
-  if (dimension == 2) {
-    return create_in<2>(case_file, options);
-  }
-  if (dimension == 3) {
-    return create_in<3>(case_file, options);
-  }
-  case_file.fail("dimension", "must be 2 or 3 (got " + std::to_string(dimension) + ")");
+  // The distortion algebra (distortion.hpp) is written for 2D and 3D.
+  return with_dimension<2, 3>(case_file,
+                              [&]<int D>() { return create_in<D>(case_file, options); });
 }
 
 } // namespace revsph::shtc

@@ -168,7 +168,9 @@ void apply_jitter(CoordinateArrays<D>& points, const IscSettings& settings) {
   const double largest = settings.jitter * settings.spacing;
   for (std::size_t i = 0; i < points[0].size(); ++i) {
     Vec<D> direction{};
-    if constexpr (D == 2) {
+    if constexpr (D == 1) {
+      direction = {unit_uniform(engine) < 0.5 ? -1.0 : 1.0};
+    } else if constexpr (D == 2) {
       const double angle = 2.0 * std::numbers::pi * unit_uniform(engine);
       direction = {std::cos(angle), std::sin(angle)};
     } else {
@@ -494,6 +496,9 @@ IscReport correct_initial_state(CoordinateArrays<D>& movable, std::span<const do
   return report;
 }
 
+template IscReport correct_initial_state<1>(CoordinateArrays<1>&, std::span<const double>,
+                                            const CoordinateArrays<1>&, std::span<const double>,
+                                            double, double, const Box<1>&, const IscSettings&);
 template IscReport correct_initial_state<2>(CoordinateArrays<2>&, std::span<const double>,
                                             const CoordinateArrays<2>&, std::span<const double>,
                                             double, double, const Box<2>&, const IscSettings&);

@@ -65,6 +65,10 @@ IscReport correct_initial_state(CoordinateArrays<D>& movable, std::span<const do
                                 double rest_density, const Box<D>& domain,
                                 const IscSettings& settings);
 
+extern template IscReport correct_initial_state<1>(CoordinateArrays<1>&, std::span<const double>,
+                                                   const CoordinateArrays<1>&,
+                                                   std::span<const double>, double, double,
+                                                   const Box<1>&, const IscSettings&);
 extern template IscReport correct_initial_state<2>(CoordinateArrays<2>&, std::span<const double>,
                                                    const CoordinateArrays<2>&,
                                                    std::span<const double>, double, double,

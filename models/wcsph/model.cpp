@@ -350,7 +350,7 @@ void Model<D, Arith>::derived_views(const ViewSink& sink) {
     }
     return values;
   };
-  const std::string energy_unit = D == 2 ? "J/m" : "J";
+  const std::string energy_unit = D == 1 ? "J/m^2" : (D == 2 ? "J/m" : "J");
   // Each view is built, handed over and freed before the next (the snapshot write is the peak of
   // a run's memory).
   auto emit = [&](const char* set, const char* name, std::string unit, int components,
@@ -377,9 +377,12 @@ void Model<D, Arith>::derived_views(const ViewSink& sink) {
 
 template <int D, class Arith>
 std::vector<EnergyTerm> Model<D, Arith>::diagnostics() {
-  if (parameters_.initial_field != InitialField::gresho_vortex) {
-    return {};
-  }
+  if constexpr (D != 2) {
+    return {}; // the Gresho vortex is two-dimensional (parameters.cpp)
+  } else {
+    if (parameters_.initial_field != InitialField::gresho_vortex) {
+      return {};
+    }
   // Paper 1 eq. (11) at this instant: sqrt(75 / (4 pi) sum_a V_a |u_a - u0(r_a)|^2), for the
   // velocity and for its Shepard-filtered field; the error of a run is the maximum over time.
   update_derived();
@@ -398,10 +401,13 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics() {
   }
   return {{"velocity_error", std::sqrt(raw_sum / gresho::velocity_norm_squared)},
           {"filtered_velocity_error", std::sqrt(filtered_sum / gresho::velocity_norm_squared)}};
+  }
 }
 
+template class Model<1, FixedArithmetic>;
 template class Model<2, FixedArithmetic>;
 template class Model<3, FixedArithmetic>;
+template class Model<1, FloatArithmetic>;
 template class Model<2, FloatArithmetic>;
 template class Model<3, FloatArithmetic>;
 

@@ -117,8 +117,10 @@ private:
   std::array<std::vector<double>, D> acceleration_;   // fluid, canonical order
 };
 
+extern template class Model<1, FixedArithmetic>;
 extern template class Model<2, FixedArithmetic>;
 extern template class Model<3, FixedArithmetic>;
+extern template class Model<1, FloatArithmetic>;
 extern template class Model<2, FloatArithmetic>;
 extern template class Model<3, FloatArithmetic>;
 

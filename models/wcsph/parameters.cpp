@@ -130,6 +130,7 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   return p;
 }
 
+template Parameters<1> read_parameters<1>(const CaseFile&);
 template Parameters<2> read_parameters<2>(const CaseFile&);
 template Parameters<3> read_parameters<3>(const CaseFile&);
 

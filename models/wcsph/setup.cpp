@@ -1,6 +1,7 @@
 #include "models/wcsph/setup.hpp"
 
 #include "core/case_values.hpp"
+#include "core/dimension.hpp"
 #include "core/particle_blocks.hpp"
 #include "core/run_settings.hpp"
 #include "models/wcsph/gresho.hpp"
@@ -21,8 +22,9 @@ constexpr std::string_view particle_kinds[] = {"fluid", "wall", "dummy"};
 // particle in 2D at h = 3 dr (~28 neighbours; tools/bench/results).
 double bytes_per_particle(int dimension, double support_radius_over_dr) {
   const double r = support_radius_over_dr;
-  const double neighbours =
-      dimension == 2 ? std::numbers::pi * r * r : 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  const double neighbours = dimension == 1   ? 2.0 * r
+                            : dimension == 2 ? std::numbers::pi * r * r
+                                             : 4.0 / 3.0 * std::numbers::pi * r * r * r;
   return 250.0 + 8.0 * neighbours;
 }
 // Masses are constants of the setup; 52 bits keep their double view exact.
@@ -42,20 +44,26 @@ InitialFields<D> initial_fields(const Parameters<D>& parameters,
                                 const std::vector<Vec<D>>& fluid_positions,
                                 const std::vector<Vec<D>>& dummy_positions) {
   InitialFields<D> fields{std::vector<Vec<D>>(fluid_positions.size()), {}};
+  // The Gresho vortex is two-dimensional (parameters.cpp refuses it in 1D and 3D).
+  const bool gresho = D == 2 && parameters.initial_field == InitialField::gresho_vortex;
   auto target = [&](const Vec<D>& p) {
-    if (parameters.initial_field != InitialField::gresho_vortex) {
-      return parameters.rest_density;
+    if constexpr (D == 2) {
+      if (gresho) {
+        const double r = std::hypot(p[0] - parameters.centre[0], p[1] - parameters.centre[1]);
+        return tait_density(gresho::pressure(r, parameters.rest_density),
+                            parameters.rest_density, parameters.sound_speed);
+      }
     }
-    const double r = std::hypot(p[0] - parameters.centre[0], p[1] - parameters.centre[1]);
-    return tait_density(gresho::pressure(r, parameters.rest_density), parameters.rest_density,
-                        parameters.sound_speed);
+    return parameters.rest_density;
   };
   for (std::size_t a = 0; a < fluid_positions.size(); ++a) {
     const Vec<D>& p = fluid_positions[a];
-    if (parameters.initial_field == InitialField::gresho_vortex) {
-      const auto u = gresho::velocity(p[0] - parameters.centre[0], p[1] - parameters.centre[1]);
-      fields.velocity[a][0] = u[0];
-      fields.velocity[a][1] = u[1];
+    if constexpr (D == 2) {
+      if (gresho) {
+        const auto u = gresho::velocity(p[0] - parameters.centre[0], p[1] - parameters.centre[1]);
+        fields.velocity[a][0] = u[0];
+        fields.velocity[a][1] = u[1];
+      }
     }
     fields.target_density.push_back(target(p));
   }
@@ -251,14 +259,8 @@ std::unique_ptr<Simulation> create_with_arithmetic(const CaseFile& case_file,
 } // namespace
 
 std::unique_ptr<Simulation> create(const CaseFile& case_file, const SimulationOptions& options) {
-  const std::int64_t dimension = case_file.integer("dimension");
-  if (dimension == 2) {
-    return create_with_arithmetic<2>(case_file, options);
-  }
-  if (dimension == 3) {
-    return create_with_arithmetic<3>(case_file, options);
-  }
-  case_file.fail("dimension", "must be 2 or 3 (got " + std::to_string(dimension) + ")");
+  return with_dimension<1, 2, 3>(
+      case_file, [&]<int D>() { return create_with_arithmetic<D>(case_file, options); });
 }
 
 } // namespace revsph::wcsph

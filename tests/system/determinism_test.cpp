@@ -48,10 +48,11 @@ TEST_P(Determinism, HashIsTheSameForThreadCountsAndCellSizes) {
   }
 }
 
-// Both models, 2D and 3D: wcsph (fluid, walls), SHTC's elastic plate, its driven cavity (moving
+// Both models, 1D, 2D and 3D: wcsph (fluid, walls), SHTC's elastic plate, its driven cavity (moving
 // walls and relaxation) and its twisting column (3D).
 INSTANTIATE_TEST_SUITE_P(BothModels, Determinism,
-                         ::testing::Values(DeterminismCase{"dambreak-small", 100},
+                         ::testing::Values(DeterminismCase{"column-1d", 400},
+                                           DeterminismCase{"dambreak-small", 100},
                                            DeterminismCase{"dambreak-3d-small", 15},
                                            DeterminismCase{"beryllium-plate-small", 40},
                                            DeterminismCase{"cavity-re100-small", 25},

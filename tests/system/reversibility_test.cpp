@@ -1,6 +1,7 @@
 // The central promise: forward N steps, time reversal, N steps, time reversal returns every raw
 // integer of the initial state. And the verifier that checks it can fail.
 
+#include "core/threads.hpp"
 #include "simulation_fixture.hpp"
 #include "verify/reversibility.hpp"
 
@@ -48,6 +49,25 @@ TEST(Reversibility, Dambreak3DReturnsBitwise) {
   options.steps = 400;
   const auto report = revsph::verify_reversibility(*simulation, options);
   EXPECT_TRUE(report.identical()) << report.comparison.verdict();
+}
+
+// The 1D path (kernel, lattice, cell and pair lists): 2 000 steps each way on 1 and 2 threads,
+// and every sub-step self-inverse on its own.
+TEST(Reversibility, Column1DReturnsBitwiseOnOneAndTwoThreads) {
+  for (const int threads : {1, 2}) {
+    const int previous = revsph::thread_count();
+    revsph::set_thread_count(threads);
+    auto simulation = make_simulation("column-1d");
+    VerifyOptions options;
+    options.steps = 2000;
+    const auto report = revsph::verify_reversibility(*simulation, options);
+    EXPECT_TRUE(report.identical()) << threads << " threads: " << report.comparison.verdict();
+    EXPECT_NE(report.initial_hash, report.turning_point_hash) << "the column did move";
+    for (const auto& check : revsph::check_substeps(*simulation, simulation->info().dt)) {
+      EXPECT_TRUE(check.comparison.identical) << check.name << ": " << check.comparison.verdict();
+    }
+    revsph::set_thread_count(previous);
+  }
 }
 
 TEST(Reversibility, FloatingPointVariantDoesNotReturnAndReportsHowFar) {

@@ -1,4 +1,4 @@
-// The Wendland quintic kernel: normalisation and derivative, in 2D and 3D.
+// The Wendland quintic kernel: normalisation and derivative, in 1D, 2D and 3D.
 
 #include "core/kernel_wendland.hpp"
 
@@ -29,6 +29,14 @@ double integrate(F&& f, double h, int panels) {
     }
   }
   return total;
+}
+
+TEST(WendlandQuintic, IntegratesToOneIn1D) {
+  for (const double h : {0.015, 1.0, 3.7}) {
+    const WendlandQuintic<1> kernel(h);
+    const double integral = integrate([&](double r) { return 2.0 * kernel.value(r); }, h, 64);
+    EXPECT_NEAR(integral, 1.0, 1e-10) << "h = " << h;
+  }
 }
 
 TEST(WendlandQuintic, IntegratesToOneIn2D) {
@@ -86,6 +94,8 @@ void expect_derivative_matches_finite_differences(double h) {
 }
 
 TEST(WendlandQuintic, DerivativeMatchesFiniteDifferences) {
+  expect_derivative_matches_finite_differences<1>(0.015);
+  expect_derivative_matches_finite_differences<1>(2.0);
   expect_derivative_matches_finite_differences<2>(0.015);
   expect_derivative_matches_finite_differences<2>(2.0);
   expect_derivative_matches_finite_differences<3>(0.015);
@@ -97,7 +107,8 @@ TEST(WendlandQuintic, DerivativeMatchesFiniteDifferences) {
 namespace {
 
 // h dw/dh and h d/dh (w'/r) at fixed r, against central differences in the support and against
-// the closed forms printed in paper 2 (eqs. 43–46, support 2h).
+// the closed forms printed in paper 2 (eqs. 43–46, support 2h; 2D and 3D only, 1D against the
+// differences alone).
 template <int D>
 void expect_scale_derivatives(double h) {
   const double support = 2.0 * h;
@@ -127,7 +138,7 @@ void expect_scale_derivatives(double h) {
       EXPECT_NEAR(kernel.scale_derivative_of_derivative_over_r(r), eq44_corrected,
                   1e-12 * slope_scale)
           << "eq. 44, r = " << r;
-    } else {
+    } else if constexpr (D == 3) {
       const double eq45 =
           21.0 / (32.0 * pi * h * h * h) * u * u * u * (16.0 * s * s - 9.0 * s - 6.0);
       const double eq46 = -105.0 / (16.0 * pi * std::pow(h, 5)) * u * u * (4.0 * s - 5.0);
@@ -136,6 +147,11 @@ void expect_scale_derivatives(double h) {
           << "eq. 46, r = " << r;
     }
   }
+}
+
+TEST(WendlandQuintic, ScaleDerivativesIn1D) {
+  expect_scale_derivatives<1>(1.0);
+  expect_scale_derivatives<1>(0.013);
 }
 
 TEST(WendlandQuintic, ScaleDerivativesIn2D) {

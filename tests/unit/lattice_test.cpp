@@ -24,6 +24,15 @@ TEST(Lattice, SquareBlockHoldsOneParticlePerCellAtCellCentres) {
   const auto cube =
       revsph::lattice_points<3>(Lattice::square, Box<3>{{0, 0, 0}, {1, 0.5, 0.25}}, 0.05);
   EXPECT_EQ(cube.size(), 20u * 10u * 5u);
+  // 1D: a row of points at the cell centres, each standing for one spacing.
+  const auto row = revsph::lattice_points<1>(Lattice::square, Box<1>{{0}, {2}}, 0.01);
+  ASSERT_EQ(row.size(), 200u);
+  EXPECT_NEAR(row.front()[0], 0.005, 1e-15);
+  EXPECT_NEAR(row.back()[0], 1.995, 1e-12);
+  for (std::size_t i = 1; i < row.size(); ++i) {
+    EXPECT_NEAR(row[i][0] - row[i - 1][0], 0.01, 1e-12);
+  }
+  EXPECT_DOUBLE_EQ(revsph::lattice_cell_volume<1>(Lattice::square, 0.01), 0.01);
 }
 
 TEST(Lattice, HexagonalBlockHasNearestNeighboursAtTheSpacing) {

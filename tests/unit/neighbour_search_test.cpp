@@ -81,6 +81,11 @@ void check_against_brute_force(std::size_t n, double radius, std::uint64_t seed)
               cell_list_neighbours<D>(others, points, domain, radius, radius, SelfPairs::included));
 }
 
+TEST(NeighbourSearch, MatchesBruteForceIn1D) {
+  check_against_brute_force<1>(3000, 0.002, 1);
+  check_against_brute_force<1>(200, 0.05, 2);
+}
+
 TEST(NeighbourSearch, MatchesBruteForceIn2D) {
   check_against_brute_force<2>(3000, 0.12, 1);
   check_against_brute_force<2>(500, 0.4, 2);

@@ -111,6 +111,12 @@ void expect_brute_force_pairs(std::size_t n, double radius, double cell_size, st
   EXPECT_EQ(listed, brute_force_pairs<D>(points.slot_points, radius));
 }
 
+TEST(HalfPairList, MatchesBruteForceIn1D) {
+  expect_brute_force_pairs<1>(3000, 0.002, 0.002, 1);
+  expect_brute_force_pairs<1>(3000, 0.002, 0.0035, 2); // cells larger than the radius
+  expect_brute_force_pairs<1>(100, 0.3, 0.3, 3);       // few cells
+}
+
 TEST(HalfPairList, MatchesBruteForceIn2D) {
   expect_brute_force_pairs<2>(3000, 0.05, 0.05, 1);
   expect_brute_force_pairs<2>(3000, 0.05, 0.08, 2); // cells larger than the radius

@@ -1,0 +1,33 @@
+#pragma once
+// The one point where a case's `dimension` becomes the template parameter D: a model's setup
+// names the dimensions it implements and gets its creator instantiated for each,
+//   with_dimension<1, 2, 3>(case_file, [&]<int D>() { return create<D>(case_file); });
+// and a case asking for another dimension gets one error naming the ones that exist.
+
+#include "core/case_file.hpp"
+
+#include <cstdint>
+#include <string>
+
+namespace revsph {
+
+template <int... Dimensions, class Create>
+auto with_dimension(const CaseFile& case_file, Create&& create) {
+  static_assert(sizeof...(Dimensions) > 0 && ((Dimensions >= 1 && Dimensions <= 3) && ...));
+  const std::int64_t dimension = case_file.integer("dimension");
+  using Result = decltype(create.template operator()<(Dimensions, ...)>());
+  Result result{};
+  const bool found = ((dimension == Dimensions
+                           ? (result = create.template operator()<Dimensions>(), true)
+                           : false) ||
+                      ...);
+  if (!found) {
+    std::string allowed;
+    ((allowed += (allowed.empty() ? "" : " or ") + std::to_string(Dimensions)), ...);
+    case_file.fail("dimension",
+                   "must be " + allowed + " for this model (got " + std::to_string(dimension) + ")");
+  }
+  return result;
+}
+
+} // namespace revsph
