@@ -453,7 +453,9 @@ void CaseFile::require_no_unknown_keys() const {
       model = table->name();
     }
   }
-  fail(first->key, "unknown key (" + where + "; every key: revsph cases --keys " + model + ")");
+  const std::string nearest = nearest_declared_key(key_tables_, first->key);
+  fail(first->key, "unknown key (" + where + "; every key: revsph cases --keys " + model + ")" +
+                       (nearest.empty() ? std::string() : "; did you mean " + nearest + "?"));
 }
 
 } // namespace revsph

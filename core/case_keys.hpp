@@ -71,6 +71,11 @@ private:
 // "particles[3].min" -> "particles[].min": the pattern a key is declared under.
 std::string key_pattern(std::string_view key);
 
+// The declared key closest to a misspelt `key` ("discretisation.drr" -> "discretisation.dr"), with
+// the array indices of `key` filled in; empty if none is within two edits. For the unknown-key
+// error.
+std::string nearest_declared_key(const std::vector<const KeyTable*>& tables, std::string_view key);
+
 // The keys every case file has, whatever its model: model, name, [run], [output].
 const KeyTable& common_case_keys();
 

@@ -172,8 +172,8 @@ const KeyTable& case_keys() {
            T::string,
            "-",
            "\"rest\"",
-           "initial velocity and pressure: at rest (hydrostatic with gravity) or the Gresho "
-           "vortex (2D)",
+           "initial velocity and density: at rest with every density rho0, or the Gresho vortex "
+           "(2D; its velocity, and the density whose Tait pressure is the vortex's pressure)",
            {"rest", "gresho"}});
     t.add({"initial.centre", T::numbers, "m", "the origin", "centre of the Gresho vortex"});
     t.add({"initial_state_correction.enabled", T::boolean, "-", "false",

@@ -198,17 +198,39 @@ TEST(CaseKeys, KeysReadBeforeTheTablesAreCheckedWhenTheyArrive) {
 TEST(CaseKeys, UnknownKeyNamesTheCommandListingTheKeys) {
   for (const std::string& model : {std::string("wcsph"), std::string("shtc")}) {
     CaseFile case_file = load_case(base_case_of(model));
-    case_file.set("discretisation.ddr", "0.1");
+    case_file.set("discretisation.bogus_key", "0.1"); // no declared key near it
     read_run_settings(case_file);
     create_simulation(case_file, SimulationOptions{});
     try {
       case_file.require_no_unknown_keys();
       ADD_FAILURE() << "the unknown key was accepted";
     } catch (const CaseError& error) {
-      EXPECT_EQ(error.key(), "discretisation.ddr");
+      EXPECT_EQ(error.key(), "discretisation.bogus_key");
       EXPECT_EQ(error.reason(),
                 "unknown key (given with --set; every key: revsph cases --keys " + model + ")");
     }
+  }
+}
+
+TEST(CaseKeys, UnknownKeySuggestsTheNearestDeclaredOne) {
+  const std::vector<const KeyTable*> tables = {&common_case_keys(), &model_entry("wcsph").keys()};
+  EXPECT_EQ(nearest_declared_key(tables, "discretisation.drr"), "discretisation.dr");
+  EXPECT_EQ(nearest_declared_key(tables, "walls.epsilon"), "wall.epsilon");
+  EXPECT_EQ(nearest_declared_key(tables, "particles[3].lattise"), "particles[3].lattice");
+  EXPECT_EQ(nearest_declared_key(tables, "dimensions"), "dimension");
+  EXPECT_EQ(nearest_declared_key(tables, "colour"), "");
+  EXPECT_EQ(nearest_declared_key(tables, "particles[0].colour"), "");
+
+  CaseFile case_file = load_case("dambreak-small");
+  case_file.set("physics.sound_sped", "100");
+  read_run_settings(case_file);
+  create_simulation(case_file, SimulationOptions{});
+  try {
+    case_file.require_no_unknown_keys();
+    ADD_FAILURE() << "the unknown key was accepted";
+  } catch (const CaseError& error) {
+    EXPECT_EQ(error.reason(), "unknown key (given with --set; every key: revsph cases --keys "
+                              "wcsph); did you mean physics.sound_speed?");
   }
 }
 
