@@ -1,5 +1,7 @@
 #include "core/case_file.hpp"
 
+#include "core/case_keys.hpp"
+
 #include <toml++/toml.h>
 
 #include <charconv>
@@ -45,6 +47,43 @@ std::string format_number(double value) {
   std::ostringstream out;
   out << value;
   return out.str();
+}
+
+std::string table_names(const std::vector<const KeyTable*>& tables) {
+  std::string names;
+  for (const KeyTable* table : tables) {
+    names += (names.empty() ? "" : ", ") + table->name();
+  }
+  return names;
+}
+
+// A declared default written as TOML must be the one the reader falls back to: the reference
+// shows the table's, the run uses the reader's. Descriptions ("dr") are not compared.
+void check_default(const KeyDecl& decl, std::string_view key, bool same, bool literal) {
+  if (literal && !same) {
+    throw std::logic_error("case key \"" + std::string(key) +
+                           "\": the reader's default differs "
+                           "from the declared default " +
+                           decl.default_value);
+  }
+}
+
+std::optional<double> literal_number(const std::string& text) {
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
+    return std::nullopt;
+  }
+  return value;
+}
+
+std::optional<std::int64_t> literal_integer(const std::string& text) {
+  std::int64_t value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
+    return std::nullopt;
+  }
+  return value;
 }
 
 struct UnreadKey {
@@ -125,6 +164,44 @@ void CaseFile::fail(std::string_view key, const std::string& reason) const {
   throw CaseError(source_name_, std::string(key), reason);
 }
 
+const KeyDecl* CaseFile::declared(std::string_view key, const KeyType* type) const {
+  if (!accessed_keys_.contains(key)) {
+    accessed_keys_.emplace(key);
+  }
+  if (key_tables_.empty()) {
+    return nullptr;
+  }
+  const std::string pattern = key_pattern(key);
+  for (const KeyTable* table : key_tables_) {
+    if (const KeyDecl* decl = table->find(pattern)) {
+      if (type != nullptr && decl->type != *type) {
+        throw std::logic_error("case key \"" + std::string(key) + "\" is declared as " +
+                               std::string(to_string(decl->type)) + " but read as " +
+                               std::string(to_string(*type)));
+      }
+      return decl;
+    }
+  }
+  throw std::logic_error("case key \"" + std::string(key) +
+                         "\" is read but not declared in the key tables (" +
+                         table_names(key_tables_) + "): declare it in the model's case_keys()");
+}
+
+void CaseFile::use_keys(std::vector<const KeyTable*> tables) const {
+  key_tables_ = std::move(tables);
+  // The keys read before the tables were known (model, name, [run], [output]) are checked now.
+  for (const std::string& key : accessed_keys_) {
+    const std::string pattern = key_pattern(key);
+    bool known = false;
+    for (const KeyTable* table : key_tables_) {
+      known = known || table->find(pattern) != nullptr || table->declares_table(pattern);
+    }
+    if (!known) {
+      declared(key, nullptr); // throws the logic_error naming the key
+    }
+  }
+}
+
 const toml::node* CaseFile::find(std::string_view key) const {
   read_keys_.emplace(key);
   return root_->at_path(key).node();
@@ -139,10 +216,13 @@ const toml::node& CaseFile::require(std::string_view key) const {
 }
 
 bool CaseFile::has(std::string_view key) const {
+  declared(key, nullptr);
   return root_->at_path(key).node() != nullptr;
 }
 
 double CaseFile::number(std::string_view key) const {
+  constexpr KeyType type = KeyType::number;
+  declared(key, &type);
   const toml::node& node = require(key);
   if (!node.is_number()) {
     fail(key, "expected a number, got " + describe_type(node));
@@ -155,6 +235,11 @@ double CaseFile::number(std::string_view key) const {
 }
 
 double CaseFile::number_or(std::string_view key, double fallback) const {
+  constexpr KeyType type = KeyType::number;
+  if (const KeyDecl* decl = declared(key, &type)) {
+    const std::optional<double> literal = literal_number(decl->default_value);
+    check_default(*decl, key, literal == fallback, literal.has_value());
+  }
   return has(key) ? number(key) : fallback;
 }
 
@@ -167,6 +252,8 @@ double CaseFile::positive_number(std::string_view key) const {
 }
 
 std::int64_t CaseFile::integer(std::string_view key) const {
+  constexpr KeyType type = KeyType::integer;
+  declared(key, &type);
   const toml::node& node = require(key);
   if (!node.is_integer()) {
     fail(key, "expected an integer, got " + describe_type(node));
@@ -175,10 +262,17 @@ std::int64_t CaseFile::integer(std::string_view key) const {
 }
 
 std::int64_t CaseFile::integer_or(std::string_view key, std::int64_t fallback) const {
+  constexpr KeyType type = KeyType::integer;
+  if (const KeyDecl* decl = declared(key, &type)) {
+    const std::optional<std::int64_t> literal = literal_integer(decl->default_value);
+    check_default(*decl, key, literal == fallback, literal.has_value());
+  }
   return has(key) ? integer(key) : fallback;
 }
 
 std::string CaseFile::string(std::string_view key) const {
+  constexpr KeyType type = KeyType::string;
+  declared(key, &type);
   const toml::node& node = require(key);
   if (!node.is_string()) {
     fail(key, "expected a string, got " + describe_type(node));
@@ -187,10 +281,21 @@ std::string CaseFile::string(std::string_view key) const {
 }
 
 std::string CaseFile::string_or(std::string_view key, std::string fallback) const {
+  constexpr KeyType type = KeyType::string;
+  if (const KeyDecl* decl = declared(key, &type)) {
+    const std::string& d = decl->default_value;
+    const bool quoted = d.size() >= 2 && d.front() == '"' && d.back() == '"';
+    check_default(*decl, key, quoted && d.substr(1, d.size() - 2) == fallback, quoted);
+  }
   return has(key) ? string(key) : fallback;
 }
 
 bool CaseFile::boolean_or(std::string_view key, bool fallback) const {
+  constexpr KeyType type = KeyType::boolean;
+  if (const KeyDecl* decl = declared(key, &type)) {
+    const std::string& d = decl->default_value;
+    check_default(*decl, key, d == (fallback ? "true" : "false"), d == "true" || d == "false");
+  }
   if (!has(key)) {
     return fallback;
   }
@@ -202,6 +307,8 @@ bool CaseFile::boolean_or(std::string_view key, bool fallback) const {
 }
 
 std::vector<double> CaseFile::numbers(std::string_view key, std::size_t size) const {
+  constexpr KeyType type = KeyType::numbers;
+  declared(key, &type);
   const toml::node& node = require(key);
   const toml::array* array = node.as_array();
   if (array == nullptr) {
@@ -227,6 +334,8 @@ std::vector<double> CaseFile::numbers(std::string_view key, std::size_t size) co
 }
 
 std::size_t CaseFile::table_count(std::string_view key) const {
+  constexpr KeyType type = KeyType::tables;
+  declared(key, &type);
   const toml::node* node = find(key);
   if (node == nullptr) {
     return 0;
@@ -240,6 +349,17 @@ std::size_t CaseFile::table_count(std::string_view key) const {
 }
 
 void CaseFile::accept_table(std::string_view key) const {
+  accessed_keys_.emplace(key);
+  if (!key_tables_.empty()) {
+    bool known = false;
+    for (const KeyTable* table : key_tables_) {
+      known = known || table->declares_table(key_pattern(key));
+    }
+    if (!known) {
+      throw std::logic_error("case table \"" + std::string(key) +
+                             "\" is accepted but declares no key in the key tables");
+    }
+  }
   read_keys_.emplace(key);
 }
 
@@ -326,7 +446,16 @@ void CaseFile::require_no_unknown_keys() const {
   const std::string where = first->position.line == 0
                                 ? std::string("given with --set")
                                 : "line " + std::to_string(first->position.line);
-  fail(first->key, "unknown key (" + where + "); see the case-file reference in README.md");
+  // Point to the model's reference: the table other than the common one.
+  std::string model = "MODEL";
+  for (const KeyTable* table : key_tables_) {
+    if (table->name() != "common") {
+      model = table->name();
+    }
+  }
+  const std::string nearest = nearest_declared_key(key_tables_, first->key);
+  fail(first->key, "unknown key (" + where + "; every key: revsph cases --keys " + model + ")" +
+                       (nearest.empty() ? std::string() : "; did you mean " + nearest + "?"));
 }
 
 } // namespace revsph

@@ -4,6 +4,11 @@
 // Every problem is reported as one CaseError naming the file, the key and the reason. After a
 // model has read its parameters, require_no_unknown_keys() rejects anything nobody read, so a
 // misspelt key is an error instead of a silently ignored setting.
+//
+// With key tables attached (use_keys, done by create_simulation), every access is checked against
+// them: reading a key no table declares, or as another type than declared, or with another
+// default than declared, is a std::logic_error — a bug in the reader or its table, not in the
+// case. That makes the tables (core/case_keys.hpp) a complete reference of what is read.
 
 #include <cstdint>
 #include <filesystem>
@@ -22,6 +27,10 @@ class node;
 } // namespace toml
 
 namespace revsph {
+
+class KeyTable;
+struct KeyDecl;
+enum class KeyType;
 
 class CaseError : public std::runtime_error {
 public:
@@ -73,7 +82,16 @@ public:
   // word taken as a string. For command-line overrides (--set key=value).
   void set(std::string_view key, std::string_view value);
 
-  // Throws CaseError for the first key (in file order) that was never read.
+  // Checks every later access, and every key read so far, against these tables (the common
+  // keys and a model's; see above). The tables must outlive the case file.
+  void use_keys(std::vector<const KeyTable*> tables) const;
+  const std::vector<const KeyTable*>& key_tables() const { return key_tables_; }
+  // Every key and table path the readers asked for so far, as asked ("particles[1].min"):
+  // read, tested with has() or defaulted; present in the file or not.
+  const std::set<std::string, std::less<>>& accessed_keys() const { return accessed_keys_; }
+
+  // Throws CaseError for the first key (in file order) that was never read; the message names
+  // the command that lists every key of the model (revsph cases --keys MODEL).
   void require_no_unknown_keys() const;
 
   [[noreturn]] void fail(std::string_view key, const std::string& reason) const;
@@ -82,12 +100,17 @@ private:
   CaseFile(std::string text, std::string source_name);
   const toml::node* find(std::string_view key) const;
   const toml::node& require(std::string_view key) const;
+  // The declaration of `key` when tables are attached (nullptr otherwise); a std::logic_error if
+  // it is undeclared or declared with another type. A null `type` accepts any type.
+  const KeyDecl* declared(std::string_view key, const KeyType* type) const;
 
   std::string source_name_;
   std::string text_;
   std::vector<std::string> overrides_;
   std::unique_ptr<toml::table> root_;
   mutable std::set<std::string, std::less<>> read_keys_;
+  mutable std::set<std::string, std::less<>> accessed_keys_;
+  mutable std::vector<const KeyTable*> key_tables_;
 };
 
 } // namespace revsph

@@ -1,6 +1,7 @@
 #include "core/model_registry.hpp"
 
 #include <filesystem>
+#include <stdexcept>
 
 namespace revsph {
 
@@ -48,6 +49,10 @@ std::unique_ptr<Simulation> create_simulation(const CaseFile& case_file,
     }
     case_file.fail("model", "unknown model \"" + model + "\" (available: " + known + ")");
   }
+  if (entry->keys == nullptr) {
+    throw std::logic_error("model " + model + " registers no case-key table");
+  }
+  case_file.use_keys({&common_case_keys(), &entry->keys()});
   try {
     return entry->create(case_file, options);
   } catch (const SimulationFault& fault) {

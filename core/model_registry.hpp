@@ -4,6 +4,7 @@
 
 #include "core/arithmetic.hpp"
 #include "core/case_file.hpp"
+#include "core/case_keys.hpp"
 #include "core/simulation.hpp"
 
 #include <functional>
@@ -29,6 +30,9 @@ struct ModelEntry {
   std::string name;
   std::string description;
   ModelFactory create;
+  // The keys of the model's case files beyond common_case_keys(): the reference that
+  // `revsph cases --keys` prints and what create_simulation lets the model read.
+  const KeyTable& (*keys)() = nullptr;
 };
 
 class ModelRegistry {
@@ -55,8 +59,9 @@ const BuiltinCase* find_builtin_case(std::string_view name);
 // A case file from a path, or, if no such file exists, the built-in case of that name.
 CaseFile load_case(const std::string& path_or_name);
 
-// Reads `model` and creates the simulation. The caller reads its own sections ([run], [output])
-// and then calls case_file.require_no_unknown_keys().
+// Reads `model`, attaches the common and the model's key tables to the case file (see
+// CaseFile::use_keys) and creates the simulation. The caller reads its own sections ([run],
+// [output]) and then calls case_file.require_no_unknown_keys().
 std::unique_ptr<Simulation> create_simulation(const CaseFile& case_file,
                                               const SimulationOptions& options);
 

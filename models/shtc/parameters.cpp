@@ -220,6 +220,138 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   return p;
 }
 
+namespace {
+
+std::vector<KeyDecl> material_keys() {
+  using T = KeyType;
+  return {
+      {"material.rest_density", T::number, "kg/m^3", "required", "rest density rho0; > 0"},
+      {"material.sound_speed", T::number, "m/s", "required (or young_modulus)",
+       "bulk sound speed c0 (eq. 29); > 0"},
+      {"material.shear_speed", T::number, "m/s", "0 (or from young_modulus)",
+       "shear sound speed cs (eqs. 31, 35); >= 0"},
+      {"material.young_modulus", T::number, "Pa", "none (or sound_speed, shear_speed)",
+       "Young's modulus Y: c0 and cs from Y and poisson_ratio (eq. 61, with the factor 2 of the "
+       "shear modulus)"},
+      {"material.poisson_ratio", T::number, "1", "required with young_modulus",
+       "Poisson's ratio nu, between 0 and 0.5"},
+      {"material.shear_energy",
+       T::string,
+       "-",
+       "\"dprz\"",
+       "the shear energy: eq. (31) or the Neo-Hookean eq. (35)",
+       {"dprz", "neo_hookean"}},
+      {"material.relaxation_time", T::number, "s", "none: an elastic solid",
+       "relaxation time tau of the distortion (eqs. 51-53); not with kinematic_viscosity"},
+      {"material.kinematic_viscosity", T::number, "m^2/s", "none: an elastic solid",
+       "a fluid of viscosity nu: tau = 6 nu / cs^2 (eqs. 65, 69); not with relaxation_time"},
+      {"material.relaxation_splitting",
+       T::string,
+       "-",
+       "\"paper\"",
+       "how the relaxation is split from the reversible step (models/shtc/README.md): eq. (52), "
+       "nu kept at any dt / tau, or RK4 at the step's ends (dt / tau < 1/3); only with "
+       "relaxation",
+       {"paper", "matched", "step_ends"}},
+  };
+}
+
+std::vector<KeyDecl> initial_keys() {
+  using T = KeyType;
+  return {
+      {"initial.field",
+       T::string,
+       "-",
+       "\"rest\"",
+       "initial velocity: at rest, the bending plate (eq. 55, 2D) or the twisting column "
+       "(eq. 60, 3D)",
+       {"rest", "bending_plate", "twisting_column"}},
+      {"initial.amplitude", T::number, "m", "required for bending_plate", "A of eq. (55); > 0"},
+      {"initial.omega", T::number, "1/s", "required for bending_plate; 0 for twisting_column",
+       "omega of eq. (55) (> 0) or eq. (60)"},
+      {"initial.alpha", T::number, "1/m", "required for bending_plate", "alpha of eq. (55); > 0"},
+      {"initial.a1", T::number, "1", "0", "a1 of eq. (55)"},
+      {"initial.a2", T::number, "1", "0", "a2 of eq. (55)"},
+      {"initial.x0", T::number, "m", "0", "left end of the plate: s = alpha (x - x0) in eq. (55)"},
+      {"initial.height", T::number, "m", "required for twisting_column",
+       "the column's height H in eq. (60); > 0"},
+  };
+}
+
+std::vector<KeyDecl> fixed_point_keys() {
+  using T = KeyType;
+  return {
+      {"fixed_point.position_exponent", T::integer, "-", "covers the domain with 52 fraction bits",
+       "positions are stored as integers times 2^exponent"},
+      {"fixed_point.velocity_exponent", T::integer, "-", "covers c0 with 50 fraction bits",
+       "velocities are stored as integers times 2^exponent"},
+      {"fixed_point.density_exponent", T::integer, "-", "covers rho0 with 48 fraction bits",
+       "scale of the constants C_rho and C_lambda"},
+      {"fixed_point.dissipated_exponent", T::integer, "-", "covers c0^2 with 48 fraction bits",
+       "scale of the energy per mass removed by the relaxation"},
+      {"fixed_point.log_det_exponent", T::integer, "-", "covers 1 with 50 fraction bits",
+       "scale of log det A, the volumetric part of the distortion"},
+      {"fixed_point.unimodular_exponent", T::integer, "-", "covers 1 with 48 fraction bits",
+       "scale of U, the unimodular part of the distortion"},
+      {"fixed_point.drive_time_exponent", T::integer, "-", "resolves dt 2^-28",
+       "scale of the moving walls' clock"},
+  };
+}
+
+} // namespace
+
+const KeyTable& case_keys() {
+  static const KeyTable table = [] {
+    using T = KeyType;
+    KeyTable t("shtc");
+    t.add({"dimension", T::integer, "-", "required", "2 or 3"});
+    t.add(material_keys());
+    t.add({"penalty.speed", T::number, "m/s", "0",
+           "cp of the tensile penalty (eqs. 39-42); >= 0 (0: off)"});
+    t.add({"discretisation.dr", T::number, "m", "required",
+           "particle spacing: each particle stands for dr^D; > 0"});
+    t.add({"discretisation.smoothing_length_over_dr", T::number, "1", "required",
+           "h / dr; the kernel's support is 2 h (eq. 2)"});
+    t.add({"discretisation.dt", T::number, "s", "required (or time_step_factor)",
+           "time step; give dt or time_step_factor, not both"});
+    t.add({"discretisation.time_step_factor", T::number, "1", "none (or dt)",
+           "dt = factor dr / sqrt(c0^2 + 4/3 cs^2) (eq. 58)"});
+    t.add({"discretisation.cell_size_factor", T::number, "1", "1",
+           "neighbour-search cell size over the support, 1 to 100 (results do not depend on it)"});
+    t.add({"discretisation.distortion_update",
+           T::string,
+           "-",
+           "\"exact\"",
+           "\"exact\": the exactly invertible update (bitwise reversible); \"cayley\": the "
+           "paper's eq. (49) in doubles, for comparison (not reversible)",
+           {"exact", "cayley"}});
+    t.add(initial_keys());
+    t.add({"walls.ramp_time", T::number, "s", "0",
+           "moving walls reach full speed as sin^2(pi t / (2 ramp_time)); 0: at once"});
+    t.add({"walls.no_slip",
+           T::string,
+           "-",
+           "\"pretended\"",
+           "\"pretended\": walls pretend their own velocity in L (the paper's); \"mirrored\": "
+           "2 v_wall minus the fluid's velocity around them (beyond the paper)",
+           {"pretended", "mirrored"}});
+    t.add({"probe.point", T::numbers, "m", "none",
+           "diagnostics.csv follows the material particle nearest to this point at t = 0"});
+    t.add(domain_case_keys());
+    t.add(particle_block_case_keys({"material", "boundary"}));
+    t.add({"particles[].velocity", T::numbers, "m/s", "none: at rest",
+           "a boundary block's velocity at full drive (a translating wall, the cavity's lid)"});
+    t.add({"particles[].angular_velocity", T::number, "rad/s", "none: at rest",
+           "a boundary block rotating rigidly, counterclockwise about rotation_centre (3D: about "
+           "the z axis through it); not with velocity"});
+    t.add({"particles[].rotation_centre", T::numbers, "m", "the origin",
+           "centre of a rotating wall (2 numbers); needs angular_velocity"});
+    t.add(fixed_point_keys());
+    return t;
+  }();
+  return table;
+}
+
 template <int D>
 double Parameters<D>::drive_ramp(double t) const {
   if (!(t < ramp_time)) {

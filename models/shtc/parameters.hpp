@@ -1,7 +1,9 @@
 #pragma once
-// Parameters of an SHTC-SPH case, read from its case file (reference in models/shtc/README.md).
+// Parameters of an SHTC-SPH case, read from its case file. Every key read is declared in
+// case_keys() (the reference: revsph cases --keys shtc, docs/case-keys.md).
 
 #include "core/case_file.hpp"
+#include "core/case_keys.hpp"
 #include "core/geometry.hpp"
 #include "fixedpoint/scale.hpp"
 #include "models/shtc/distortion.hpp"
@@ -87,5 +89,9 @@ struct Parameters {
 
 template <int D>
 Parameters<D> read_parameters(const CaseFile& case_file);
+
+// The keys of an SHTC case file beyond common_case_keys(), including those setup.cpp (dimension,
+// the walls' velocities) and core/particle_blocks.cpp read.
+const KeyTable& case_keys();
 
 } // namespace revsph::shtc

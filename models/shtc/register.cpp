@@ -1,4 +1,5 @@
 #include "core/model_registry.hpp"
+#include "models/shtc/parameters.hpp"
 #include "models/shtc/setup.hpp"
 
 namespace revsph {
@@ -7,7 +8,7 @@ void register_model_shtc(ModelRegistry& registry) {
   registry.add({"shtc",
                 "SHTC-SPH for elastic solids and viscous fluids with a bit-reversible distortion "
                 "step (Kincl, Peshkov, Pavelka, Klika 2023)",
-                &shtc::create});
+                &shtc::create, &shtc::case_keys});
 }
 
 } // namespace revsph

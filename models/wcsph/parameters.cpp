@@ -130,6 +130,81 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   return p;
 }
 
+const KeyTable& case_keys() {
+  static const KeyTable table = [] {
+    using T = KeyType;
+    KeyTable t("wcsph");
+    t.add({"dimension", T::integer, "-", "required", "1, 2 or 3"});
+    t.add({"physics.rest_density", T::number, "kg/m^3", "required", "rest density rho0; > 0"});
+    t.add({"physics.sound_speed", T::number, "m/s", "required",
+           "numerical speed of sound c of the equation of state; > 0"});
+    t.add({"physics.gravity", T::number, "m/s^2", "0",
+           "gravitational acceleration g, along minus the last axis"});
+    t.add({"physics.gravity_reference_height", T::number, "m", "0",
+           "height of zero gravitational potential (shifts the reported energy only)"});
+    t.add({"physics.anti_clump_pressure", T::number, "Pa", "0",
+           "p0 of the anti-clump force of paper 1 App. A; >= 0 (0: off)"});
+    t.add({"discretisation.dr", T::number, "m", "required", "particle spacing; > 0"});
+    t.add({"discretisation.support_radius_over_dr", T::number, "1", "required",
+           "kernel support radius h in units of dr"});
+    t.add({"discretisation.dt", T::number, "s", "required (or courant_number)",
+           "time step; give dt or courant_number, not both"});
+    t.add({"discretisation.courant_number", T::number, "1", "none (or dt)",
+           "time step as a fraction of h / c: dt = courant_number * h / c"});
+    t.add({"discretisation.cell_size_factor", T::number, "1", "1",
+           "neighbour-search cell size over the search radius, 1 to 100"});
+    t.add({"wall.radius_over_dr", T::number, "1", "0.95",
+           "range r_wall of the wall potential (eq. 7) in units of dr; > 0"});
+    t.add({"wall.energy_per_mass", T::number, "J/kg", "0",
+           "strength E_wall / m of the wall potential (eq. 7); >= 0"});
+    t.add({"wall.epsilon", T::number, "m", "1e-6",
+           "regularisation eps of the wall potential (eq. 7); >= 0"});
+    t.add({"filter.shepard_every", T::integer, "-", "0",
+           "steps between Shepard filters (paper 1 App. A); 0: no filter"});
+    t.add({"filter.mode",
+           T::string,
+           "-",
+           "\"passive\"",
+           "\"active\" replaces the velocities by the filtered ones (dissipative, not "
+           "reversible); \"passive\" only reports the filtered field",
+           {"passive", "active"}});
+    t.add({"initial.field",
+           T::string,
+           "-",
+           "\"rest\"",
+           "initial velocity and density: at rest with every density rho0, or the Gresho vortex "
+           "(2D; its velocity, and the density whose Tait pressure is the vortex's pressure)",
+           {"rest", "gresho"}});
+    t.add({"initial.centre", T::numbers, "m", "the origin", "centre of the Gresho vortex"});
+    t.add({"initial_state_correction.enabled", T::boolean, "-", "false",
+           "move the fluid particles at setup so that every density equals rho0 (paper 1 §3.2)"});
+    t.add({"initial_state_correction.include_dummies", T::boolean, "-", "true",
+           "dummy particles count in the corrected densities"});
+    t.add({"initial_state_correction.max_iterations", T::integer, "-", "20",
+           "Newton iterations at most, 1 to 999"});
+    t.add({"initial_state_correction.tolerance", T::number, "1", "1e-10",
+           "relative density error at which the correction stops, between 0 and 1"});
+    t.add({"initial_state_correction.jitter", T::number, "1", "0.1",
+           "random displacement before correcting, as a fraction of dr, 0 to 0.5"});
+    t.add({"initial_state_correction.max_step", T::number, "1", "0",
+           "largest Newton step as a fraction of dr, 0 to 10 (0: undamped)"});
+    t.add({"initial_state_correction.seed", T::integer, "-", "1", "seed of the jitter; >= 0"});
+    t.add(domain_case_keys());
+    t.add(particle_block_case_keys({"fluid", "wall", "dummy"}));
+    t.add({"fixed_point.position_exponent", T::integer, "-",
+           "covers the domain with 52 fraction bits",
+           "positions are stored as integers times 2^exponent"});
+    t.add({"fixed_point.velocity_exponent", T::integer, "-", "covers c with 50 fraction bits",
+           "velocities are stored as integers times 2^exponent"});
+    t.add({"fixed_point.density_exponent", T::integer, "-", "covers rho0 with 48 fraction bits",
+           "scale of the density sums and the constants C_a"});
+    t.add({"fixed_point.acceleration_exponent", T::integer, "-",
+           "covers c^2 / h with 48 fraction bits", "scale of the acceleration sums"});
+    return t;
+  }();
+  return table;
+}
+
 template Parameters<1> read_parameters<1>(const CaseFile&);
 template Parameters<2> read_parameters<2>(const CaseFile&);
 template Parameters<3> read_parameters<3>(const CaseFile&);

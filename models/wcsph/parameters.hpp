@@ -1,7 +1,9 @@
 #pragma once
-// Parameters of a WCSPH case, read from its case file (reference in models/wcsph/README.md).
+// Parameters of a WCSPH case, read from its case file. Every key read is declared in
+// case_keys() (the reference: revsph cases --keys wcsph, docs/case-keys.md).
 
 #include "core/case_file.hpp"
+#include "core/case_keys.hpp"
 #include "core/geometry.hpp"
 #include "fixedpoint/scale.hpp"
 #include "models/wcsph/equations.hpp"
@@ -56,5 +58,9 @@ struct Parameters {
 
 template <int D>
 Parameters<D> read_parameters(const CaseFile& case_file);
+
+// The keys of a WCSPH case file beyond common_case_keys(), including those setup.cpp and
+// core/particle_blocks.cpp read.
+const KeyTable& case_keys();
 
 } // namespace revsph::wcsph

@@ -1,4 +1,5 @@
 #include "core/model_registry.hpp"
+#include "models/wcsph/parameters.hpp"
 #include "models/wcsph/setup.hpp"
 
 namespace revsph {
@@ -6,7 +7,7 @@ namespace revsph {
 void register_model_wcsph(ModelRegistry& registry) {
   registry.add({"wcsph",
                 "symplectic weakly compressible SPH with conservative walls (Kincl & Pavelka 2023)",
-                &wcsph::create});
+                &wcsph::create, &wcsph::case_keys});
 }
 
 } // namespace revsph

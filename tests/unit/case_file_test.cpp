@@ -121,27 +121,27 @@ const std::vector<Defect>& defects() {
        "\ndr = 0.02",
        "\ndr = 0.02\ndrr = 0.02",
        "discretisation.drr",
-       {"unknown key", "line @LINE@)"}},
+       {"unknown key", "line @LINE@; every key: revsph cases --keys wcsph)"}},
       {"unknown_key_top_level",
        "dimension = 2",
        "dimension = 2\ndimensions = 2",
        "dimensions",
-       {"unknown key", "line @LINE@)"}},
+       {"unknown key", "line @LINE@; every key: revsph cases --keys wcsph)"}},
       {"misspelt_table_name",
        "[wall]\nradius_over_dr = 0.95",
        "[walls]\nradius_over_dr = 0.95",
        "walls.radius_over_dr",
-       {"unknown key", "line @LINE@)"}},
+       {"unknown key", "line @LINE@; every key: revsph cases --keys wcsph)"}},
       {"unknown_key_in_particles_block",
        "kind = \"fluid\"",
        "kind = \"fluid\"\ncolour = \"blue\"",
        "particles[0].colour",
-       {"unknown key", "line @LINE@)"}},
+       {"unknown key", "line @LINE@; every key: revsph cases --keys wcsph)"}},
       {"unknown_key_in_run",
        "t_end = 1.0",
        "t_end = 1.0\nstep = 10",
        "run.step",
-       {"unknown key", "line @LINE@)"}},
+       {"unknown key", "line @LINE@; every key: revsph cases --keys wcsph)"}},
       {"unknown_empty_table", "[run]", "[runs]\n[run]", "runs", {"unknown key"}},
       // Missing required keys.
       {"missing_model", "model = \"wcsph\"", "", "model", {"missing required key"}},
@@ -433,7 +433,7 @@ TEST(CaseFileTest, FirstUnknownKeyInFileOrderIsReported) {
   ASSERT_TRUE(error.has_value());
   EXPECT_EQ(error->key(), "first_unknown");
   EXPECT_NE(
-      error->reason().find("line " + std::to_string(line_at(text, text.find("first_"))) + ")"),
+      error->reason().find("line " + std::to_string(line_at(text, text.find("first_"))) + ";"),
       std::string::npos)
       << error->reason();
 }
@@ -482,7 +482,9 @@ TEST(CaseFileOverrideTest, UnknownKeyFromOverrideSaysSo) {
       case_error(dambreak_small_text(), {{"physics.sound_sped", "100"}});
   ASSERT_TRUE(error.has_value());
   EXPECT_EQ(error->key(), "physics.sound_sped");
-  EXPECT_NE(error->reason().find("unknown key (given with --set)"), std::string::npos)
+  EXPECT_NE(
+      error->reason().find("unknown key (given with --set; every key: revsph cases --keys wcsph)"),
+      std::string::npos)
       << error->reason();
 }
 

@@ -14,14 +14,17 @@
 // combinations of these. Cases are made cheap (a coarse dr: a few hundred particles) and every
 // setup is limited to a 64 MB memory budget, so absurd sizes are refused quickly.
 //
-// A valid setup must also have a non-negative run length. A mutant taking more than the
-// per-mutant limit (2 s of CPU time in a Release build) fails the test; one that hangs is caught
-// by a watchdog that prints it and aborts, and a crash or sanitizer report prints it too.
+// A valid setup must also have a non-negative run length, and every key the readers asked for,
+// valid mutant or not, must be declared in the key tables (the reference of revsph cases
+// --keys). A mutant taking more than the per-mutant limit (2 s of CPU time in a Release build)
+// fails the test; one that hangs is caught by a watchdog that prints it and aborts, and a crash
+// or sanitizer report prints it too.
 //
 // Reproduce or extend a run with REVSPH_CASE_FUZZ_SEED=<seed> and REVSPH_CASE_FUZZ_MUTANTS=<n>
 // (per test); REVSPH_CASE_FUZZ_SLOW_MS=<ms> prints every mutant slower than that.
 
 #include "core/case_file.hpp"
+#include "core/case_keys.hpp"
 #include "core/fault.hpp"
 #include "core/model_registry.hpp"
 #include "core/run_settings.hpp"
@@ -48,6 +51,7 @@
 #include <iostream>
 #include <mutex>
 #include <new>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -576,25 +580,56 @@ struct Overrides {
 };
 
 // What the command line does with a case (tools/revsph/common.cpp), then a few steps.
+// Every key the readers asked a mutant for is in the reference (revsph cases --keys MODEL), also
+// when the mutant is refused: the key tables are complete for what the readers accept. The
+// tables are the ones create_simulation attached (a mutant may name another model), else those
+// of the built-in cases' model.
+void require_declared(const CaseFile& case_file) {
+  std::vector<const KeyTable*> tables = case_file.key_tables();
+  if (tables.empty()) {
+    tables = {&common_case_keys(), &model_registry().find("wcsph")->keys()};
+  }
+  for (const std::string& key : case_file.accessed_keys()) {
+    const std::string pattern = key_pattern(key);
+    bool declared = false;
+    for (const KeyTable* table : tables) {
+      declared = declared || table->find(pattern) != nullptr || table->declares_table(pattern);
+    }
+    if (!declared) {
+      throw std::logic_error("the readers asked for \"" + key + "\", which no key table declares");
+    }
+  }
+}
+
 Outcome run_mutant(const std::string& text, const Overrides& overrides, Arithmetic arithmetic) {
   std::unique_ptr<Simulation> simulation;
   RunSettings settings;
-  try {
-    CaseFile case_file = CaseFile::parse(text, "mutant.toml");
-    for (const auto& [key, value] : overrides.items) {
-      case_file.set(key, value);
+  std::optional<CaseFile> case_file;
+  // Checked however the setup ends (the destructor runs while a CaseError propagates, so the
+  // check is done explicitly on every path).
+  auto checked = [&](Outcome outcome) {
+    if (case_file) {
+      require_declared(*case_file);
     }
-    settings = read_run_settings(case_file);
+    return outcome;
+  };
+  try {
+    case_file.emplace(CaseFile::parse(text, "mutant.toml"));
+    for (const auto& [key, value] : overrides.items) {
+      case_file->set(key, value);
+    }
+    settings = read_run_settings(*case_file);
     SimulationOptions options;
     options.arithmetic = arithmetic;
     options.memory_budget_bytes = memory_budget_bytes;
-    simulation = create_simulation(case_file, options);
-    case_file.require_no_unknown_keys();
+    simulation = create_simulation(*case_file, options);
+    case_file->require_no_unknown_keys();
   } catch (const CaseError&) {
-    return Outcome::case_error;
+    return checked(Outcome::case_error);
   } catch (const SimulationFault&) {
-    return Outcome::faulted_in_setup;
+    return checked(Outcome::faulted_in_setup);
   }
+  checked(Outcome::ran);
   // A valid [run] length is never negative (what `revsph run` would take).
   if (settings.length.given() && settings.length.steps_for(simulation->info().dt) < 0) {
     throw std::logic_error("a valid case has a negative run length");

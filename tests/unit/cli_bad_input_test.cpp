@@ -172,12 +172,12 @@ const std::vector<Defect>& defects() {
        "\ndr = 0.02",
        "\ndr = 0.02\ndrr = 0.02",
        "discretisation.drr",
-       {"unknown key (line @LINE@)"}},
+       {"unknown key (line @LINE@; every key: revsph cases --keys wcsph)"}},
       {"unknown_key_in_particles_block",
        "kind = \"fluid\"",
        "kind = \"fluid\"\ncolour = \"blue\"",
        "particles[0].colour",
-       {"unknown key (line @LINE@)"}},
+       {"unknown key (line @LINE@; every key: revsph cases --keys wcsph)"}},
       {"missing_required_key",
        "sound_speed = 120.0",
        "",
@@ -287,7 +287,7 @@ const std::vector<Defect>& defects() {
        "",
        "",
        "physics.sound_sped",
-       {"unknown key (given with --set)"},
+       {"unknown key (given with --set; every key: revsph cases --keys wcsph)"},
        {"--set", "physics.sound_sped=100"}},
   };
   return all;
@@ -361,7 +361,8 @@ TEST(CliBadInputTest, HashRejectsUnknownKey) {
   const CommandResult result = sandbox.revsph({"hash", case_path.string(), "--steps", "1"});
   expect_clean_rejection(
       sandbox, result, {"case.toml"},
-      {case_path.string() + ": dimensions: ", with_line("unknown key (line @LINE@)", text, edit)});
+      {case_path.string() + ": dimensions: ",
+       with_line("unknown key (line @LINE@; every key: revsph cases --keys wcsph)", text, edit)});
 }
 
 TEST(CliBadInputTest, MissingCaseFileIsRejected) {

@@ -47,7 +47,10 @@ struct EntropyOptions {
 int run_command(const RunOptions& options);
 int verify_command(const VerifyCommandOptions& options);
 int hash_command(const HashOptions& options);
-int cases_command(const std::string& name);
+// Lists the built-in cases, prints one (`name`), or prints the case-key reference of a model
+// (`keys_model`: a model or "all"), as text or as Markdown (docs/case-keys.md).
+int cases_command(const std::string& name, const std::string& keys_model = "",
+                  bool markdown = false);
 // Bit-for-bit comparison of two snapshots: 0 identical, 1 different, 2 not comparable.
 int diff_command(const std::string& first, const std::string& second);
 // Reduced Boltzmann entropy of every snapshot of a run: entropy.csv, histograms.csv and (unless

@@ -141,8 +141,18 @@ int main(int argc, char** argv) {
                         "only the CSV files (no call of tools/plots/entropy.py)");
 
   std::string case_name;
-  auto* cases_app = app.add_subcommand("cases", "list the built-in cases, or print one");
+  std::string keys_model;
+  bool keys_markdown = false;
+  auto* cases_app = app.add_subcommand(
+      "cases", "list the built-in cases, print one, or list every case-file key of a model");
   cases_app->add_option("name", case_name, "print this built-in case file");
+  auto* keys_option = cases_app->add_option(
+      "--keys", keys_model,
+      "print every key a case file of MODEL may have (type, unit, default, meaning); "
+      "MODEL \"all\": every model");
+  cases_app->add_flag("--markdown", keys_markdown, "with --keys: as Markdown (docs/case-keys.md)")
+      ->needs(keys_option);
+  keys_option->excludes("name");
 
   try {
     app.parse(argc, argv);
@@ -181,7 +191,7 @@ int main(int argc, char** argv) {
       return entropy_command(entropy);
     }
     if (*cases_app) {
-      return cases_command(case_name);
+      return cases_command(case_name, keys_model, keys_markdown);
     }
   } catch (const revsph::CaseError& error) {
     print_error(error.what());
