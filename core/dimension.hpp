@@ -22,8 +22,13 @@ auto with_dimension(const CaseFile& case_file, Create&& create) {
                            : false) ||
                       ...);
   if (!found) {
+    // "2 or 3", "1, 2 or 3"
+    const int dimensions[] = {Dimensions...};
     std::string allowed;
-    ((allowed += (allowed.empty() ? "" : " or ") + std::to_string(Dimensions)), ...);
+    for (std::size_t i = 0; i < sizeof...(Dimensions); ++i) {
+      allowed += (i == 0 ? "" : i + 1 == sizeof...(Dimensions) ? " or " : ", ") +
+                 std::to_string(dimensions[i]);
+    }
     case_file.fail("dimension",
                    "must be " + allowed + " for this model (got " + std::to_string(dimension) + ")");
   }

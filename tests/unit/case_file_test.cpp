@@ -288,7 +288,11 @@ const std::vector<Defect>& defects() {
        "physics.gravity",
        {"expected a number", "got a boolean"}},
       // Values outside what the model knows.
-      {"dimension_4", "dimension = 2", "dimension = 4", "dimension", {"must be 2 or 3", "got 4"}},
+      {"dimension_4",
+       "dimension = 2",
+       "dimension = 4",
+       "dimension",
+       {"must be 1, 2 or 3", "got 4"}},
       {"unknown_model",
        "model = \"wcsph\"",
        "model = \"isph\"",
