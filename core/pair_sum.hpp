@@ -28,6 +28,7 @@
 #include "core/fault.hpp"
 #include "core/geometry.hpp"
 #include "core/neighbour_list.hpp"
+#include "core/pair_sums.hpp"
 #include "core/slot_layout.hpp"
 
 #include <array>
@@ -49,57 +50,14 @@ struct PairGeometry {
   double r = 0.0;               // sqrt(r_squared)
 };
 
-// A quantity a pair loop sums: its name in fault reports and its fixed-point scale.
-struct SummedQuantity {
-  const char* name;
-  fixedpoint::Scale scale;
-};
-
-// The sums of one pair loop: K quantities per slot, and their values after the loop.
-template <class Arith, int K>
-class PairSums {
-public:
-  explicit PairSums(const std::array<SummedQuantity, K>& quantities)
-      : quantities_(quantities), sums_(make_sums(quantities, std::make_index_sequence<K>{})) {}
-  explicit PairSums(const SummedQuantity& quantity) requires(K == 1)
-      : PairSums(std::array<SummedQuantity, 1>{quantity}) {}
-
-  // Quantity q of slot s (zero for a slot the term does not receive).
-  double value(int q, std::size_t slot) const { return values_[q][slot]; }
-  std::span<const double> values(int q) const { return values_[q]; }
-  const std::array<SummedQuantity, K>& quantities() const { return quantities_; }
-
-  // For the loops below.
-  typename Arith::Sums& sums(int q) { return sums_[q]; }
-  std::vector<double>& mutable_values(int q) { return values_[q]; }
-  std::array<typename Arith::Sum, K> local_sums() const {
-    return make_local(std::make_index_sequence<K>{});
-  }
-
-private:
-  template <std::size_t... Q>
-  static std::array<typename Arith::Sums, K> make_sums(const std::array<SummedQuantity, K>& q,
-                                                       std::index_sequence<Q...>) {
-    return {typename Arith::Sums(q[Q].scale)...};
-  }
-  template <std::size_t... Q>
-  std::array<typename Arith::Sum, K> make_local(std::index_sequence<Q...>) const {
-    return {typename Arith::Sum(quantities_[Q].scale)...};
-  }
-
-  std::array<SummedQuantity, K> quantities_;
-  std::array<typename Arith::Sums, K> sums_;
-  std::array<std::vector<double>, K> values_;
-};
-
 // What a term's self() adds to its slot's sums.
 template <class Arith, int K>
 class SelfTerms {
 public:
   SelfTerms(PairSums<Arith, K>& sums, std::size_t slot) : sums_(sums), slot_(slot) {}
-  void operator()(int q, double term) { sums_.sums(q).add(slot_, term); }
+  void operator()(int q, double term) { sums_.add(slot_, q, term); }
   // A value already in raw units of the quantity's scale (a stored constant).
-  void raw(int q, typename Arith::Raw value) { sums_.sums(q).add_raw(slot_, value); }
+  void raw(int q, typename Arith::Raw value) { sums_.add_raw(slot_, q, value); }
 
 private:
   PairSums<Arith, K>& sums_;
@@ -167,28 +125,23 @@ void fill_geometry(const CoordinateView<D>& x_a, std::uint32_t a, const Coordina
 template <class Arith, int D, class Term, int K>
 void finish_sums(const SlotLayout<D>& layout, const Term& term, PairSums<Arith, K>& sums) {
   const std::size_t n = layout.slot_count();
-  for (int q = 0; q < K; ++q) {
-    sums.mutable_values(q).resize(n);
-  }
+  sums.resize_values(n);
   FaultRecorder faults;
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < n; ++s) {
     const auto slot = static_cast<std::uint32_t>(s);
     if (!receives(term, slot)) {
-      for (int q = 0; q < K; ++q) {
-        sums.mutable_values(q)[s] = 0.0;
-      }
+      sums.clear_values(s);
       continue;
     }
     if constexpr (HasSelfTerms<Term, Arith>) {
       SelfTerms<Arith, K> add(sums, s);
       term.self(slot, add);
     }
-    for (int q = 0; q < K; ++q) {
-      if (!sums.sums(q).try_value(s, sums.mutable_values(q)[s])) {
-        layout.record_fault(faults, s, sums.quantities()[q].name,
-                            "overflow or non-finite value in a pair sum");
-      }
+    int failed = 0;
+    if (!sums.convert(s, failed)) {
+      layout.record_fault(faults, s, sums.quantities()[failed].name,
+                          "overflow or non-finite value in a pair sum");
     }
   }
   faults.throw_if_any();
@@ -203,13 +156,10 @@ template <class Arith, int D, PairTerm<D> Term>
 void sum_pairs(const SlotLayout<D>& layout, const Term& term, PairSums<Arith, Term::width>& sums,
                const CrossPairs<D>& cross = {}) {
   constexpr int K = Term::width;
-  const std::size_t n = layout.slot_count();
-  for (int q = 0; q < K; ++q) {
-    sums.sums(q).reset(n);
-  }
+  sums.reset(layout.slot_count());
   const CoordinateView<D> x = layout.position();
   layout.pairs().for_each_slot([&](std::uint32_t a, std::span<const std::uint32_t> partners) {
-    std::array<typename Arith::Sum, K> own = sums.local_sums();
+    typename PairSums<Arith, K>::Local own(sums);
     PairGeometry<D> pair;
     std::array<double, K> to_a{};
     std::array<double, K> to_b{};
@@ -217,8 +167,8 @@ void sum_pairs(const SlotLayout<D>& layout, const Term& term, PairSums<Arith, Te
       detail::fill_geometry<D>(x, a, x, b, pair);
       term.pair(pair, to_a, to_b);
       for (int q = 0; q < K; ++q) {
-        own[q].add(to_a[q]);
-        sums.sums(q).add(b, to_b[q]);
+        own.add(q, to_a[q]);
+        sums.add(b, q, to_b[q]);
       }
     }
     if constexpr (HasCrossPairs<Term, D>) {
@@ -227,14 +177,12 @@ void sum_pairs(const SlotLayout<D>& layout, const Term& term, PairSums<Arith, Te
           detail::fill_geometry<D>(x, a, cross.targets, w, pair);
           term.cross_pair(pair, to_a);
           for (int q = 0; q < K; ++q) {
-            own[q].add(to_a[q]);
+            own.add(q, to_a[q]);
           }
         }
       }
     }
-    for (int q = 0; q < K; ++q) {
-      sums.sums(q).add_sum(a, own[q]);
-    }
+    sums.add_local(a, own);
   });
   detail::finish_sums<Arith>(layout, term, sums);
 }
@@ -247,9 +195,7 @@ void sum_cross_pairs(const SlotLayout<D>& layout, const Term& term,
                      PairSums<Arith, Term::width>& sums, const CrossPairs<D>& cross) {
   constexpr int K = Term::width;
   const std::size_t n = layout.slot_count();
-  for (int q = 0; q < K; ++q) {
-    sums.sums(q).reset(n);
-  }
+  sums.reset(n);
   const CoordinateView<D> x = layout.position();
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < n; ++s) {
@@ -263,7 +209,7 @@ void sum_cross_pairs(const SlotLayout<D>& layout, const Term& term,
       detail::fill_geometry<D>(x, a, cross.targets, w, pair);
       term.cross_pair(pair, to_a);
       for (int q = 0; q < K; ++q) {
-        sums.sums(q).add(s, to_a[q]);
+        sums.add(s, q, to_a[q]);
       }
     }
   }

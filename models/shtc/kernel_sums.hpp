@@ -27,9 +27,13 @@ namespace revsph::shtc {
 template <int D>
 using GradientMatrix = Eigen::Matrix<double, D, D>;
 
+// H is symmetric (x_ab (x) x_ab w'/r): its upper triangle, row by row, is summed.
+template <int D>
+constexpr int upper_triangle_size = D * (D + 1) / 2;
+
 template <int D>
 struct KernelSumsTerm {
-  static constexpr int width = 2 + D * D; // rho, lambda, H row by row
+  static constexpr int width = 2 + upper_triangle_size<D>; // rho, lambda, H's upper triangle
   const WendlandQuintic<D>& kernel;
   std::span<const double> mass;
   std::span<const std::int64_t> density_constant; // raw at the density scale; empty: zero
@@ -44,11 +48,12 @@ struct KernelSumsTerm {
     to_b[0] = mass[p.a] * w;
     to_a[1] = mass[p.b] * scale_derivative;
     to_b[1] = mass[p.a] * scale_derivative;
+    int entry = 2;
     for (int i = 0; i < D; ++i) {
-      for (int j = 0; j < D; ++j) {
+      for (int j = i; j < D; ++j, ++entry) {
         const double position_term = p.x_ab[i] * (slope * p.x_ab[j]);
-        to_a[2 + i * D + j] = mass[p.b] * position_term;
-        to_b[2 + i * D + j] = mass[p.a] * position_term;
+        to_a[entry] = mass[p.b] * position_term;
+        to_b[entry] = mass[p.a] * position_term;
       }
     }
   }
@@ -71,11 +76,12 @@ struct KernelSums {
   std::vector<double> lambda;
   std::vector<GradientMatrix<D>> h_matrix;
   std::vector<GradientMatrix<D>> h_inverse;
-  PairSums<FixedArithmetic, 2 + D * D> totals;
+  PairSums<FixedArithmetic, KernelSumsTerm<D>::width> totals;
 
 private:
-  static std::array<SummedQuantity, 2 + D * D> quantities(const fixedpoint::Scale& scale) {
-    std::array<SummedQuantity, 2 + D * D> q{};
+  static std::array<SummedQuantity, KernelSumsTerm<D>::width>
+  quantities(const fixedpoint::Scale& scale) {
+    std::array<SummedQuantity, KernelSumsTerm<D>::width> q{};
     q.fill({"renormalisation_matrix", scale});
     q[0] = {"density", scale};
     q[1] = {"lambda", scale};
@@ -112,9 +118,11 @@ void compute_kernel_sums(const WendlandQuintic<D>& kernel, const SlotLayout<D>& 
   for (std::size_t s = 0; s < n; ++s) {
     sums.density[s] = sums.totals.value(0, s);
     sums.lambda[s] = sums.totals.value(1, s);
+    int entry = 2;
     for (int i = 0; i < D; ++i) {
-      for (int j = 0; j < D; ++j) {
-        sums.h_matrix[s](i, j) = sums.totals.value(2 + i * D + j, s);
+      for (int j = i; j < D; ++j, ++entry) {
+        sums.h_matrix[s](i, j) = sums.totals.value(entry, s);
+        sums.h_matrix[s](j, i) = sums.h_matrix[s](i, j);
       }
     }
     sums.h_inverse[s] = renormalisation_inverse<D>(sums.h_matrix[s]);

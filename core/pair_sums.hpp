@@ -1,0 +1,165 @@
+#pragma once
+// The accumulators of one pair loop (core/pair_sum.hpp): K quantities per slot, each at its own
+// fixed-point scale, and their values after the loop.
+//
+// FixedArithmetic: every term is rounded once to its quantity's scale and added in integers
+// (design note §3), so a total is the same for any order of its terms. A slot's running totals
+// are 64-bit with overflow detection (a total that leaves int64 is invalid, even if later terms
+// would bring it back; the pair list fixes the order of the terms, so that verdict is
+// reproducible too); the partial sum of a slot's own partners is 128-bit. FloatArithmetic (FloPA):
+// plain doubles added in the order the terms come. The K totals of a slot are stored together,
+// so adding a pair's terms to its partner touches one cache line, not K.
+
+#include "core/arithmetic.hpp"
+#include "fixedpoint/conversion.hpp"
+#include "fixedpoint/exact_sum.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <type_traits>
+#include <vector>
+
+namespace revsph {
+
+// A quantity a pair loop sums: its name in fault reports and its fixed-point scale.
+struct SummedQuantity {
+  const char* name;
+  fixedpoint::Scale scale;
+};
+
+template <class Arith, int K>
+class PairSums {
+  static_assert(K >= 1 && K <= 32, "a pair loop sums 1 to 32 quantities");
+  static constexpr bool exact = Arith::kind == Arithmetic::fixed;
+
+public:
+  using Raw = typename Arith::Raw;
+  using Total = std::conditional_t<exact, std::int64_t, double>;
+
+  explicit PairSums(const std::array<SummedQuantity, K>& quantities) : quantities_(quantities) {}
+  explicit PairSums(const SummedQuantity& quantity)
+    requires(K == 1)
+      : PairSums(std::array<SummedQuantity, 1>{quantity}) {}
+
+  // Quantity q of slot s after the loop (zero for a slot the term does not receive).
+  double value(int q, std::size_t slot) const { return values_[q][slot]; }
+  std::span<const double> values(int q) const { return values_[q]; }
+  const std::array<SummedQuantity, K>& quantities() const { return quantities_; }
+
+  // The partial sums of one slot's own partners (128-bit in fixed point: they cannot overflow).
+  class Local {
+  public:
+    explicit Local(const PairSums& sums) : sums_(sums) {}
+    void add(int q, double term) {
+      if constexpr (exact) {
+        std::int64_t raw = 0;
+        if (fixedpoint::try_to_fixed(term, sums_.quantities_[q].scale, raw)) {
+          total_[q] += raw;
+        } else {
+          invalid_ |= 1u << q;
+        }
+      } else {
+        total_[q] += term;
+      }
+    }
+
+  private:
+    friend class PairSums;
+    const PairSums& sums_;
+    std::array<std::conditional_t<exact, fixedpoint::int128, double>, K> total_{};
+    std::uint32_t invalid_ = 0;
+  };
+
+  // n slots, every total zero and valid.
+  void reset(std::size_t n) {
+    totals_.resize(n * K);
+    invalid_.resize(n);
+#pragma omp parallel for schedule(static)
+    for (std::size_t s = 0; s < n; ++s) {
+      for (int q = 0; q < K; ++q) {
+        totals_[s * K + q] = Total{};
+      }
+      invalid_[s] = 0;
+    }
+  }
+  void add(std::size_t slot, int q, double term) {
+    if constexpr (exact) {
+      std::int64_t raw = 0;
+      if (!fixedpoint::try_to_fixed(term, quantities_[q].scale, raw)) {
+        invalid_[slot] |= 1u << q;
+        return;
+      }
+      add_raw(slot, q, raw);
+    } else {
+      totals_[slot * K + q] += term;
+    }
+  }
+  // A value already in raw units of the quantity's scale (a stored constant).
+  void add_raw(std::size_t slot, int q, Raw raw) {
+    if constexpr (exact) {
+      if (__builtin_add_overflow(totals_[slot * K + q], raw, &totals_[slot * K + q])) {
+        invalid_[slot] |= 1u << q;
+      }
+    } else {
+      totals_[slot * K + q] += raw;
+    }
+  }
+  void add_local(std::size_t slot, const Local& local) {
+    if constexpr (exact) {
+      invalid_[slot] |= local.invalid_;
+      for (int q = 0; q < K; ++q) {
+        const fixedpoint::int128 total = local.total_[q];
+        if (total > INT64_MAX || total < INT64_MIN) {
+          invalid_[slot] |= 1u << q;
+        } else {
+          add_raw(slot, q, static_cast<std::int64_t>(total));
+        }
+      }
+    } else {
+      for (int q = 0; q < K; ++q) {
+        totals_[slot * K + q] += local.total_[q];
+      }
+    }
+  }
+  // Converts slot s's totals into values(); false for the first quantity that overflowed or is
+  // not finite (its index in `failed`).
+  bool convert(std::size_t slot, int& failed) {
+    for (int q = 0; q < K; ++q) {
+      double& value = values_[q][slot];
+      if constexpr (exact) {
+        if ((invalid_[slot] >> q) & 1u) {
+          failed = q;
+          return false;
+        }
+        value = fixedpoint::to_real(totals_[slot * K + q], quantities_[q].scale);
+      } else {
+        value = totals_[slot * K + q];
+        if (!std::isfinite(value)) {
+          failed = q;
+          return false;
+        }
+      }
+    }
+    return true;
+  }
+  void resize_values(std::size_t n) {
+    for (int q = 0; q < K; ++q) {
+      values_[q].resize(n);
+    }
+  }
+  void clear_values(std::size_t slot) {
+    for (int q = 0; q < K; ++q) {
+      values_[q][slot] = 0.0;
+    }
+  }
+
+private:
+  std::array<SummedQuantity, K> quantities_;
+  std::vector<Total> totals_;          // slot-major: quantity q of slot s at s * K + q
+  std::vector<std::uint32_t> invalid_; // per slot, one bit per quantity
+  std::array<std::vector<double>, K> values_;
+};
+
+} // namespace revsph
