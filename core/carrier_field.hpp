@@ -42,7 +42,21 @@ public:
                        fields_[set]->info().scale);
   }
 
-  // Component c of every carrier, in carrier order, as physical values.
+  // Component c of every carrier, in carrier order, as physical values, into `out` (its
+  // capacity reused from call to call).
+  void fill_reals(int component, std::vector<double>& out) const {
+    out.resize(count_);
+    for (std::size_t set = 0; set < fields_.size(); ++set) {
+      const auto raw = fields_[set]->component(component);
+      const fixedpoint::Scale& scale = fields_[set]->info().scale;
+      double* first = out.data() + firsts_[set];
+#pragma omp parallel for schedule(static)
+      for (std::size_t i = 0; i < raw.size(); ++i) {
+        first[i] = Arith::real(raw[i], scale);
+      }
+    }
+  }
+  // The same as a new vector.
   std::vector<double> reals(int component = 0) const {
     std::vector<double> values;
     values.reserve(count_);

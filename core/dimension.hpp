@@ -17,20 +17,22 @@ auto with_dimension(const CaseFile& case_file, Create&& create) {
   const std::int64_t dimension = case_file.integer("dimension");
   using Result = decltype(create.template operator()<(Dimensions, ...)>());
   Result result{};
-  const bool found = ((dimension == Dimensions
-                           ? (result = create.template operator()<Dimensions>(), true)
-                           : false) ||
-                      ...);
+  const bool found =
+      ((dimension == Dimensions ? (result = create.template operator()<Dimensions>(), true)
+                                : false) ||
+       ...);
   if (!found) {
     // "2 or 3", "1, 2 or 3"
     const int dimensions[] = {Dimensions...};
     std::string allowed;
     for (std::size_t i = 0; i < sizeof...(Dimensions); ++i) {
-      allowed += (i == 0 ? "" : i + 1 == sizeof...(Dimensions) ? " or " : ", ") +
+      allowed += (i == 0                           ? ""
+                  : i + 1 == sizeof...(Dimensions) ? " or "
+                                                   : ", ") +
                  std::to_string(dimensions[i]);
     }
-    case_file.fail("dimension",
-                   "must be " + allowed + " for this model (got " + std::to_string(dimension) + ")");
+    case_file.fail("dimension", "must be " + allowed + " for this model (got " +
+                                    std::to_string(dimension) + ")");
   }
   return result;
 }

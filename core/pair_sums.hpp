@@ -38,9 +38,12 @@ public:
   using Raw = typename Arith::Raw;
   using Total = std::conditional_t<exact, std::int64_t, double>;
 
-  explicit PairSums(const std::array<SummedQuantity, K>& quantities) : quantities_(quantities) {}
-  explicit PairSums(const SummedQuantity& quantity)
-    requires(K == 1)
+  explicit PairSums(const std::array<SummedQuantity, K>& quantities) : quantities_(quantities) {
+    for (int q = 0; q < K; ++q) {
+      inverse_unit_[q] = quantities[q].scale.inverse_unit();
+    }
+  }
+  explicit PairSums(const SummedQuantity& quantity) requires(K == 1)
       : PairSums(std::array<SummedQuantity, 1>{quantity}) {}
 
   // Quantity q of slot s after the loop (zero for a slot the term does not receive).
@@ -55,7 +58,7 @@ public:
     void add(int q, double term) {
       if constexpr (exact) {
         std::int64_t raw = 0;
-        if (fixedpoint::try_to_fixed(term, sums_.quantities_[q].scale, raw)) {
+        if (sums_.to_fixed(q, term, raw)) {
           total_[q] += raw;
         } else {
           invalid_ |= 1u << q;
@@ -87,11 +90,10 @@ public:
   void add(std::size_t slot, int q, double term) {
     if constexpr (exact) {
       std::int64_t raw = 0;
-      if (!fixedpoint::try_to_fixed(term, quantities_[q].scale, raw)) {
+      if (!to_fixed(q, term, raw) ||
+          __builtin_add_overflow(totals_[slot * K + q], raw, &totals_[slot * K + q])) {
         invalid_[slot] |= 1u << q;
-        return;
       }
-      add_raw(slot, q, raw);
     } else {
       totals_[slot * K + q] += term;
     }
@@ -156,7 +158,18 @@ public:
   }
 
 private:
+  // raw = round(term / unit) as fixedpoint::try_to_fixed, with the quantity's 1 / unit at hand.
+  bool to_fixed(int q, double term, std::int64_t& raw) const {
+    const double quotient = term * inverse_unit_[q]; // exact: a power of two
+    if (!(std::fabs(quotient) < fixedpoint::two_to_the_63)) {
+      return false;
+    }
+    raw = std::llrint(quotient);
+    return true;
+  }
+
   std::array<SummedQuantity, K> quantities_;
+  std::array<double, K> inverse_unit_{};
   std::vector<Total> totals_;          // slot-major: quantity q of slot s at s * K + q
   std::vector<std::uint32_t> invalid_; // per slot, one bit per quantity
   std::array<std::vector<double>, K> values_;

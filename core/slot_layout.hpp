@@ -10,6 +10,7 @@
 // stays in the canonical particle order: gather() and scatter() cross between the two, and
 // record_fault() names a slot's particle by its set and index in the set.
 
+#include "core/carrier_field.hpp"
 #include "core/cell_list.hpp"
 #include "core/fault.hpp"
 #include "core/geometry.hpp"
@@ -41,6 +42,15 @@ public:
   // naming its set and index.
   template <class Coordinate>
   void build(const Coordinate& coordinate, double radius);
+  // The same from the carriers' position field (one per carrier set, core/carrier_field.hpp).
+  template <class Arith>
+  void build(const CarrierField<Arith>& position, double radius) {
+    for (int k = 0; k < D; ++k) {
+      position.fill_reals(k, carrier_position_[k]);
+    }
+    build([this](int axis, std::size_t carrier) { return carrier_position_[axis][carrier]; },
+          radius);
+  }
 
   std::size_t carrier_count() const { return carrier_count_; }
   std::size_t slot_count() const { return carrier_count_; }
@@ -73,6 +83,7 @@ private:
   std::vector<std::size_t> first_carrier_; // one per set, then the total
   std::size_t carrier_count_ = 0;
   CellList<D> cells_;
+  CoordinateArrays<D> carrier_position_; // scratch of build(CarrierField)
   CoordinateArrays<D> slot_position_;
   HalfPairList pairs_;
 };

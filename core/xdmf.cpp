@@ -47,7 +47,10 @@ std::string xdmf_document(int dimension, const std::vector<XdmfSnapshot>& snapsh
           << "          <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << set.count
           << "\" NodesPerElement=\"1\"/>\n"
           << "          <Geometry GeometryType=\""
-          << (dimension == 1 ? "X_Y_Z" : dimension == 2 ? "XY" : "XYZ") << "\">\n";
+          << (dimension == 1   ? "X_Y_Z"
+              : dimension == 2 ? "XY"
+                               : "XYZ")
+          << "\">\n";
       bool has_position = false;
       for (const XdmfField& field : set.fields) {
         if (field.name == "position") {

@@ -29,7 +29,7 @@ using GradientMatrix = Eigen::Matrix<double, D, D>;
 
 // H is symmetric (x_ab (x) x_ab w'/r): its upper triangle, row by row, is summed.
 template <int D>
-constexpr int upper_triangle_size = D * (D + 1) / 2;
+constexpr int upper_triangle_size = D*(D + 1) / 2;
 
 template <int D>
 struct KernelSumsTerm {

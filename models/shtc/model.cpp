@@ -338,9 +338,7 @@ void Model<D>::update_geometry() {
   }
   update_constants();
   const std::size_t n = carrier_count();
-  const CarrierField<FixedArithmetic> position = carrier_position();
-  layout_.build([&](int axis, std::size_t a) { return position.real(axis, a); },
-                parameters_.support_radius());
+  layout_.build(carrier_position(), parameters_.support_radius());
   layout_.gather(std::span<const double>(mass_), slot_mass_);
   const std::vector<std::int64_t> density_constant =
       CarrierField<FixedArithmetic>{&state_.material.carried.density_constant,

@@ -237,8 +237,7 @@ std::unique_ptr<Simulation> create(const CaseFile& case_file, const SimulationOp
         "(models/shtc/README.md)");
   }
   // The distortion algebra (distortion.hpp) is written for 2D and 3D.
-  return with_dimension<2, 3>(case_file,
-                              [&]<int D>() { return create_in<D>(case_file, options); });
+  return with_dimension<2, 3>(case_file, [&]<int D>() { return create_in<D>(case_file, options); });
 }
 
 } // namespace revsph::shtc

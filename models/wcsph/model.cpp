@@ -110,9 +110,7 @@ void Model<D, Arith>::update_derived() {
     return;
   }
   update_constants();
-  const CarrierField<Arith> position = carrier_position();
-  layout_.build([&](int axis, std::size_t a) { return position.real(axis, a); },
-                parameters_.support_radius);
+  layout_.build(carrier_position(), parameters_.support_radius);
   const std::size_t carriers = layout_.slot_count();
   layout_.gather(std::span<const double>(mass_), slot_mass_);
   const std::vector<Raw> density_constant =
@@ -383,24 +381,25 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics() {
     if (parameters_.initial_field != InitialField::gresho_vortex) {
       return {};
     }
-  // Paper 1 eq. (11) at this instant: sqrt(75 / (4 pi) sum_a V_a |u_a - u0(r_a)|^2), for the
-  // velocity and for its Shepard-filtered field; the error of a run is the maximum over time.
-  update_derived();
-  const std::array<std::vector<double>, D> velocity = real_velocity();
-  const std::array<std::vector<double>, D> filtered = filtered_velocity();
-  double raw_sum = 0.0;
-  double filtered_sum = 0.0;
-  for (std::size_t a = 0; a < fluid_count(); ++a) {
-    const auto [exact_x, exact_y] = gresho::velocity(fluid_position(0, a) - parameters_.centre[0],
-                                                     fluid_position(1, a) - parameters_.centre[1]);
-    const double volume = mass_[a] / density_[a];
-    raw_sum += volume * ((velocity[0][a] - exact_x) * (velocity[0][a] - exact_x) +
-                         (velocity[1][a] - exact_y) * (velocity[1][a] - exact_y));
-    filtered_sum += volume * ((filtered[0][a] - exact_x) * (filtered[0][a] - exact_x) +
-                              (filtered[1][a] - exact_y) * (filtered[1][a] - exact_y));
-  }
-  return {{"velocity_error", std::sqrt(raw_sum / gresho::velocity_norm_squared)},
-          {"filtered_velocity_error", std::sqrt(filtered_sum / gresho::velocity_norm_squared)}};
+    // Paper 1 eq. (11) at this instant: sqrt(75 / (4 pi) sum_a V_a |u_a - u0(r_a)|^2), for the
+    // velocity and for its Shepard-filtered field; the error of a run is the maximum over time.
+    update_derived();
+    const std::array<std::vector<double>, D> velocity = real_velocity();
+    const std::array<std::vector<double>, D> filtered = filtered_velocity();
+    double raw_sum = 0.0;
+    double filtered_sum = 0.0;
+    for (std::size_t a = 0; a < fluid_count(); ++a) {
+      const auto [exact_x, exact_y] =
+          gresho::velocity(fluid_position(0, a) - parameters_.centre[0],
+                           fluid_position(1, a) - parameters_.centre[1]);
+      const double volume = mass_[a] / density_[a];
+      raw_sum += volume * ((velocity[0][a] - exact_x) * (velocity[0][a] - exact_x) +
+                           (velocity[1][a] - exact_y) * (velocity[1][a] - exact_y));
+      filtered_sum += volume * ((filtered[0][a] - exact_x) * (filtered[0][a] - exact_x) +
+                                (filtered[1][a] - exact_y) * (filtered[1][a] - exact_y));
+    }
+    return {{"velocity_error", std::sqrt(raw_sum / gresho::velocity_norm_squared)},
+            {"filtered_velocity_error", std::sqrt(filtered_sum / gresho::velocity_norm_squared)}};
   }
 }
 

@@ -50,8 +50,8 @@ InitialFields<D> initial_fields(const Parameters<D>& parameters,
     if constexpr (D == 2) {
       if (gresho) {
         const double r = std::hypot(p[0] - parameters.centre[0], p[1] - parameters.centre[1]);
-        return tait_density(gresho::pressure(r, parameters.rest_density),
-                            parameters.rest_density, parameters.sound_speed);
+        return tait_density(gresho::pressure(r, parameters.rest_density), parameters.rest_density,
+                            parameters.sound_speed);
       }
     }
     return parameters.rest_density;
