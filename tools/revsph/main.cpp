@@ -152,7 +152,9 @@ int main(int argc, char** argv) {
   std::string first_snapshot;
   std::string second_snapshot;
   auto* diff_app = app.add_subcommand(
-      "diff", "compare two snapshots bit for bit (exit status 0 only if identical)");
+      "diff", "compare two snapshots bit for bit and locate the first difference (exit status 0 "
+              "only if identical); a snapshot whose state does not match its recorded hash is "
+              "compared anyway, after a warning");
   diff_app->add_option("a", first_snapshot, "first snapshot (.h5)")->required();
   diff_app->add_option("b", second_snapshot, "second snapshot (.h5)")->required();
 
