@@ -17,6 +17,12 @@ EnergyLog::EnergyLog(std::optional<std::string> csv_path, std::optional<double> 
   }
 }
 
+void EnergyLog::continue_from(const EnergyLog& earlier) {
+  initial_total_ = earlier.initial_total_;
+  scale_ = earlier.scale_;
+  mechanical_scale_ = earlier.mechanical_scale_;
+}
+
 void EnergyLog::record(std::int64_t step, double time, const EnergyBudget& budget) {
   const double total = budget.total();
   if (!recorded_) {
@@ -29,21 +35,30 @@ void EnergyLog::record(std::int64_t step, double time, const EnergyBudget& budge
       for (const EnergyTerm& term : budget.terms) {
         *csv_ << "," << term.name;
       }
-      *csv_ << ",total,relative_error\n";
+      *csv_ << ",total,relative_error,mechanical_relative_error\n";
     }
   }
+  const double deviation = std::fabs(total - *initial_total_);
+  max_deviation_ = std::max(max_deviation_, deviation);
   scale_ = std::max({scale_, std::fabs(*initial_total_), budget.largest_term()});
-  last_relative_error_ = std::fabs(total - *initial_total_) / scale_;
+  last_relative_error_ = deviation / scale_;
   max_relative_error_ = std::max(max_relative_error_, last_relative_error_);
+  mechanical_scale_.observe(budget);
+  last_mechanical_relative_error_ = mechanical_relative_error(deviation, mechanical_scale_.value());
   last_ = budget;
   if (csv_) {
     *csv_ << step << "," << time;
     for (const EnergyTerm& term : budget.terms) {
       *csv_ << "," << term.value;
     }
-    *csv_ << "," << total << "," << last_relative_error_ << "\n";
+    *csv_ << "," << total << "," << last_relative_error_ << "," << last_mechanical_relative_error_
+          << "\n";
     csv_->flush();
   }
+}
+
+double EnergyLog::max_mechanical_relative_error() const {
+  return mechanical_relative_error(max_deviation_, mechanical_scale_.value());
 }
 
 } // namespace revsph

@@ -1,12 +1,19 @@
 #pragma once
-// energy.csv: one row per output step with every energy term, the total and the relative error
-// |E(t) - E(0)| / S, E(0) being the first row's total or, for a restarted run, the total at the
-// start of the original run, and S the larger of |E(0)| and the largest |term| recorded so far:
-// |E(0)| itself for an isolated system whose terms are positive, and still a meaningful scale
-// for one that starts at rest (E(0) = 0) and is driven (its terms then include the work done on
-// it, counted negative).
+// energy.csv: one row per output step with every energy term, the total and two relative errors
+// of the total (docs/verify.md, "Two energy errors"):
+//   relative_error             |E(t) - E(0)| / S, S the larger of |E(0)| and the largest |term|
+//                              recorded so far: the paper's |E - E(0)| / |E(0)| (paper 1, Fig. 8)
+//                              for an isolated system whose terms are positive, and still a scale
+//                              for one that starts at rest (E(0) = 0) and is driven (its terms
+//                              then include the work done on it, counted negative);
+//   mechanical_relative_error  |E(t) - E(0)| / M(t), M the energy that has moved so far
+//                              (core/mechanical_energy_scale.hpp): the error a reader can judge
+//                              when E(0) is mostly energy that never moves (WCSPH water at rest).
+// E(0) is the first row's total or, for a restarted run, the total at the start of the original
+// run (the mechanical scale of a restarted run starts again from its first row's terms).
 
 #include "core/energy.hpp"
+#include "core/mechanical_energy_scale.hpp"
 
 #include <cstdint>
 #include <fstream>
@@ -26,9 +33,21 @@ public:
   bool empty() const { return !recorded_; }
   // E(0) for the relative error, if not the first record's total (a later half of a run).
   void set_reference_total(double total) { initial_total_ = total; }
+  // A later half of the same experiment (verify's backward half): E(0), the initial terms and
+  // both scales carry on from `earlier`, so that both halves are measured alike (the maxima of
+  // the errors stay this half's own).
+  void continue_from(const EnergyLog& earlier);
   double initial_total() const { return initial_total_.value_or(0.0); }
   double last_relative_error() const { return last_relative_error_; }
   double max_relative_error() const { return max_relative_error_; }
+  double last_mechanical_relative_error() const { return last_mechanical_relative_error_; }
+  // The largest |E(t) - E(0)| recorded (by this log) over the mechanical scale at its last
+  // record: the
+  // normalisation of paper 1's Fig. 5 (by the whole drop of the potential energy), which an
+  // early record, taken before much energy has moved, cannot inflate.
+  double max_mechanical_relative_error() const;
+  double max_deviation() const { return max_deviation_; }
+  double mechanical_scale() const { return mechanical_scale_.value(); }
   const EnergyBudget& last() const { return last_; }
 
 private:
@@ -36,8 +55,11 @@ private:
   std::optional<double> initial_total_;
   bool recorded_ = false;
   double scale_ = 0.0;
+  MechanicalEnergyScale mechanical_scale_;
+  double max_deviation_ = 0.0;
   double last_relative_error_ = 0.0;
   double max_relative_error_ = 0.0;
+  double last_mechanical_relative_error_ = 0.0;
   EnergyBudget last_;
 };
 

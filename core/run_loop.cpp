@@ -9,8 +9,10 @@ std::string energy_note(const EnergyLog* log) {
   if (log == nullptr || log->empty()) {
     return {};
   }
-  char note[64];
-  std::snprintf(note, sizeof note, "dE/E = %.2e", log->last_relative_error());
+  // Both relative errors of energy.csv: over E(0) (the paper's) and over the energy that moved.
+  char note[96];
+  std::snprintf(note, sizeof note, "dE/E0 = %.2e  dE/Emech = %.2e", log->last_relative_error(),
+                log->last_mechanical_relative_error());
   return note;
 }
 } // namespace

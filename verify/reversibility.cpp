@@ -46,6 +46,9 @@ VerifyReport verify_reversibility(Simulation& simulation, const VerifyOptions& o
   const StateSnapshot final_state = simulation.capture_state();
   report.final_hash = state_hash(final_state);
   report.comparison = compare_states(initial, final_state);
+  if (!report.comparison.identical && report.comparison.layout_error.empty()) {
+    report.distance = state_distance(initial, final_state);
+  }
   report.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;

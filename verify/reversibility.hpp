@@ -5,9 +5,11 @@
 #include "core/run_loop.hpp"
 #include "core/simulation.hpp"
 #include "verify/state_compare.hpp"
+#include "verify/state_distance.hpp"
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +42,9 @@ struct VerifyOptions {
 
 struct VerifyReport {
   StateComparison comparison;
+  // How far the returned state lies from the initial one, variable by variable: set when they
+  // differ (a case with irreversible terms, float arithmetic, a fault) and can be compared.
+  std::optional<StateDistance> distance;
   std::string initial_hash;
   std::string final_hash;
   std::string turning_point_hash; // after the forward half

@@ -387,14 +387,16 @@ class FaultTest(unittest.TestCase):
 
     # -- refused files --------------------------------------------------------------------------
 
-    def assert_refused(self, path, *phrases):
-        """hash, run --from and diff (either side) refuse the file: status 2, one error line
-        naming the file and containing `phrases`, nothing on stdout, no output directory."""
+    def assert_refused(self, path, *phrases, diff=True):
+        """hash, run --from and (if `diff`) diff on either side refuse the file: status 2, one
+        error line naming the file and containing `phrases`, nothing on stdout, no output
+        directory."""
         out = os.path.join(WORK, "refused-" + os.path.basename(path))
         commands = {"hash": ["hash", path],
-                    "run --from": ["run", "--from", path, "--out", out, "--steps", 1],
-                    "diff (first)": ["diff", path, self.good],
-                    "diff (second)": ["diff", self.good, path]}
+                    "run --from": ["run", "--from", path, "--out", out, "--steps", 1]}
+        if diff:
+            commands["diff (first)"] = ["diff", path, self.good]
+            commands["diff (second)"] = ["diff", self.good, path]
         for name, args in commands.items():
             with self.subTest(command=name, file=os.path.basename(path)):
                 result = run_revsph(*args)
@@ -416,7 +418,35 @@ class FaultTest(unittest.TestCase):
             raw[7, 0] += 1  # one unit in the last place of one coordinate
             h5["/state/fluid/position"][...] = raw
             self.assertNotEqual(python_state_hash(h5), text_attr(h5.attrs["state_hash"]))
-        self.assert_refused(path, "hash")
+        # diff reads it with a warning instead (test_diff_locates_the_edit_of_a_stale_hash_file).
+        self.assert_refused(path, "hash", diff=False)
+
+    def test_diff_locates_the_edit_of_a_stale_hash_file(self):
+        # A comparison is how one finds what was changed in a damaged file: diff warns that the
+        # hash does not match, and still names the edited value.
+        path = os.path.join(WORK, "edited-for-diff.h5")
+        shutil.copy(self.good, path)
+        with h5py.File(path, "r+") as h5:
+            raw = h5["/state/fluid/velocity"][()]
+            raw[11, 1] -= 3
+            h5["/state/fluid/velocity"][...] = raw
+        for args in ((self.good, path), (path, self.good)):
+            with self.subTest(order=[os.path.basename(a) for a in args]):
+                result = run_revsph("diff", *args)
+                self.assertEqual(result.returncode, 1, result.stderr)
+                warnings = result.stderr.splitlines()
+                self.assertEqual(len(warnings), 1, result.stderr)
+                self.assertTrue(warnings[0].startswith(f"revsph: warning: {path}: "), warnings[0])
+                self.assertIn("does not match the hash recorded", warnings[0])
+                verdict = [line for line in result.stdout.splitlines()
+                           if line.startswith("verdict: ")]
+                self.assertEqual(len(verdict), 1, result.stdout)
+                self.assertIn("first difference at fluid particle 11, velocity[1]", verdict[0])
+                self.assertRegex(verdict[0], r"; 1 of \d+ values differ")
+                self.assertIn("largest difference 3 units in the last place", verdict[0])
+        # The intact file alone: no warning.
+        result = run_revsph("diff", self.good, self.good)
+        self.assertEqual((result.returncode, result.stderr), (OK, ""))
 
     def test_truncated_snapshot_is_refused(self):
         path = os.path.join(WORK, "truncated.h5")

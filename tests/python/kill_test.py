@@ -213,7 +213,8 @@ class KillTest(unittest.TestCase):
                 rows = list(csv.reader(text.splitlines()))
                 header = rows[0]
                 self.assertEqual(header[:2], ["step", "time"])
-                self.assertEqual(header[-2:], ["total", "relative_error"])
+                self.assertEqual(header[-3:],
+                                 ["total", "relative_error", "mechanical_relative_error"])
                 steps = []
                 for row in rows[1:]:
                     self.assertEqual(len(row), len(header), f"{energy}: row {row}")

@@ -217,6 +217,45 @@ class XdmfReaderTest(unittest.TestCase):
         final = self.summary["energy"]["final"]["kinetic"]
         self.assertEqual(final, float(self.energy_by_step[STEPS]["kinetic"]))
 
+    def test_energy_errors_follow_their_definitions(self):
+        """energy.csv's two relative errors recomputed from its own columns (docs/verify.md):
+        relative_error = |E - E0| / max(|E0|, largest |term| so far); mechanical_relative_error
+        = |E - E0| / M, M the running maximum over rows and terms of |kinetic| and, for every
+        other term, |term - its first value|."""
+        header = list(self.energy_rows[0].keys())
+        self.assertEqual(header[-3:], ["total", "relative_error", "mechanical_relative_error"])
+        terms = header[2:-3]
+        self.assertIn("kinetic", terms)
+        first = {name: float(self.energy_rows[0][name]) for name in terms}
+        total0 = float(self.energy_rows[0]["total"])
+        scale = mechanical = 0.0
+        largest_deviation = 0.0
+        for row in self.energy_rows:
+            values = {name: float(row[name]) for name in terms}
+            deviation = abs(float(row["total"]) - total0)
+            largest_deviation = max(largest_deviation, deviation)
+            scale = max([scale, abs(total0)] + [abs(v) for v in values.values()])
+            mechanical = max([mechanical] + [abs(values[name]) if name == "kinetic"
+                                             else abs(values[name] - first[name])
+                                             for name in terms])
+            expected = deviation / mechanical if mechanical > 0 else 0.0
+            with self.subTest(step=row["step"]):
+                self.assertAlmostEqual(float(row["relative_error"]), deviation / scale,
+                                       delta=1e-12 * deviation / scale + 1e-300)
+                self.assertAlmostEqual(float(row["mechanical_relative_error"]), expected,
+                                       delta=1e-9 * expected + 1e-300)
+        # The dam break starts at rest: what moved is the drop of the gravitational energy, and
+        # that is far smaller than E0, which the water's compressional energy dominates.
+        drop = first["gravitational"] - min(float(r["gravitational"]) for r in self.energy_rows)
+        self.assertGreater(mechanical, 0.0)
+        self.assertGreaterEqual(mechanical, drop * (1 - 1e-12))
+        self.assertLess(mechanical, 0.1 * abs(total0))
+        energy = self.summary["energy"]
+        self.assertAlmostEqual(energy["mechanical_scale"], mechanical, delta=1e-12 * mechanical)
+        self.assertAlmostEqual(energy["max_mechanical_relative_error"],
+                               largest_deviation / mechanical,
+                               delta=1e-9 * largest_deviation / mechanical + 1e-300)
+
     def test_position_view_is_raw_times_scale(self):
         for file in self.snapshot_files:
             with h5py.File(file, "r") as h5:

@@ -117,6 +117,24 @@ TEST(Verifier, NamesExactlyTheParticleChangedJustBeforeTheComparison) {
   EXPECT_EQ(report.comparison.differences[0].max_units_in_last_place, 1u);
   EXPECT_NE(report.comparison.verdict().find("fluid particle 4321, velocity[0]"), std::string::npos)
       << report.comparison.verdict();
+  // The distance names the same variable: one unit of its scale, at that particle.
+  ASSERT_TRUE(report.distance.has_value());
+  const auto differing = report.distance->differing();
+  ASSERT_EQ(differing.size(), 1u);
+  EXPECT_EQ(differing[0]->name(), "fluid.velocity");
+  EXPECT_EQ(differing[0]->worst_particle, 4321u);
+  EXPECT_EQ(differing[0]->max_units_in_last_place, 1u);
+  const StateSnapshot state = simulation->capture_state();
+  EXPECT_EQ(differing[0]->max_difference, state.find("fluid", "velocity")->info.scale.unit());
+}
+
+TEST(Verifier, IdenticalReturnHasNoDistance) {
+  auto simulation = make_simulation("dambreak-small");
+  VerifyOptions options;
+  options.steps = 20;
+  const auto report = revsph::verify_reversibility(*simulation, options);
+  EXPECT_TRUE(report.identical());
+  EXPECT_FALSE(report.distance.has_value());
 }
 
 } // namespace

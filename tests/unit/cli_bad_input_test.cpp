@@ -7,7 +7,7 @@
 #include "core/model_registry.hpp"
 
 #include "case_text.hpp"
-#include "temp_directory.hpp"
+#include "cli_sandbox.hpp"
 
 #include <gtest/gtest.h>
 
@@ -30,13 +30,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string error_prefix = "revsph: error: ";
-
 std::string dambreak_small_text() {
   return revsph::testing::builtin_case_text("dambreak-small");
 }
 
+using revsph::testing::CommandResult;
+using revsph::testing::entries_of;
+using revsph::testing::error_prefix;
+using revsph::testing::expect_clean_rejection;
+using revsph::testing::read_file;
 using revsph::testing::replaced_once;
+using revsph::testing::Sandbox;
 
 // Line (1-based) on which the last line of `edit` lies in `text`, for messages that point into
 // the file.
@@ -51,97 +55,6 @@ std::string with_line(std::string part, const std::string& text, const std::stri
     part.replace(at, marker.size(), std::to_string(line_of_edit(text, edit)));
   }
   return part;
-}
-
-std::string shell_quoted(const std::string& word) {
-  std::string quoted = "'";
-  for (char c : word) {
-    quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  }
-  return quoted + "'";
-}
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-std::set<std::string> entries_of(const fs::path& directory) {
-  std::set<std::string> names;
-  for (const fs::directory_entry& entry : fs::directory_iterator(directory)) {
-    names.insert(entry.path().filename().string());
-  }
-  return names;
-}
-
-struct CommandResult {
-  int exit_status = -1;
-  std::string out;
-  std::string err;
-};
-
-std::ostream& operator<<(std::ostream& stream, const CommandResult& result) {
-  return stream << "exit status " << result.exit_status << "\n--- stdout:\n"
-                << result.out << "--- stderr:\n"
-                << result.err << "---";
-}
-
-// A scratch area: `work()` is the binary's working directory and holds the case file; the
-// captured output lives beside it, so that work() shows exactly what the binary wrote.
-class Sandbox {
-public:
-  Sandbox() { fs::create_directory(work()); }
-
-  fs::path work() const { return root_.path() / "work"; }
-  fs::path out() const { return work() / "out"; }
-
-  fs::path write_case(const std::string& text, const std::string& name = "case.toml") const {
-    const fs::path path = work() / name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
-
-  CommandResult revsph(const std::vector<std::string>& arguments) const {
-    const fs::path out_file = root_.path() / "stdout.txt";
-    const fs::path err_file = root_.path() / "stderr.txt";
-    // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on `" " + string`.
-    std::string command = "cd ";
-    command.append(shell_quoted(work().string()))
-        .append(" && ")
-        .append(shell_quoted(REVSPH_BINARY));
-    for (const std::string& argument : arguments) {
-      command.append(" ").append(shell_quoted(argument));
-    }
-    command.append(" </dev/null >").append(shell_quoted(out_file.string()));
-    command.append(" 2>").append(shell_quoted(err_file.string()));
-    const int status = std::system(command.c_str());
-    CommandResult result;
-    result.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = read_file(out_file);
-    result.err = read_file(err_file);
-    return result;
-  }
-
-private:
-  revsph::testing::TempDirectory root_{"revsph-cli-test"};
-};
-
-// The contract for every rejected input. `parts` must all appear in the one error line.
-void expect_clean_rejection(const Sandbox& sandbox, const CommandResult& result,
-                            const std::set<std::string>& expected_work_entries,
-                            const std::vector<std::string>& parts) {
-  EXPECT_EQ(result.exit_status, 2) << result;
-  EXPECT_EQ(result.out, "") << result;
-  EXPECT_EQ(result.err.rfind(error_prefix, 0), 0u) << result;
-  ASSERT_FALSE(result.err.empty()) << result;
-  EXPECT_EQ(result.err.back(), '\n') << result;
-  EXPECT_EQ(result.err.find('\n'), result.err.size() - 1) << "more than one line: " << result;
-  for (const std::string& part : parts) {
-    EXPECT_NE(result.err.find(part), std::string::npos)
-        << "the message lacks \"" << part << "\": " << result;
-  }
-  EXPECT_FALSE(fs::exists(sandbox.out())) << "the --out directory was created";
-  EXPECT_EQ(entries_of(sandbox.work()), expected_work_entries) << "something was written";
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -394,6 +307,61 @@ TEST(CliBadInputTest, EmptyCaseFileIsRejected) {
       sandbox.revsph({"run", case_path.string(), "--out", sandbox.out().string(), "--steps", "1"});
   expect_clean_rejection(sandbox, result, {"case.toml"},
                          {case_path.string() + ": model: ", "missing required key"});
+}
+
+// ---------------------------------------------------------------------------------------------
+// Options that are well formed but cannot be honoured.
+
+TEST(CliBadInputTest, SnapshotGivenAsCaseSaysUseFrom) {
+  Sandbox sandbox;
+  const fs::path first = sandbox.work() / "first";
+  const CommandResult made =
+      sandbox.revsph({"run", "dambreak-small", "--steps", "0", "--out", first.string()});
+  ASSERT_EQ(made.exit_status, 0) << made;
+  const fs::path snapshot = first / "snapshots" / "step_000000000.h5";
+  ASSERT_TRUE(fs::is_regular_file(snapshot)) << made;
+  for (const std::string command : {"run", "verify"}) {
+    const CommandResult result = sandbox.revsph(
+        {command, snapshot.string(), "--steps", "1", "--out", sandbox.out().string()});
+    expect_clean_rejection(sandbox, result, {"first"},
+                           {error_prefix + snapshot.string() + ": this is a snapshot: use --from"});
+  }
+}
+
+TEST(CliBadInputTest, FloatArithmeticOnAFixedPointOnlyModelIsBadInput) {
+  Sandbox sandbox;
+  for (const std::string command : {"run", "verify"}) {
+    const CommandResult result =
+        sandbox.revsph({command, "cavity-re100-small", "--arithmetic", "float", "--steps", "1",
+                        "--out", sandbox.out().string()});
+    expect_clean_rejection(sandbox, result, {},
+                           {"cavity-re100-small.toml: --arithmetic: ", "fixed point only"});
+  }
+}
+
+TEST(CliBadInputTest, ZeroThreadsIsRefusedInOneLine) {
+  Sandbox sandbox;
+  for (const std::string threads : {"0", "-2"}) {
+    const CommandResult result = sandbox.revsph(
+        {"run", "--threads", threads, "--steps", "1", "--out", sandbox.out().string()});
+    expect_clean_rejection(sandbox, result, {},
+                           {error_prefix + "--threads: must be at least 1 (got " + threads + ")"});
+  }
+}
+
+TEST(CliBadInputTest, EndBeforeTheFirstStepIsRefused) {
+  Sandbox sandbox;
+  for (const std::string command : {"run", "verify", "hash"}) {
+    std::vector<std::string> arguments = {command, "dambreak-small", "--t-end", "1e-7"};
+    if (command != "hash") {
+      arguments.insert(arguments.end(), {"--out", sandbox.out().string()});
+    }
+    const CommandResult result = sandbox.revsph(arguments);
+    expect_clean_rejection(
+        sandbox, result, {},
+        {error_prefix +
+         "dambreak-small.toml: --t-end: shorter than one time step (1e-07 s < dt = "});
+  }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -4,6 +4,7 @@
 #include "core/atomic_file.hpp"
 #include "tools/analysis/boltzmann_entropy.hpp"
 #include "tools/revsph/commands.hpp"
+#include "tools/revsph/state_speeds.hpp"
 #include "verify/snapshot_check.hpp"
 
 #include <nlohmann/json.hpp>
@@ -75,41 +76,21 @@ std::vector<fs::path> snapshot_files(const fs::path& directory) {
 SnapshotSpeeds read_speeds(const fs::path& file, const std::string& phase,
                            const std::string& particle_set) {
   const Snapshot snapshot = read_checked_snapshot(file);
-  const FieldSnapshot* velocity = snapshot.state.find(particle_set, "velocity");
-  const FieldSnapshot* mass = snapshot.state.find(particle_set, "mass");
-  if (velocity == nullptr || mass == nullptr) {
-    throw SnapshotError(file.string() + ": particle set '" + particle_set +
-                        "' has no velocity and mass fields (choose one with --particle-set)");
-  }
-  if (velocity->count == 0) {
-    throw SnapshotError(file.string() + ": particle set '" + particle_set + "' is empty");
-  }
   SnapshotSpeeds result;
+  try {
+    ParticleSpeeds speeds = particle_speeds(snapshot.state, particle_set);
+    result.dimension = speeds.dimension;
+    result.speeds = std::move(speeds.speeds);
+    result.kinetic_energy = speeds.kinetic_energy;
+    result.mean_mass = speeds.mean_mass;
+  } catch (const std::invalid_argument& error) {
+    throw SnapshotError(file.string() + ": " + error.what());
+  }
   result.phase = phase;
   result.file = file;
   result.step = snapshot.metadata.step;
   result.time = snapshot.metadata.time;
   result.forward_equivalent_time = result.time;
-  result.dimension = velocity->info.components;
-  result.speeds.resize(velocity->count);
-  double total_mass = 0.0;
-  for (std::size_t particle = 0; particle < velocity->count; ++particle) {
-    double square = 0.0;
-    for (int component = 0; component < velocity->info.components; ++component) {
-      const double v = velocity->real(component, particle);
-      square += v * v;
-    }
-    const double m = mass->real(0, particle);
-    if (!std::isfinite(square) || !std::isfinite(m) || m <= 0.0) {
-      throw SnapshotError(file.string() + ": " + particle_set + " particle " +
-                          std::to_string(particle) +
-                          ": velocity or mass is not finite (or the mass is not positive)");
-    }
-    result.speeds[particle] = std::sqrt(square);
-    result.kinetic_energy += 0.5 * m * square;
-    total_mass += m;
-  }
-  result.mean_mass = total_mass / static_cast<double>(velocity->count);
   return result;
 }
 

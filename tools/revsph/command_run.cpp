@@ -125,6 +125,8 @@ int run_command(const RunOptions& options) {
   const double steps_done = static_cast<double>(simulation.steps_taken() - summary.start_step);
   std::printf("energy: max |E(t) - E(0)| / max(|E(0)|, |terms|) = %.3e\n",
               energy.max_relative_error());
+  std::printf("energy: max |E(t) - E(0)| / energy moved = %.3e (energy moved %.6e)\n",
+              energy.max_mechanical_relative_error(), energy.mechanical_scale());
   std::printf("speed: %.3g particle-steps/s (%.2f s wall)\n",
               summary.wall_seconds > 0
                   ? static_cast<double>(simulation.info().moving_particle_count()) * steps_done /

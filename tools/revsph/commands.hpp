@@ -51,7 +51,8 @@ int hash_command(const HashOptions& options);
 // (`keys_model`: a model or "all"), as text or as Markdown (docs/case-keys.md).
 int cases_command(const std::string& name, const std::string& keys_model = "",
                   bool markdown = false);
-// Bit-for-bit comparison of two snapshots: 0 identical, 1 different, 2 not comparable.
+// Bit-for-bit comparison of two snapshots: 0 identical, 1 different, 2 not comparable. A snapshot
+// whose state no longer has its recorded hash is compared all the same, after a warning on stderr.
 int diff_command(const std::string& first, const std::string& second);
 // Reduced Boltzmann entropy of every snapshot of a run: entropy.csv, histograms.csv and (unless
 // disabled, through tools/plots/entropy.py) entropy.png and histogram.png.

@@ -4,6 +4,7 @@
 #include "verify/snapshot_check.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 
 namespace revsph::cli {
@@ -25,7 +26,17 @@ LoadedCase build(CaseFile case_file, Arithmetic arithmetic) {
   SimulationOptions simulation_options;
   simulation_options.arithmetic = arithmetic;
   RunSettings settings = read_run_settings(case_file);
-  std::unique_ptr<Simulation> simulation = create_simulation(case_file, simulation_options);
+  std::unique_ptr<Simulation> simulation;
+  try {
+    simulation = create_simulation(case_file, simulation_options);
+  } catch (const std::invalid_argument& refusal) {
+    // A model that has no float variant (SHTC-SPH) refuses --arithmetic float at construction:
+    // bad input, not a failed simulation.
+    if (arithmetic == Arithmetic::fixed) {
+      throw;
+    }
+    throw CaseError(case_file.source_name(), "--arithmetic", refusal.what());
+  }
   case_file.require_no_unknown_keys();
   return {std::move(case_file), std::move(settings), std::move(simulation), std::nullopt};
 }
@@ -68,6 +79,10 @@ LoadedCase load_simulation(const CaseOptions& options) {
     }
     return load_from_snapshot(options);
   }
+  if (is_hdf5_file(options.case_path) || options.case_path.ends_with(".h5")) {
+    throw CaseError(options.case_path, "",
+                    "this is a snapshot: use --from " + options.case_path + " to continue it");
+  }
   CaseFile case_file = load_case(options.case_path);
   apply_overrides(case_file, options.overrides);
   if (options.arithmetic != "fixed" && options.arithmetic != "float") {
@@ -103,7 +118,16 @@ std::int64_t resolve_steps(const LoadedCase& loaded, std::optional<std::int64_t>
                         ? "give the number of steps with --steps N or --t-end T"
                         : "no run length: give --steps N or --t-end T, or [run] steps / t_end");
   }
-  const std::int64_t remaining = end.steps_for(simulation.info().dt) - simulation.steps_taken();
+  const double dt = simulation.info().dt;
+  if (t_end && *t_end < dt) {
+    char reason[160];
+    std::snprintf(
+        reason, sizeof reason,
+        "shorter than one time step (%.6g s < dt = %.6g s): give a later end or --steps N", *t_end,
+        dt);
+    throw CaseError(source, "--t-end", reason);
+  }
+  const std::int64_t remaining = end.steps_for(dt) - simulation.steps_taken();
   if (remaining < 0) {
     throw CaseError(source, t_end ? "--t-end" : "run",
                     "the run is already at step " + std::to_string(simulation.steps_taken()) +

@@ -14,6 +14,34 @@ namespace {
 
 using namespace revsph::cli;
 
+// CLI11's own range check prints the whole double range ("Value 0 not in range 0.000000 to
+// 1797…"): these say what is wanted, in one line.
+CLI::Validator positive_number() {
+  return CLI::Validator(
+      [](std::string& input) -> std::string {
+        double value = 0.0;
+        if (!CLI::detail::lexical_cast(input, value)) {
+          return "expected a number, got \"" + input + "\"";
+        }
+        return value > 0.0 ? std::string() : "must be > 0 (got " + input + ")";
+      },
+      "POSITIVE");
+}
+
+CLI::Validator thread_count_check() {
+  return CLI::Validator(
+      [](std::string& input) -> std::string {
+        long long value = 0;
+        if (!CLI::detail::lexical_cast(input, value)) {
+          return "expected a whole number of threads, got \"" + input + "\"";
+        }
+        return value >= 1 ? std::string()
+                          : "must be at least 1 (got " + input +
+                                "); leave it out to use every hardware thread";
+      },
+      "N >= 1");
+}
+
 struct CaseOptionHandles {
   CLI::Option* case_path = nullptr;
   CLI::Option* arithmetic = nullptr;
@@ -35,7 +63,7 @@ CaseOptionHandles add_case_options(CLI::App& command, CaseOptions& options,
   command
       .add_option("--threads", options.threads,
                   "number of threads (default: all); results do not depend on it")
-      ->check(CLI::PositiveNumber);
+      ->check(thread_count_check());
   return handles;
 }
 
@@ -67,6 +95,10 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("revsph ") + revsph::build_info::version + " (" +
                                         revsph::build_info::git_commit + ")");
   app.require_subcommand(1);
+  // Every refusal of the command line is one line, like those of case files (exit status 2).
+  app.failure_message([](const CLI::App*, const CLI::Error& error) {
+    return "revsph: error: " + std::string(error.what()) + " (see revsph --help)\n";
+  });
   const std::string case_help =
       "case file (TOML), or the name of a built-in case (list: revsph cases)";
 
@@ -82,9 +114,16 @@ int main(int argc, char** argv) {
 
   VerifyCommandOptions verify;
   auto* verify_app = app.add_subcommand(
-      "verify", "check bitwise reversibility: N steps, time reversal, N steps, time reversal, "
-                "compare every raw integer with the initial state (exit status 0 only if "
-                "identical)");
+      "verify",
+      "run N steps, reverse time, run N steps, reverse time, and compare with the initial state "
+      "(docs/verify.md). A reversible case must return every raw integer. A case with "
+      "irreversible terms (dissipation, an inexact update) runs the same experiment and is told "
+      "how far it landed (per variable, in physical units and units in the last place), its "
+      "energy budget over both halves and the entropy of its speeds.\n"
+      "Exit status: 0 a reversible case returned bit for bit, or a case with irreversible terms "
+      "kept its energy budget within --energy-tolerance (its not returning is then expected); "
+      "1 a reversible case did not return, or the energy budget did not close; 2 bad input "
+      "(command line, case, snapshot); 3 the simulation stopped (a fault).");
   const auto verify_handles = add_case_options(*verify_app, verify.case_options, case_help);
   add_from_option(*verify_app, verify.case_options);
   add_length_options(*verify_app, verify.steps, verify.t_end);
@@ -96,11 +135,10 @@ int main(int argc, char** argv) {
   verify_app->add_flag("--force", verify.force, "overwrite the files of a previous run in --out");
   verify_app
       ->add_option("--energy-tolerance", verify.energy_tolerance,
-                   "a case with irreversible terms (dissipation, an inexact update) is not "
-                   "reversed: it passes "
-                   "if its energy budget, |E(t) - E(0)| over the largest energy term, stays below "
-                   "this (default 1e-2)")
-      ->check(CLI::PositiveNumber);
+                   "a case with irreversible terms (dissipation, an inexact update) passes if "
+                   "its energy budget, max |E(t) - E(0)| over the largest energy term, checked "
+                   "after every step of both halves, stays below this (default 1e-2)")
+      ->check(positive_number());
 
   HashOptions hash;
   auto* hash_app = app.add_subcommand(
@@ -114,7 +152,9 @@ int main(int argc, char** argv) {
   std::string first_snapshot;
   std::string second_snapshot;
   auto* diff_app = app.add_subcommand(
-      "diff", "compare two snapshots bit for bit (exit status 0 only if identical)");
+      "diff", "compare two snapshots bit for bit and locate the first difference (exit status 0 "
+              "only if identical); a snapshot whose state does not match its recorded hash is "
+              "compared anyway, after a warning");
   diff_app->add_option("a", first_snapshot, "first snapshot (.h5)")->required();
   diff_app->add_option("b", second_snapshot, "second snapshot (.h5)")->required();
 
@@ -129,11 +169,11 @@ int main(int argc, char** argv) {
                    "output directory of `revsph run` or of `revsph verify --out`")
       ->required();
   entropy_app->add_option("--bins", entropy.bins, "number of speed bins (default 100)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   entropy_app
       ->add_option("--max-speed", entropy.max_speed,
                    "upper end of the speed bins in m/s (default: the largest speed in the run)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   entropy_app->add_option("--particle-set", entropy.particle_set,
                           "particle set whose velocities are analysed (default fluid)");
   entropy_app->add_option("--out", entropy.out_dir, "output directory (default RUN_DIR/analysis)");

@@ -1,0 +1,40 @@
+#pragma once
+// The particle speeds of one particle set of a state, and the reduced Boltzmann entropy of their
+// histogram (tools/analysis/boltzmann_entropy.hpp): shared by `revsph entropy`, which reads them
+// from snapshot files, and `revsph verify`, which takes them from the states of its experiment.
+
+#include "core/state_snapshot.hpp"
+#include "tools/analysis/boltzmann_entropy.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace revsph::cli {
+
+struct ParticleSpeeds {
+  int dimension = 2;
+  std::vector<double> speeds;
+  double kinetic_energy = 0.0; // Σ m v² / 2 (per unit depth in 2D)
+  double mean_mass = 0.0;
+};
+
+// Throws std::invalid_argument if the set has no velocity and mass fields, is empty, or holds a
+// non-finite velocity or a mass that is not positive (the message names the set and particle).
+ParticleSpeeds particle_speeds(const StateSnapshot& state, const std::string& particle_set);
+
+// The set whose speeds describe the flow: "fluid" (WCSPH) or "material" (SHTC) if the state has
+// it with velocity and mass fields, else the first set that has both; nullopt if none does.
+std::optional<std::string> moving_particle_set(const StateSnapshot& state);
+
+struct SpeedEntropy {
+  double entropy = 0.0; // S_D of eq. 17, as analysis::reduced_entropy
+  analysis::SpeedHistogram histogram;
+};
+
+// The reduced entropies of several speed samples on common bins [0, the largest speed of all]
+// (the histogram entropy depends on the bin width, so only entropies on shared bins compare).
+std::vector<SpeedEntropy> shared_bin_entropies(const std::vector<const ParticleSpeeds*>& samples,
+                                               int bins = analysis::default_speed_bins);
+
+} // namespace revsph::cli
