@@ -31,7 +31,7 @@ def rate(binary, case, steps, threads, sets, work):
     subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
     with open(os.path.join(out, "summary.json")) as f:
         summary = json.load(f)
-    return summary["stepping_particle_steps_per_second"], summary["final_state_hash"]
+    return summary["stepping_particle_steps_per_second"], summary["final_hash"]
 
 
 def main():
