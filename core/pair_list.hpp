@@ -41,6 +41,10 @@ public:
   // its partners; see the header comment.
   template <class Visit>
   void for_each_slot(Visit&& visit) const;
+  // The same, called by every thread of an enclosing parallel region (orphaned worksharing), so
+  // that a pair loop and the work around it share one region.
+  template <class Visit>
+  void for_each_slot_in_team(Visit&& visit) const;
 
   // Fills the list for the slots of `cells` at `slot_coordinates` (coordinates in slot order).
   // Requires radius <= cells.cell_size().
@@ -53,11 +57,18 @@ private:
 
 template <class Visit>
 void HalfPairList::for_each_slot(Visit&& visit) const {
+#pragma omp parallel
+  for_each_slot_in_team(visit);
+}
+
+template <class Visit>
+void HalfPairList::for_each_slot_in_team(Visit&& visit) const {
   const std::size_t stripe_count = stripes_.size();
   for (std::size_t parity = 0; parity < 2; ++parity) {
     const std::size_t in_phase = (stripe_count + 1 - parity) / 2;
-    // Dynamic scheduling balances stripes of unequal size; the results do not depend on it.
-#pragma omp parallel for schedule(dynamic, 1)
+    // Dynamic scheduling balances stripes of unequal size; the results do not depend on it. The
+    // loop's closing barrier separates the even phase from the odd one.
+#pragma omp for schedule(dynamic, 1)
     for (std::size_t i = 0; i < in_phase; ++i) {
       const Stripe& stripe = stripes_[2 * i + parity];
       for (std::uint32_t local = 0; local < stripe.slot_count; ++local) {

@@ -121,13 +121,13 @@ void fill_geometry(const CoordinateView<D>& x_a, std::uint32_t a, const Coordina
   pair.r = std::sqrt(pair.r_squared);
 }
 
-// Self terms, then every wanted slot's value; a sum that does not fit becomes a fault.
+// Self terms, then every wanted slot's value; a sum that does not fit becomes a fault. Called by
+// every thread of the pair loop's parallel region.
 template <class Arith, int D, class Term, int K>
-void finish_sums(const SlotLayout<D>& layout, const Term& term, PairSums<Arith, K>& sums) {
+void finish_in_team(const SlotLayout<D>& layout, const Term& term, PairSums<Arith, K>& sums,
+                    FaultRecorder& faults) {
   const std::size_t n = layout.slot_count();
-  sums.resize_values(n);
-  FaultRecorder faults;
-#pragma omp parallel for schedule(static)
+#pragma omp for schedule(static)
   for (std::size_t s = 0; s < n; ++s) {
     const auto slot = static_cast<std::uint32_t>(s);
     if (!receives(term, slot)) {
@@ -144,7 +144,6 @@ void finish_sums(const SlotLayout<D>& layout, const Term& term, PairSums<Arith, 
                           "overflow or non-finite value in a pair sum");
     }
   }
-  faults.throw_if_any();
 }
 
 } // namespace detail
@@ -156,35 +155,44 @@ template <class Arith, int D, PairTerm<D> Term>
 void sum_pairs(const SlotLayout<D>& layout, const Term& term, PairSums<Arith, Term::width>& sums,
                const CrossPairs<D>& cross = {}) {
   constexpr int K = Term::width;
-  sums.reset(layout.slot_count());
+  sums.resize(layout.slot_count());
   const CoordinateView<D> x = layout.position();
-  layout.pairs().for_each_slot([&](std::uint32_t a, std::span<const std::uint32_t> partners) {
-    typename PairSums<Arith, K>::Local own(sums);
-    PairGeometry<D> pair;
-    std::array<double, K> to_a{};
-    std::array<double, K> to_b{};
-    for (const std::uint32_t b : partners) {
-      detail::fill_geometry<D>(x, a, x, b, pair);
-      term.pair(pair, to_a, to_b);
-      for (int q = 0; q < K; ++q) {
-        own.add(q, to_a[q]);
-        sums.add(b, q, to_b[q]);
-      }
-    }
-    if constexpr (HasCrossPairs<Term, D>) {
-      if (detail::receives(term, a)) {
-        for (const std::uint32_t w : cross.of_slot->of(a)) {
-          detail::fill_geometry<D>(x, a, cross.targets, w, pair);
-          term.cross_pair(pair, to_a);
-          for (int q = 0; q < K; ++q) {
-            own.add(q, to_a[q]);
+  FaultRecorder faults;
+  // One parallel region for the whole sum (zeroing, the two phases of pairs, the self terms and
+  // conversions): its barriers are the only points where the threads wait for each other.
+#pragma omp parallel
+  {
+    sums.zero_in_team();
+    layout.pairs().for_each_slot_in_team(
+        [&](std::uint32_t a, std::span<const std::uint32_t> partners) {
+          typename PairSums<Arith, K>::Local own(sums);
+          PairGeometry<D> pair;
+          std::array<double, K> to_a{};
+          std::array<double, K> to_b{};
+          for (const std::uint32_t b : partners) {
+            detail::fill_geometry<D>(x, a, x, b, pair);
+            term.pair(pair, to_a, to_b);
+            for (int q = 0; q < K; ++q) {
+              own.add(q, to_a[q]);
+              sums.add(b, q, to_b[q]);
+            }
           }
-        }
-      }
-    }
-    sums.add_local(a, own);
-  });
-  detail::finish_sums<Arith>(layout, term, sums);
+          if constexpr (HasCrossPairs<Term, D>) {
+            if (detail::receives(term, a)) {
+              for (const std::uint32_t w : cross.of_slot->of(a)) {
+                detail::fill_geometry<D>(x, a, cross.targets, w, pair);
+                term.cross_pair(pair, to_a);
+                for (int q = 0; q < K; ++q) {
+                  own.add(q, to_a[q]);
+                }
+              }
+            }
+          }
+          sums.add_local(a, own);
+        });
+    detail::finish_in_team<Arith>(layout, term, sums, faults);
+  }
+  faults.throw_if_any();
 }
 
 // Only the one-sided terms of fixed targets: for every wanted slot a, the sum over the targets
@@ -195,25 +203,31 @@ void sum_cross_pairs(const SlotLayout<D>& layout, const Term& term,
                      PairSums<Arith, Term::width>& sums, const CrossPairs<D>& cross) {
   constexpr int K = Term::width;
   const std::size_t n = layout.slot_count();
-  sums.reset(n);
+  sums.resize(n);
   const CoordinateView<D> x = layout.position();
-#pragma omp parallel for schedule(static)
-  for (std::size_t s = 0; s < n; ++s) {
-    const auto a = static_cast<std::uint32_t>(s);
-    if (!detail::receives(term, a)) {
-      continue;
-    }
-    PairGeometry<D> pair;
-    std::array<double, K> to_a{};
-    for (const std::uint32_t w : cross.of_slot->of(a)) {
-      detail::fill_geometry<D>(x, a, cross.targets, w, pair);
-      term.cross_pair(pair, to_a);
-      for (int q = 0; q < K; ++q) {
-        sums.add(s, q, to_a[q]);
+  FaultRecorder faults;
+#pragma omp parallel
+  {
+    sums.zero_in_team();
+#pragma omp for schedule(static)
+    for (std::size_t s = 0; s < n; ++s) {
+      const auto a = static_cast<std::uint32_t>(s);
+      if (!detail::receives(term, a)) {
+        continue;
+      }
+      PairGeometry<D> pair;
+      std::array<double, K> to_a{};
+      for (const std::uint32_t w : cross.of_slot->of(a)) {
+        detail::fill_geometry<D>(x, a, cross.targets, w, pair);
+        term.cross_pair(pair, to_a);
+        for (int q = 0; q < K; ++q) {
+          sums.add(s, q, to_a[q]);
+        }
       }
     }
+    detail::finish_in_team<Arith>(layout, term, sums, faults);
   }
-  detail::finish_sums<Arith>(layout, term, sums);
+  faults.throw_if_any();
 }
 
 } // namespace revsph

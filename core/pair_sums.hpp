@@ -77,9 +77,20 @@ public:
 
   // n slots, every total zero and valid.
   void reset(std::size_t n) {
+    resize(n);
+#pragma omp parallel
+    zero_in_team();
+  }
+  // The two halves of reset for a pair loop that runs in one parallel region: resize before it,
+  // zero_in_team in it (by every thread of the team).
+  void resize(std::size_t n) {
     totals_.resize(n * K);
     invalid_.resize(n);
-#pragma omp parallel for schedule(static)
+    resize_values(n);
+  }
+  void zero_in_team() {
+    const std::size_t n = invalid_.size();
+#pragma omp for schedule(static)
     for (std::size_t s = 0; s < n; ++s) {
       for (int q = 0; q < K; ++q) {
         totals_[s * K + q] = Total{};

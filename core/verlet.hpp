@@ -20,13 +20,13 @@ template <class Arith, int D>
 void add_rate(StateField<typename Arith::Raw>& target,
               const std::array<std::vector<double>, D>& rate, double dt, FaultRecorder& faults) {
   const auto& scale = target.info().scale;
-  for (int c = 0; c < D; ++c) {
-    auto values = target.component(c);
-    const double* r = rate[c].data();
-    const std::size_t n = values.size();
+  const std::size_t n = target.count();
+  // One parallel region for all components: every region is a barrier, and a busy machine
+  // makes each one cost a time slice (issue 15).
 #pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!Arith::try_increment(values[i], dt * r[i], scale)) {
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int c = 0; c < D; ++c) {
+      if (!Arith::try_increment(target.at(c, i), dt * rate[c][i], scale)) {
         faults.record(i, target.info().particle_set.c_str(), target.info().name.c_str(),
                       "overflow or non-finite value in a kick");
       }
@@ -42,13 +42,13 @@ void drift(StateField<typename Arith::Raw>& position,
            const StateField<typename Arith::Raw>& velocity, double dt, FaultRecorder& faults) {
   const auto& x_scale = position.info().scale;
   const auto& v_scale = velocity.info().scale;
-  for (int c = 0; c < position.components(); ++c) {
-    auto x = position.component(c);
-    const auto v = velocity.component(c);
-    const std::size_t n = x.size();
+  const std::size_t n = position.count();
+  const int components = position.components();
 #pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!Arith::try_increment(x[i], dt * Arith::real(v[i], v_scale), x_scale)) {
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int c = 0; c < components; ++c) {
+      if (!Arith::try_increment(position.at(c, i), dt * Arith::real(velocity.at(c, i), v_scale),
+                                x_scale)) {
         faults.record(i, position.info().particle_set.c_str(), position.info().name.c_str(),
                       "overflow or non-finite value in a drift");
       }
