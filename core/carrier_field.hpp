@@ -32,16 +32,6 @@ public:
 
   std::size_t count() const { return count_; }
 
-  Raw raw(int component, std::size_t carrier) const {
-    const std::size_t set = set_of(carrier);
-    return fields_[set]->at(component, carrier - firsts_[set]);
-  }
-  double real(int component, std::size_t carrier) const {
-    const std::size_t set = set_of(carrier);
-    return Arith::real(fields_[set]->at(component, carrier - firsts_[set]),
-                       fields_[set]->info().scale);
-  }
-
   // Component c of every carrier, in carrier order, as physical values, into `out` (its
   // capacity reused from call to call).
   void fill_reals(int component, std::vector<double>& out) const {
@@ -79,14 +69,6 @@ public:
   }
 
 private:
-  std::size_t set_of(std::size_t carrier) const {
-    std::size_t set = 0;
-    while (set + 1 < firsts_.size() && carrier >= firsts_[set + 1]) {
-      ++set;
-    }
-    return set;
-  }
-
   std::vector<const StateField<Raw>*> fields_;
   std::vector<std::size_t> firsts_;
   std::size_t count_ = 0;

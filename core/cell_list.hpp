@@ -27,6 +27,12 @@ private:
   std::size_t index_;
 };
 
+// The cell budget of a list over `points` points: a few cells per point, so that a large, sparse
+// domain cannot exhaust memory.
+inline std::size_t cell_budget(std::size_t points) {
+  return 4 * points + 4096;
+}
+
 template <int D>
 class CellList {
 public:

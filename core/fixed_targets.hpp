@@ -18,7 +18,7 @@ class FixedTargets {
 public:
   // cell_size >= the radius the targets are found within.
   FixedTargets(const Box<D>& domain, double cell_size, std::size_t count, std::string set_name)
-      : cells_(domain, cell_size, 4 * count + 4096), set_name_(std::move(set_name)) {}
+      : cells_(domain, cell_size, cell_budget(count)), set_name_(std::move(set_name)) {}
 
   // Sorts the targets into cells. Throws SimulationFault (step unknown) for one outside the domain.
   void place(CoordinateArrays<D> positions) {

@@ -19,7 +19,7 @@ std::size_t total_count(const std::vector<CarrierSet>& sets) {
 template <int D>
 SlotLayout<D>::SlotLayout(const Box<D>& domain, double cell_size, std::vector<CarrierSet> sets)
     : sets_(std::move(sets)), carrier_count_(total_count(sets_)),
-      cells_(domain, cell_size, 4 * carrier_count_ + 4096) {
+      cells_(domain, cell_size, cell_budget(carrier_count_)) {
   first_carrier_.push_back(0);
   for (const CarrierSet& set : sets_) {
     first_carrier_.push_back(first_carrier_.back() + set.count);
@@ -28,7 +28,7 @@ SlotLayout<D>::SlotLayout(const Box<D>& domain, double cell_size, std::vector<Ca
 
 template <int D>
 std::size_t SlotLayout<D>::set_of_carrier(std::size_t carrier) const {
-  // The first set whose range ends after the carrier (sets are few: a linear scan).
+  // The last set starting at or before the carrier (sets are few: a linear scan).
   std::size_t set = 0;
   while (set + 1 < sets_.size() && carrier >= first_carrier_[set + 1]) {
     ++set;

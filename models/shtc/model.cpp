@@ -133,6 +133,8 @@ void Model<D>::initialise_constants() {
   // it, as many as there are neighbours), within the density scale's range.
   const double trial_mass = parameters_.material.rest_density / kernel_.value(0.0);
   mass_.assign(n, trial_mass);
+  density_constant_.assign(n, 0);
+  lambda_constant_.assign(n, 0);
   for (CarrierFields<D>* set : {&state_.material.carried, &state_.boundary.carried}) {
     set->density_constant.set_scale(parameters_.density_scale);
     set->lambda_constant.set_scale(parameters_.density_scale);
@@ -325,6 +327,12 @@ void Model<D>::update_constants() {
   mass_ =
       CarrierField<FixedArithmetic>{&state_.material.carried.mass, &state_.boundary.carried.mass}
           .reals();
+  density_constant_ = CarrierField<FixedArithmetic>{&state_.material.carried.density_constant,
+                                                    &state_.boundary.carried.density_constant}
+                          .raws();
+  lambda_constant_ = CarrierField<FixedArithmetic>{&state_.material.carried.lambda_constant,
+                                                   &state_.boundary.carried.lambda_constant}
+                         .raws();
   // Mirrored walls pretend velocities even at rest, and do work.
   walls_work_ = any_wall_moves(state_) ||
                 (parameters_.mirrored_walls && state_.boundary.position.count() > 0);
@@ -340,16 +348,8 @@ void Model<D>::update_geometry() {
   const std::size_t n = carrier_count();
   layout_.build(carrier_position(), parameters_.support_radius());
   layout_.gather(std::span<const double>(mass_), slot_mass_);
-  const std::vector<std::int64_t> density_constant =
-      CarrierField<FixedArithmetic>{&state_.material.carried.density_constant,
-                                    &state_.boundary.carried.density_constant}
-          .raws();
-  const std::vector<std::int64_t> lambda_constant =
-      CarrierField<FixedArithmetic>{&state_.material.carried.lambda_constant,
-                                    &state_.boundary.carried.lambda_constant}
-          .raws();
-  layout_.gather(std::span<const std::int64_t>(density_constant), slot_density_constant_);
-  layout_.gather(std::span<const std::int64_t>(lambda_constant), slot_lambda_constant_);
+  layout_.gather(std::span<const std::int64_t>(density_constant_), slot_density_constant_);
+  layout_.gather(std::span<const std::int64_t>(lambda_constant_), slot_lambda_constant_);
   compute_kernel_sums<D>(kernel_, layout_, slot_mass_, slot_density_constant_,
                          slot_lambda_constant_, sums_);
   FaultRecorder faults;

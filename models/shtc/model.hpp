@@ -166,7 +166,8 @@ private:
   SumScales sum_scales_;
 
   bool constants_valid_ = false;
-  std::vector<double> mass_; // carriers
+  std::vector<double> mass_;                                     // carriers
+  std::vector<std::int64_t> density_constant_, lambda_constant_; // carriers, raw
   bool walls_work_ = false;
   // Derived from the positions.
   bool geometry_valid_ = false;

@@ -60,11 +60,6 @@ namespace {
 
 using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
-// At most a few cells per particle, so a large empty domain cannot exhaust memory.
-std::size_t cell_budget(std::size_t particles) {
-  return 4 * particles + 4096;
-}
-
 template <int D>
 std::size_t count_of(const CoordinateArrays<D>& points, std::span<const double> mass,
                      const char* set) {

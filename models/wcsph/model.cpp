@@ -101,6 +101,8 @@ void Model<D, Arith>::update_constants() {
   }
   walls_.place(std::move(wall_position));
   mass_ = CarrierField<Arith>{&state_.fluid.mass, &state_.dummy.mass}.reals();
+  density_constant_ =
+      CarrierField<Arith>{&state_.fluid.density_constant, &state_.dummy.density_constant}.raws();
   constants_valid_ = true;
 }
 
@@ -113,9 +115,7 @@ void Model<D, Arith>::update_derived() {
   layout_.build(carrier_position(), parameters_.support_radius);
   const std::size_t carriers = layout_.slot_count();
   layout_.gather(std::span<const double>(mass_), slot_mass_);
-  const std::vector<Raw> density_constant =
-      CarrierField<Arith>{&state_.fluid.density_constant, &state_.dummy.density_constant}.raws();
-  layout_.gather(std::span<const Raw>(density_constant), slot_density_constant_);
+  layout_.gather(std::span<const Raw>(density_constant_), slot_density_constant_);
   slot_is_fluid_.resize(carriers);
   const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
   const std::size_t fluid = fluid_count();

@@ -99,7 +99,8 @@ private:
 
   // Constant parts (wall positions, masses), converted once.
   bool constants_valid_ = false;
-  std::vector<double> mass_; // carriers: fluid then dummies
+  std::vector<double> mass_;          // carriers: fluid then dummies
+  std::vector<Raw> density_constant_; // carriers, C_a of eq. (5)
   // Derived from the state, recomputed after every drift. The pair loops run over the carriers
   // in cell order (slots, core/slot_layout.hpp); the state and everything the model reports stay
   // in the canonical particle order.

@@ -5,8 +5,8 @@
 #include "core/arithmetic.hpp"
 #include "core/cell_list.hpp"
 #include "core/pair_list.hpp"
+#include "core/pair_sums.hpp"
 #include "core/threads.hpp"
-#include "fixedpoint/exact_sums.hpp"
 
 #include "cell_ordered_cloud.hpp"
 
@@ -136,20 +136,30 @@ TEST(HalfPairList, RejectsARadiusBeyondTheCellSize) {
                std::invalid_argument);
 }
 
+// Quantity 0 of `slot` as a value; false if it overflowed or is not finite.
+template <class Arith>
+bool try_value(revsph::PairSums<Arith, 1>& sums, std::size_t slot, double& value) {
+  int failed = 0;
+  const bool valid = sums.convert(slot, failed);
+  value = sums.value(0, slot);
+  return valid;
+}
+
 // Scatter-adds a term per pair to both particles, the way the SPH loops do, in double.
 std::vector<double> striped_double_sums(const HalfPairList& pairs, const CoordinateArrays<2>& x) {
-  revsph::FloatArithmetic::Sums sums(revsph::fixedpoint::Scale(0));
+  revsph::PairSums<revsph::FloatArithmetic, 1> sums(
+      revsph::SummedQuantity{"term", revsph::fixedpoint::Scale(0)});
   sums.reset(x[0].size());
   pairs.for_each_slot([&](std::uint32_t a, std::span<const std::uint32_t> partners) {
     for (const std::uint32_t b : partners) {
       const double term = std::sin(x[0][a] * 17.0 + x[1][b] * 3.0) / 7.0;
-      sums.add(a, term);
-      sums.add(b, 0.5 * term);
+      sums.add(a, 0, term);
+      sums.add(b, 0, 0.5 * term);
     }
   });
   std::vector<double> values(x[0].size());
   for (std::size_t i = 0; i < values.size(); ++i) {
-    sums.try_value(i, values[i]);
+    try_value(sums, i, values[i]);
   }
   return values;
 }
@@ -192,6 +202,7 @@ TEST(HalfPairList, StripedLoopSumsEveryPairOnceForAnyThreadCount) {
   }
 }
 
+// The exact per-particle sums of the pair loops (core/pair_sums.hpp).
 TEST(ExactSums, AreExactAndIndependentOfTheOrder) {
   const revsph::fixedpoint::Scale scale(-40);
   std::mt19937_64 rng(9);
@@ -200,38 +211,39 @@ TEST(ExactSums, AreExactAndIndependentOfTheOrder) {
   for (double& t : terms) {
     t = term(rng);
   }
-  revsph::fixedpoint::ExactSums forward(scale);
-  revsph::fixedpoint::ExactSums backward(scale);
+  using Sums = revsph::PairSums<revsph::FixedArithmetic, 1>;
+  Sums forward(revsph::SummedQuantity{"term", scale});
+  Sums backward(revsph::SummedQuantity{"term", scale});
   forward.reset(1);
   backward.reset(1);
   std::int64_t expected = 0;
   for (std::size_t i = 0; i < terms.size(); ++i) {
-    forward.add(0, terms[i]);
-    backward.add(0, terms[terms.size() - 1 - i]);
+    forward.add(0, 0, terms[i]);
+    backward.add(0, 0, terms[terms.size() - 1 - i]);
     expected += std::llrint(terms[i] * std::ldexp(1.0, 40));
   }
   double forward_value = 0.0;
   double backward_value = 0.0;
-  ASSERT_TRUE(forward.try_value(0, forward_value));
-  ASSERT_TRUE(backward.try_value(0, backward_value));
+  ASSERT_TRUE(try_value(forward, 0, forward_value));
+  ASSERT_TRUE(try_value(backward, 0, backward_value));
   EXPECT_EQ(forward_value, backward_value);
   EXPECT_EQ(forward_value, revsph::fixedpoint::to_real(expected, scale));
 }
 
 TEST(ExactSums, ReportOverflowAndUnrepresentableTerms) {
   const revsph::fixedpoint::Scale scale(0);
-  revsph::fixedpoint::ExactSums sums(scale);
+  revsph::PairSums<revsph::FixedArithmetic, 1> sums(revsph::SummedQuantity{"term", scale});
   sums.reset(3);
-  sums.add_raw(0, INT64_MAX - 1);
-  sums.add(0, 1.0);
+  sums.add_raw(0, 0, INT64_MAX - 1);
+  sums.add(0, 0, 1.0);
   double value = 0.0;
-  EXPECT_TRUE(sums.try_value(0, value)); // exactly INT64_MAX
-  sums.add(0, 1.0);
-  EXPECT_FALSE(sums.try_value(0, value)) << "the running total left int64";
-  sums.add(1, std::nan(""));
-  EXPECT_FALSE(sums.try_value(1, value));
-  sums.add(2, 1e30); // beyond 2^63 units
-  EXPECT_FALSE(sums.try_value(2, value));
+  EXPECT_TRUE(try_value(sums, 0, value)); // exactly INT64_MAX
+  sums.add(0, 0, 1.0);
+  EXPECT_FALSE(try_value(sums, 0, value)) << "the running total left int64";
+  sums.add(1, 0, std::nan(""));
+  EXPECT_FALSE(try_value(sums, 1, value));
+  sums.add(2, 0, 1e30); // beyond 2^63 units
+  EXPECT_FALSE(try_value(sums, 2, value));
 }
 
 } // namespace
