@@ -45,8 +45,8 @@ std::pair<const char*, std::size_t> SlotLayout<D>::particle_of_carrier(std::size
 template <int D>
 void SlotLayout<D>::record_fault(FaultRecorder& faults, std::size_t slot, const char* variable,
                                  const char* reason) const {
-  const auto [set, index] = particle_of_carrier(cells_.sorted_points()[slot]);
-  faults.record(index, set, variable, reason);
+  const SetParticle particle = particle_in_slot_[slot];
+  faults.record(particle.index, sets_[particle.set].name.c_str(), variable, reason);
 }
 
 template class SlotLayout<1>;

@@ -29,6 +29,12 @@ struct CarrierSet {
   std::size_t count = 0;
 };
 
+// A particle named by its set (an index into SlotLayout::sets()) and its index in the set.
+struct SetParticle {
+  std::uint32_t set;
+  std::uint32_t index;
+};
+
 template <int D>
 class SlotLayout {
 public:
@@ -61,6 +67,15 @@ public:
   std::size_t set_of_carrier(std::size_t carrier) const;
 
   std::span<const std::uint32_t> carrier_of_slot() const { return cells_.sorted_points(); }
+  // The particle in slot s. With it a loop over slots reaches each particle's own set without
+  // asking which set an index falls in.
+  SetParticle particle_in_slot(std::size_t slot) const { return particle_in_slot_[slot]; }
+  // The slot of each particle of a set, in the set's order: loops over one set's particles (the
+  // moving ones that take an acceleration, the walls that do work) read their slots from here.
+  std::span<const std::uint32_t> slots_of_set(std::size_t set) const {
+    return std::span<const std::uint32_t>(slot_of_carrier_)
+        .subspan(first_carrier_[set], first_carrier_[set + 1] - first_carrier_[set]);
+  }
   CoordinateView<D> position() const { return view_of<D>(slot_position_); }
   const HalfPairList& pairs() const { return pairs_; }
   const CellList<D>& cells() const { return cells_; }
@@ -85,6 +100,8 @@ private:
   CellList<D> cells_;
   CoordinateArrays<D> carrier_position_; // scratch of build(CarrierField)
   CoordinateArrays<D> slot_position_;
+  std::vector<std::uint32_t> slot_of_carrier_;
+  std::vector<SetParticle> particle_in_slot_;
   HalfPairList pairs_;
 };
 
@@ -102,11 +119,17 @@ void SlotLayout<D>::build(const Coordinate& coordinate, double radius) {
   for (int k = 0; k < D; ++k) {
     slot_position_[k].resize(carrier_count_);
   }
+  slot_of_carrier_.resize(carrier_count_);
+  particle_in_slot_.resize(carrier_count_);
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < carrier_count_; ++s) {
     for (int k = 0; k < D; ++k) {
       slot_position_[k][s] = coordinate(k, carrier[s]);
     }
+    const std::size_t set = set_of_carrier(carrier[s]);
+    slot_of_carrier_[carrier[s]] = static_cast<std::uint32_t>(s);
+    particle_in_slot_[s] = {static_cast<std::uint32_t>(set),
+                            static_cast<std::uint32_t>(carrier[s] - first_carrier_[set])};
   }
   pairs_.build<D>(cells_, position(), radius);
 }

@@ -78,18 +78,7 @@ std::string Model<D>::relaxation_irreversibility(const Model& model) {
 }
 
 template <int D>
-double Model<D>::real_position(int axis, std::size_t a) const {
-  return a < material_count()
-             ? fixedpoint::to_real(state_.material.position.at(axis, a),
-                                   state_.material.position.info().scale)
-             : fixedpoint::to_real(state_.boundary.position.at(axis, a - material_count()),
-                                   state_.boundary.position.info().scale);
-}
-
-template <int D>
-ExactDistortion<D> Model<D>::distortion_of(std::size_t a) {
-  const CarrierFields<D>& set = set_of(a);
-  const std::size_t i = index_in_set(a);
+ExactDistortion<D> Model<D>::distortion_of(const CarrierFields<D>& set, std::size_t i) const {
   ExactDistortion<D> distortion;
   distortion.log_det = set.log_det.at(0, i);
   for (int c = 0; c < D * D; ++c) {
@@ -99,9 +88,8 @@ ExactDistortion<D> Model<D>::distortion_of(std::size_t a) {
 }
 
 template <int D>
-void Model<D>::store_distortion(std::size_t a, const ExactDistortion<D>& distortion) {
-  CarrierFields<D>& set = set_of(a);
-  const std::size_t i = index_in_set(a);
+void Model<D>::store_distortion(CarrierFields<D>& set, std::size_t i,
+                                const ExactDistortion<D>& distortion) {
   set.log_det.at(0, i) = distortion.log_det;
   for (int c = 0; c < D * D; ++c) {
     set.unimodular.at(c, i) = distortion.unimodular[c];
@@ -131,11 +119,13 @@ void Model<D>::initialise_constants() {
   // Equal trial masses m0 and no constants: the density sums are then m0 sum_b w_ab, and
   // m_a = rho0 V_a = rho0 m0 / that. m0 = rho0 / w(0) keeps the trial sums near rho0 (a few times
   // it, as many as there are neighbours), within the density scale's range.
-  const double trial_mass = parameters_.material.rest_density / kernel_.value(0.0);
+  const double rest_density = parameters_.material.rest_density;
+  const double trial_mass = rest_density / kernel_.value(0.0);
   mass_.assign(n, trial_mass);
   density_constant_.assign(n, 0);
   lambda_constant_.assign(n, 0);
-  for (CarrierFields<D>* set : {&state_.material.carried, &state_.boundary.carried}) {
+  const auto carried = carried_by_set();
+  for (CarrierFields<D>* set : carried) {
     set->density_constant.set_scale(parameters_.density_scale);
     set->lambda_constant.set_scale(parameters_.density_scale);
     std::fill(set->density_constant.all().begin(), set->density_constant.all().end(), 0);
@@ -144,33 +134,35 @@ void Model<D>::initialise_constants() {
   constants_valid_ = true;
   geometry_valid_ = false;
   update_geometry();
-  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
-  std::vector<double> mass(n);
+  double largest = 0.0;
   for (std::size_t s = 0; s < n; ++s) {
-    mass[carrier_of_slot[s]] = parameters_.material.rest_density * trial_mass / sums_.density[s];
+    largest = std::max(largest, rest_density * trial_mass / sums_.density[s]);
   }
-  const double largest = *std::max_element(mass.begin(), mass.end());
   const fixedpoint::Scale mass_scale = fixedpoint::Scale::covering(largest, mass_fraction_bits);
-  for (CarrierFields<D>* set : {&state_.material.carried, &state_.boundary.carried}) {
-    set->mass.set_scale(mass_scale);
-  }
-  for (std::size_t a = 0; a < n; ++a) {
-    fixedpoint::try_to_fixed(mass[a], mass_scale, set_of(a).mass.at(0, index_in_set(a)));
+  for (std::size_t set = 0; set < carried.size(); ++set) {
+    Field& mass = carried[set]->mass;
+    mass.set_scale(mass_scale);
+    const std::span<const std::uint32_t> slots = layout_.slots_of_set(set);
+    for (std::size_t i = 0; i < slots.size(); ++i) {
+      fixedpoint::try_to_fixed(rest_density * trial_mass / sums_.density[slots[i]], mass_scale,
+                               mass.at(0, i));
+    }
   }
   // The sums with the stored masses give the constants.
   invalidate_derived();
   update_geometry();
+  FaultRecorder faults;
   for (std::size_t s = 0; s < n; ++s) {
-    const std::size_t a = carrier_of_slot[s];
-    CarrierFields<D>& set = set_of(a);
-    const std::size_t i = index_in_set(a);
-    if (!fixedpoint::try_to_fixed(parameters_.material.rest_density - sums_.density[s],
-                                  parameters_.density_scale, set.density_constant.at(0, i)) ||
+    const SetParticle particle = layout_.particle_in_slot(s);
+    CarrierFields<D>& set = *carried[particle.set];
+    if (!fixedpoint::try_to_fixed(rest_density - sums_.density[s], parameters_.density_scale,
+                                  set.density_constant.at(0, particle.index)) ||
         !fixedpoint::try_to_fixed(-sums_.lambda[s], parameters_.density_scale,
-                                  set.lambda_constant.at(0, i))) {
-      throw SimulationFault({set_name(a), i, "density_constant", "does not fit its scale"}, 0);
+                                  set.lambda_constant.at(0, particle.index))) {
+      layout_.record_fault(faults, s, "density_constant", "does not fit its scale");
     }
   }
+  faults.throw_if_any();
   invalidate_derived();
 }
 
@@ -199,22 +191,30 @@ void Model<D>::drift(double dt) {
 template <int D>
 void Model<D>::update_carrier_velocities() {
   update_geometry();
-  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
   const std::size_t n = carrier_count();
-  const std::size_t material = material_count();
   const auto& v_scale = state_.material.velocity.info().scale;
   for (int k = 0; k < D; ++k) {
     slot_velocity_[k].resize(n);
   }
-  slot_is_wall_.resize(n);
-#pragma omp parallel for schedule(static)
-  for (std::size_t s = 0; s < n; ++s) {
-    const std::uint32_t a = carrier_of_slot[s];
-    slot_is_wall_[s] = a >= material;
-    const Vec<D> wall = a < material ? Vec<D>{} : wall_velocity_now(a - material);
-    for (int k = 0; k < D; ++k) {
-      slot_velocity_[k][s] =
-          a < material ? fixedpoint::to_real(state_.material.velocity.at(k, a), v_scale) : wall[k];
+  slot_is_wall_.assign(n, 0);
+  const std::span<const std::uint32_t> material = layout_.slots_of_set(material_set);
+  const std::span<const std::uint32_t> walls = layout_.slots_of_set(boundary_set);
+#pragma omp parallel
+  {
+#pragma omp for schedule(static) nowait
+    for (std::size_t i = 0; i < material.size(); ++i) {
+      for (int k = 0; k < D; ++k) {
+        slot_velocity_[k][material[i]] =
+            fixedpoint::to_real(state_.material.velocity.at(k, i), v_scale);
+      }
+    }
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < walls.size(); ++i) {
+      const Vec<D> wall = wall_velocity_now(i);
+      for (int k = 0; k < D; ++k) {
+        slot_velocity_[k][walls[i]] = wall[k];
+      }
+      slot_is_wall_[walls[i]] = 1;
     }
   }
   if (parameters_.mirrored_walls) {
@@ -227,7 +227,6 @@ void Model<D>::update_carrier_velocities() {
 template <int D>
 void Model<D>::update_distortion(double dt) {
   update_carrier_velocities();
-  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
   const std::size_t n = carrier_count();
   const bool driven = walls_work();
   if (driven) {
@@ -242,11 +241,13 @@ void Model<D>::update_distortion(double dt) {
           ? SeenVelocities<D>{view_of<D>(slot_mirrored_velocity_), velocity, slot_is_wall_}
           : SeenVelocities<D>{velocity, velocity, {}};
   velocity_gradients<D>(kernel_, layout_, seen, slot_mass_, sums_.h_inverse, gradients_);
+  const auto carried = carried_by_set();
   FaultRecorder faults;
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < n; ++s) {
-    const std::uint32_t a = carrier_of_slot[s];
-    ExactDistortion<D> distortion = distortion_of(a);
+    const SetParticle particle = layout_.particle_in_slot(s);
+    CarrierFields<D>& set = *carried[particle.set];
+    ExactDistortion<D> distortion = distortion_of(set, particle.index);
     // dt L is odd in v bit for bit: the update with -dt L undoes this one exactly.
     const Matrix<D> step = dt * gradients_.gradient[s];
     const DistortionScales& scales = parameters_.distortion_scales;
@@ -256,11 +257,11 @@ void Model<D>::update_distortion(double dt) {
                                      scales, distortion)
             : try_update_distortion<D>(distortion, step, scales);
     if (!updated) {
-      faults.record(index_in_set(a), set_name(a), "distortion",
-                    "overflow or non-finite value in the distortion update");
+      layout_.record_fault(faults, s, "distortion",
+                           "overflow or non-finite value in the distortion update");
       continue;
     }
-    store_distortion(a, distortion);
+    store_distortion(set, particle.index, distortion);
   }
   faults.throw_if_any();
   force_valid_ = false;
@@ -285,17 +286,18 @@ void Model<D>::relax_at_step_end(double dt) {
 template <int D>
 void Model<D>::relax_all(double dt) {
   FaultRecorder faults;
-  const std::size_t n = carrier_count();
+  for (CarrierFields<D>* set : carried_by_set()) {
+    const std::size_t count = set->log_det.count();
 #pragma omp parallel for schedule(static)
-  for (std::size_t a = 0; a < n; ++a) {
-    ExactDistortion<D> distortion = distortion_of(a);
-    CarrierFields<D>& set = set_of(a);
-    const std::size_t i = index_in_set(a);
-    if (!relax(distortion, set.dissipated_energy.at(0, i), dt)) {
-      faults.record(i, set_name(a), "distortion", "overflow or non-finite value in the relaxation");
-      continue;
+    for (std::size_t i = 0; i < count; ++i) {
+      ExactDistortion<D> distortion = distortion_of(*set, i);
+      if (!relax(distortion, set->dissipated_energy.at(0, i), dt)) {
+        faults.record(i, set->log_det.info().particle_set.c_str(), "distortion",
+                      "overflow or non-finite value in the relaxation");
+        continue;
+      }
+      store_distortion(*set, i, distortion);
     }
-    store_distortion(a, distortion);
   }
   faults.throw_if_any();
   force_valid_ = false;
@@ -369,35 +371,33 @@ void Model<D>::update_force() {
     return;
   }
   update_geometry();
-  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
   const std::size_t n = carrier_count();
   slot_distortion_.resize(n);
   slot_stress_.resize(n);
+  const auto carried = carried_by_set();
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < n; ++s) {
-    slot_distortion_[s] =
-        to_matrix<D>(distortion_of(carrier_of_slot[s]), parameters_.distortion_scales);
+    const SetParticle particle = layout_.particle_in_slot(s);
+    slot_distortion_[s] = to_matrix<D>(distortion_of(*carried[particle.set], particle.index),
+                                       parameters_.distortion_scales);
     slot_stress_[s] = stress<D>(parameters_.material, sums_.density[s], slot_distortion_[s],
                                 sums_.h_inverse[s]); // eq. (21b)
   }
   const PenaltyParameters penalty{parameters_.penalty_speed, parameters_.material.rest_density};
   compute_acceleration<D>(kernel_, penalty_strength(penalty), layout_, slot_mass_, slot_stress_,
                           sums_.lambda, acceleration_sums_, slot_acceleration_);
-  const std::size_t material = material_count();
+  // Boundary particles are held in place: only the material takes its acceleration.
+  const std::span<const std::uint32_t> material = layout_.slots_of_set(material_set);
   FaultRecorder faults;
   for (int k = 0; k < D; ++k) {
-    acceleration_[k].resize(material);
+    acceleration_[k].resize(material.size());
   }
 #pragma omp parallel for schedule(static)
-  for (std::size_t s = 0; s < n; ++s) {
-    const std::uint32_t a = carrier_of_slot[s];
-    if (a >= material) {
-      continue; // boundary particles are held in place
-    }
+  for (std::size_t i = 0; i < material.size(); ++i) {
     for (int k = 0; k < D; ++k) {
-      acceleration_[k][a] = slot_acceleration_[k][s];
-      if (!std::isfinite(slot_acceleration_[k][s])) {
-        faults.record(a, "material", "acceleration", "non-finite acceleration");
+      acceleration_[k][i] = slot_acceleration_[k][material[i]];
+      if (!std::isfinite(acceleration_[k][i])) {
+        layout_.record_fault(faults, material[i], "acceleration", "non-finite acceleration");
       }
     }
   }
@@ -412,74 +412,83 @@ const CoordinateArrays<D>& Model<D>::acceleration() {
 }
 
 template <int D>
-typename Model<D>::CarrierValues Model<D>::carrier_values() {
+std::array<typename Model<D>::CarrierValues, 2> Model<D>::carrier_values() {
   update_force();
-  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
-  const std::size_t n = carrier_count();
-  CarrierValues values{std::vector<double>(n), std::vector<double>(n), std::vector<Matrix<D>>(n)};
-  for (std::size_t s = 0; s < n; ++s) {
-    const std::uint32_t a = carrier_of_slot[s];
-    values.density[a] = sums_.density[s];
-    values.lambda[a] = sums_.lambda[s];
-    values.distortion[a] = slot_distortion_[s];
+  std::array<CarrierValues, 2> values;
+  for (std::size_t set = 0; set < values.size(); ++set) {
+    const std::span<const std::uint32_t> slots = layout_.slots_of_set(set);
+    CarrierValues& of_set = values[set];
+    for (const std::uint32_t s : slots) {
+      of_set.density.push_back(sums_.density[s]);
+      of_set.lambda.push_back(sums_.lambda[s]);
+      of_set.distortion.push_back(slot_distortion_[s]);
+    }
   }
   return values;
 }
 
 template <int D>
-typename Model<D>::ParticleEnergies Model<D>::particle_energies(const CarrierValues& values) {
-  const std::size_t n = carrier_count();
+std::array<typename Model<D>::ParticleEnergies, 2>
+Model<D>::particle_energies(const std::array<CarrierValues, 2>& values) {
   const ElasticMaterial& material = parameters_.material;
   const double cp = parameters_.penalty_speed;
-  ParticleEnergies energies{std::vector<double>(n, 0.0), std::vector<double>(n),
-                            std::vector<double>(n), std::vector<double>(n), std::vector<double>(n)};
-  const auto& v_scale = state_.material.velocity.info().scale;
-  for (std::size_t a = 0; a < n; ++a) {
-    const double m = mass_[a];
-    if (a < material_count()) {
-      double v_squared = 0.0;
-      for (int k = 0; k < D; ++k) {
-        const double v = fixedpoint::to_real(state_.material.velocity.at(k, a), v_scale);
-        v_squared += v * v;
-      }
-      energies.kinetic[a] = 0.5 * m * v_squared;
+  const auto carried = carried_by_set();
+  std::array<ParticleEnergies, 2> energies;
+  for (std::size_t set = 0; set < energies.size(); ++set) {
+    const std::span<const std::uint32_t> slots = layout_.slots_of_set(set);
+    const CarrierValues& of_set = values[set];
+    const Field& dissipated = carried[set]->dissipated_energy;
+    ParticleEnergies& e = energies[set];
+    for (std::size_t i = 0; i < slots.size(); ++i) {
+      const double m = slot_mass_[slots[i]];
+      e.bulk.push_back(m * bulk_energy(material, of_set.density[i]));         // eq. (29)
+      e.shear.push_back(m * shear_energy<D>(material, of_set.distortion[i])); // eq. (31), (35)
+      const double relative = of_set.lambda[i] / material.rest_density;
+      e.penalty.push_back(0.5 * m * cp * cp * relative * relative); // eq. (39)
+      e.dissipated.push_back(m * fixedpoint::to_real(dissipated.at(0, i), dissipated.info().scale));
     }
-    energies.bulk[a] = m * bulk_energy(material, values.density[a]);         // eq. (29)
-    energies.shear[a] = m * shear_energy<D>(material, values.distortion[a]); // eq. (31), (35)
-    const double relative = values.lambda[a] / material.rest_density;
-    energies.penalty[a] = 0.5 * m * cp * cp * relative * relative; // eq. (39)
-    const auto& dissipated = set_of(a).dissipated_energy;
-    energies.dissipated[a] =
-        m * fixedpoint::to_real(dissipated.at(0, index_in_set(a)), dissipated.info().scale);
+  }
+  const auto& velocity = state_.material.velocity;
+  const std::span<const std::uint32_t> moving = layout_.slots_of_set(material_set);
+  for (std::size_t i = 0; i < moving.size(); ++i) {
+    double v_squared = 0.0;
+    for (int k = 0; k < D; ++k) {
+      const double v = fixedpoint::to_real(velocity.at(k, i), velocity.info().scale);
+      v_squared += v * v;
+    }
+    energies[material_set].kinetic.push_back(0.5 * slot_mass_[moving[i]] * v_squared);
   }
   return energies;
 }
 
 template <int D>
 EnergyBudget Model<D>::energy() {
-  const ParticleEnergies energies = particle_energies(carrier_values());
-  // Serial sums in particle order: the same value for any thread count.
-  auto total = [](const std::vector<double>& values) {
+  const auto energies = particle_energies(carrier_values());
+  // Serial sums in particle order (set after set): the same value for any thread count.
+  auto total = [&energies](std::vector<double> ParticleEnergies::*term) {
     double sum = 0.0;
-    for (const double value : values) {
-      sum += value;
+    for (const ParticleEnergies& of_set : energies) {
+      for (const double value : of_set.*term) {
+        sum += value;
+      }
     }
     return sum;
   };
-  EnergyBudget budget{{{"kinetic", total(energies.kinetic)},
-                       {"volumetric", total(energies.bulk)},
-                       {"shear", total(energies.shear)},
-                       {"penalty", total(energies.penalty)}}};
+  EnergyBudget budget{{{"kinetic", total(&ParticleEnergies::kinetic)},
+                       {"volumetric", total(&ParticleEnergies::bulk)},
+                       {"shear", total(&ParticleEnergies::shear)},
+                       {"penalty", total(&ParticleEnergies::penalty)}}};
   if (parameters_.relaxation_time) {
-    budget.terms.push_back({"dissipated", total(energies.dissipated)});
+    budget.terms.push_back({"dissipated", total(&ParticleEnergies::dissipated)});
   }
   if (walls_work()) {
     // What the walls have put in, counted negative: the total stays constant.
+    const std::span<const std::uint32_t> walls = layout_.slots_of_set(boundary_set);
+    const Field& wall_work = state_.boundary.wall_work;
     double work = 0.0;
-    for (std::size_t i = 0; i < state_.boundary.position.count(); ++i) {
+    for (std::size_t i = 0; i < walls.size(); ++i) {
       work +=
-          mass_[material_count() + i] * fixedpoint::to_real(state_.boundary.wall_work.at(0, i),
-                                                            state_.boundary.wall_work.info().scale);
+          slot_mass_[walls[i]] * fixedpoint::to_real(wall_work.at(0, i), wall_work.info().scale);
     }
     budget.terms.push_back({"wall_work", -work});
   }
@@ -488,90 +497,90 @@ EnergyBudget Model<D>::energy() {
 
 template <int D>
 void Model<D>::derived_views(const ViewSink& sink) {
-  const CarrierValues values = carrier_values();
-  ParticleEnergies energies = particle_energies(values);
+  const auto values = carrier_values();
+  const auto energies = particle_energies(values);
   const std::string energy_unit = D == 2 ? "J/m" : "J";
-  const std::size_t material = material_count();
-  const std::size_t n = carrier_count();
-  struct Range {
-    const char* set;
-    std::size_t first, end;
-  };
-  for (const Range range : {Range{"material", 0, material}, Range{"boundary", material, n}}) {
-    if (range.first == range.end) {
+  const std::vector<CarrierSet>& sets = layout_.sets();
+  for (std::size_t set = 0; set < sets.size(); ++set) {
+    const CarrierValues& of_set = values[set];
+    const ParticleEnergies& e = energies[set];
+    const std::size_t count = of_set.density.size();
+    if (count == 0) {
       continue;
     }
-    auto slice = [&](const std::vector<double>& all) {
-      return std::vector<double>(all.begin() + range.first, all.begin() + range.end);
-    };
-    const std::size_t count = range.end - range.first;
+    const std::string& name = sets[set].name;
     std::vector<double> pressure_values(count);
     std::vector<double> distortion(count * D * D);
     for (std::size_t i = 0; i < count; ++i) {
-      const std::size_t a = range.first + i;
-      pressure_values[i] = pressure(parameters_.material, values.density[a]); // eq. (30)
+      pressure_values[i] = pressure(parameters_.material, of_set.density[i]); // eq. (30)
       for (int r = 0; r < D; ++r) {
         for (int c = 0; c < D; ++c) {
-          distortion[static_cast<std::size_t>(r * D + c) * count + i] = values.distortion[a](r, c);
+          distortion[static_cast<std::size_t>(r * D + c) * count + i] = of_set.distortion[i](r, c);
         }
       }
     }
-    sink(ParticleView{range.set, "density", "kg/m^3", 1, slice(values.density)});
-    sink(ParticleView{range.set, "pressure", "Pa", 1, std::move(pressure_values)});
-    sink(ParticleView{range.set, "lambda", "kg/m^3", 1, slice(values.lambda)});
-    sink(ParticleView{range.set, "distortion", "1", D * D, std::move(distortion)});
-    if (range.first != 0 && walls_work()) {
-      update_carrier_velocities();
-      const CoordinateArrays<D>& seen = slot_velocity_seen();
-      const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
-      std::vector<double> wall(count * D);
-      for (std::size_t s = 0; s < carrier_of_slot.size(); ++s) {
-        const std::size_t a = carrier_of_slot[s];
-        if (a >= range.first) {
-          for (int k = 0; k < D; ++k) {
-            wall[static_cast<std::size_t>(k) * count + (a - range.first)] = seen[k][s];
-          }
-        }
-      }
-      sink(ParticleView{range.set, "velocity", "m/s", D, std::move(wall)});
-    }
-    if (range.first == 0) {
-      std::vector<double> acceleration_values;
-      for (int k = 0; k < D; ++k) {
-        acceleration_values.insert(acceleration_values.end(), acceleration_[k].begin(),
-                                   acceleration_[k].end());
-      }
-      sink(ParticleView{range.set, "acceleration", "m/s^2", D, std::move(acceleration_values)});
-      sink(ParticleView{range.set, "kinetic_energy", energy_unit, 1, slice(energies.kinetic)});
-    }
-    sink(ParticleView{range.set, "volumetric_energy", energy_unit, 1, slice(energies.bulk)});
-    sink(ParticleView{range.set, "shear_energy", energy_unit, 1, slice(energies.shear)});
-    sink(ParticleView{range.set, "penalty_energy", energy_unit, 1, slice(energies.penalty)});
+    sink(ParticleView{name, "density", "kg/m^3", 1, of_set.density});
+    sink(ParticleView{name, "pressure", "Pa", 1, std::move(pressure_values)});
+    sink(ParticleView{name, "lambda", "kg/m^3", 1, of_set.lambda});
+    sink(ParticleView{name, "distortion", "1", D * D, std::move(distortion)});
+    sink(ParticleView{name, "volumetric_energy", energy_unit, 1, e.bulk});
+    sink(ParticleView{name, "shear_energy", energy_unit, 1, e.shear});
+    sink(ParticleView{name, "penalty_energy", energy_unit, 1, e.penalty});
     if (parameters_.relaxation_time) {
-      sink(
-          ParticleView{range.set, "dissipated_energy", energy_unit, 1, slice(energies.dissipated)});
+      sink(ParticleView{name, "dissipated_energy", energy_unit, 1, e.dissipated});
     }
+  }
+  if (material_count() > 0) {
+    std::vector<double> acceleration_values;
+    for (int k = 0; k < D; ++k) {
+      acceleration_values.insert(acceleration_values.end(), acceleration_[k].begin(),
+                                 acceleration_[k].end());
+    }
+    sink(ParticleView{"material", "acceleration", "m/s^2", D, std::move(acceleration_values)});
+    sink(
+        ParticleView{"material", "kinetic_energy", energy_unit, 1, energies[material_set].kinetic});
+  }
+  const std::span<const std::uint32_t> walls = layout_.slots_of_set(boundary_set);
+  if (!walls.empty() && walls_work()) {
+    update_carrier_velocities();
+    const CoordinateArrays<D>& seen = slot_velocity_seen();
+    std::vector<double> velocity(walls.size() * D);
+    for (int k = 0; k < D; ++k) {
+      for (std::size_t i = 0; i < walls.size(); ++i) {
+        velocity[static_cast<std::size_t>(k) * walls.size() + i] = seen[k][walls[i]];
+      }
+    }
+    sink(ParticleView{"boundary", "velocity", "m/s", D, std::move(velocity)});
   }
 }
 
 template <int D>
 void Model<D>::shear_accelerations(CoordinateArrays<D>& acceleration, StressOf carriers) {
   update_geometry();
-  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
   const std::size_t n = carrier_count();
-  const std::size_t material = material_count();
-  slot_shear_stress_.resize(n);
-#pragma omp parallel for schedule(static)
-  for (std::size_t s = 0; s < n; ++s) {
-    const std::uint32_t a = carrier_of_slot[s];
-    const bool counted =
-        carriers == StressOf::all || (carriers == StressOf::material) == (a < material);
-    if (!counted) {
-      slot_shear_stress_[s].setZero();
-      continue;
-    }
-    const Matrix<D> distortion = to_matrix<D>(distortion_of(a), parameters_.distortion_scales);
+  const auto carried = carried_by_set();
+  const auto stress_in_slot = [&](std::size_t s) {
+    const SetParticle particle = layout_.particle_in_slot(s);
+    const Matrix<D> distortion = to_matrix<D>(distortion_of(*carried[particle.set], particle.index),
+                                              parameters_.distortion_scales);
     slot_shear_stress_[s] = shear_stress<D>(parameters_.material, distortion, sums_.h_inverse[s]);
+  };
+  slot_shear_stress_.resize(n);
+  if (carriers == StressOf::all) {
+#pragma omp parallel for schedule(static)
+    for (std::size_t s = 0; s < n; ++s) {
+      stress_in_slot(s);
+    }
+  } else {
+    for (GradientMatrix<D>& stress : slot_shear_stress_) {
+      stress.setZero();
+    }
+    const std::span<const std::uint32_t> slots =
+        layout_.slots_of_set(carriers == StressOf::material ? material_set : boundary_set);
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < slots.size(); ++i) {
+      stress_in_slot(slots[i]);
+    }
   }
   compute_acceleration<D>(kernel_, 0.0, layout_, slot_mass_, slot_shear_stress_, sums_.lambda,
                           acceleration_sums_, acceleration);
@@ -592,42 +601,30 @@ double Model<D>::wall_power() {
   update_carrier_velocities();
   WallForces forces;
   wall_forces(forces);
-  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
-  const std::size_t material = material_count();
-  std::vector<double> power(carrier_count() - material, 0.0);
-  for (std::size_t s = 0; s < carrier_count(); ++s) {
-    const std::uint32_t a = carrier_of_slot[s];
-    if (a < material) {
-      continue;
-    }
+  double total = 0.0; // serial, in canonical order: the same for any thread count
+  for (const std::uint32_t s : layout_.slots_of_set(boundary_set)) {
     // The material's stress pairs with the velocity the material sees the wall move with, the
     // wall's own with the wall's velocity (model.hpp); without mirroring both are v_w and
     // from_walls holds the whole force.
+    double power = 0.0;
     for (int k = 0; k < D; ++k) {
-      power[a - material] -= slot_mass_[s] * forces.from_walls[k][s] * slot_velocity_[k][s];
+      power -= slot_mass_[s] * forces.from_walls[k][s] * slot_velocity_[k][s];
       if (parameters_.mirrored_walls) {
-        power[a - material] -=
-            slot_mass_[s] * forces.from_material[k][s] * slot_mirrored_velocity_[k][s];
+        power -= slot_mass_[s] * forces.from_material[k][s] * slot_mirrored_velocity_[k][s];
       }
     }
-  }
-  double total = 0.0; // serial, in canonical order: the same for any thread count
-  for (const double p : power) {
-    total += p;
+    total += power;
   }
   return total;
 }
 
 template <int D>
 bool Model<D>::add_wall_work(double dt) {
-  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
-  const std::size_t material = material_count();
+  const std::span<const std::uint32_t> walls = layout_.slots_of_set(boundary_set);
+  Field& wall_work = state_.boundary.wall_work;
   bool fits = true;
-  for (std::size_t s = 0; s < carrier_count(); ++s) {
-    const std::uint32_t a = carrier_of_slot[s];
-    if (a < material) {
-      continue;
-    }
+  for (std::size_t i = 0; i < walls.size(); ++i) {
+    const std::uint32_t s = walls[i];
     // Odd in (v, dt-direction) and symmetric in before/after, so a reversed step removes
     // exactly what this one added.
     const WallForces& before = wall_force_before_;
@@ -640,38 +637,42 @@ bool Model<D>::add_wall_work(double dt) {
                 slot_mirrored_velocity_[k][s];
       }
     }
-    fits = fits &&
-           FixedArithmetic::try_increment(state_.boundary.wall_work.at(0, a - material),
-                                          0.5 * dt * work, state_.boundary.wall_work.info().scale);
+    fits = fits && FixedArithmetic::try_increment(wall_work.at(0, i), 0.5 * dt * work,
+                                                  wall_work.info().scale);
   }
   return fits;
 }
 
 template <int D>
 std::vector<EnergyTerm> Model<D>::diagnostics() {
+  const Field& position = state_.material.position;
+  const auto x_of = [&position](int axis, std::size_t a) {
+    return fixedpoint::to_real(position.at(axis, a), position.info().scale);
+  };
   std::vector<EnergyTerm> terms;
   if (probe_particle_) {
     static constexpr const char* names[] = {"probe_x", "probe_y", "probe_z"};
     for (int k = 0; k < D; ++k) {
-      terms.push_back({names[k], real_position(k, *probe_particle_)});
+      terms.push_back({names[k], x_of(k, *probe_particle_)});
     }
   }
   // Angular momentum of the material about the origin, eq. (26) (conserved without boundary
   // particles; the twisting column's changes sign when its rotation reverses). Serial sum in
   // particle order: the same for any thread count.
-  update_constants();
+  const Field& mass = state_.material.carried.mass;
   Vec<3> angular{};
   const auto& v_scale = state_.material.velocity.info().scale;
   for (std::size_t a = 0; a < material_count(); ++a) {
     Vec<3> x{};
     Vec<3> v{};
     for (int k = 0; k < D; ++k) {
-      x[k] = real_position(k, a);
+      x[k] = x_of(k, a);
       v[k] = fixedpoint::to_real(state_.material.velocity.at(k, a), v_scale);
     }
-    angular[0] += mass_[a] * (x[1] * v[2] - x[2] * v[1]);
-    angular[1] += mass_[a] * (x[2] * v[0] - x[0] * v[2]);
-    angular[2] += mass_[a] * (x[0] * v[1] - x[1] * v[0]);
+    const double m = fixedpoint::to_real(mass.at(0, a), mass.info().scale);
+    angular[0] += m * (x[1] * v[2] - x[2] * v[1]);
+    angular[1] += m * (x[2] * v[0] - x[0] * v[2]);
+    angular[2] += m * (x[0] * v[1] - x[1] * v[0]);
   }
   if constexpr (D == 2) {
     terms.push_back({"angular_momentum", angular[2]});

@@ -30,6 +30,7 @@
 #include "models/shtc/sum_scales.hpp"
 #include "models/shtc/velocity_gradient.hpp"
 
+#include <array>
 #include <optional>
 #include <span>
 #include <vector>
@@ -91,31 +92,29 @@ private:
   static std::string relaxation_irreversibility(const Model& model);
   std::string relaxation_description() const;
 
-  // Per carrier, canonical order.
+  // Per particle of one set, in the set's order.
   struct ParticleEnergies {
-    std::vector<double> kinetic, bulk, shear, penalty, dissipated;
+    std::vector<double> kinetic, bulk, shear, penalty, dissipated; // kinetic: material only
   };
   struct CarrierValues {
     std::vector<double> density, lambda;
     std::vector<Matrix<D>> distortion;
   };
 
-  double real_position(int axis, std::size_t a) const;
   // The carriers' positions (material, then boundary).
   CarrierField<FixedArithmetic> carrier_position() const {
     return {&state_.material.position, &state_.boundary.position};
   }
-  CarrierFields<D>& set_of(std::size_t a) {
-    return a < material_count() ? state_.material.carried : state_.boundary.carried;
+  // The layout's sets (layout_ is built over the two in this order).
+  static constexpr std::size_t material_set = 0;
+  static constexpr std::size_t boundary_set = 1;
+  // What each set's carriers carry, indexed by the set's index in the layout.
+  std::array<CarrierFields<D>*, 2> carried_by_set() {
+    return {&state_.material.carried, &state_.boundary.carried};
   }
-  const char* set_name(std::size_t a) const {
-    return a < material_count() ? "material" : "boundary";
-  }
-  std::size_t index_in_set(std::size_t a) const {
-    return a < material_count() ? a : a - material_count();
-  }
-  ExactDistortion<D> distortion_of(std::size_t a);
-  void store_distortion(std::size_t a, const ExactDistortion<D>& distortion);
+  ExactDistortion<D> distortion_of(const CarrierFields<D>& set, std::size_t i) const;
+  static void store_distortion(CarrierFields<D>& set, std::size_t i,
+                               const ExactDistortion<D>& distortion);
   // The velocity boundary particle i pretends now (state.hpp).
   Vec<D> wall_velocity_now(std::size_t i) const;
   // Whether the walls can do work: some wall moves, or walls mirror the fluid (wall_velocity is
@@ -154,8 +153,9 @@ private:
   void update_constants();
   void update_geometry();
   void update_force();
-  CarrierValues carrier_values();
-  ParticleEnergies particle_energies(const CarrierValues& values);
+  // Per set of the layout.
+  std::array<CarrierValues, 2> carrier_values();
+  std::array<ParticleEnergies, 2> particle_energies(const std::array<CarrierValues, 2>& values);
 
   Parameters<D> parameters_;
   SimulationInfo info_;
