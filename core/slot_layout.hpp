@@ -65,6 +65,11 @@ public:
   std::size_t first_carrier(std::size_t set) const { return first_carrier_[set]; }
   // The set of a carrier (an index into sets()).
   std::size_t set_of_carrier(std::size_t carrier) const;
+  // The part of a per-carrier array that belongs to one set, in the set's order.
+  template <class T>
+  std::span<T> part_of_set(std::span<T> by_carrier, std::size_t set) const {
+    return by_carrier.subspan(first_carrier_[set], first_carrier_[set + 1] - first_carrier_[set]);
+  }
 
   std::span<const std::uint32_t> carrier_of_slot() const { return cells_.sorted_points(); }
   // The particle in slot s. With it a loop over slots reaches each particle's own set without

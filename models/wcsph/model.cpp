@@ -48,14 +48,16 @@ void Model<D, Arith>::initialise_density_constants(std::span<const double> targe
             Raw{});
   invalidate_derived();
   update_derived();
-  const std::size_t fluid = fluid_count();
-  for (std::size_t a = 0; a < density_.size(); ++a) {
-    auto& field = a < fluid ? state_.fluid.density_constant : state_.dummy.density_constant;
-    const std::size_t i = a < fluid ? a : a - fluid;
-    if (!Arith::try_from_real(target_density[a] - density_[a], field.info().scale,
-                              field.at(0, i))) {
-      throw SimulationFault(
-          {a < fluid ? "fluid" : "dummy", i, "density_constant", "does not fit its scale"}, 0);
+  const std::span<const double> target(target_density);
+  for (const auto& [set, field] : {std::pair{fluid_set, &state_.fluid.density_constant},
+                                   std::pair{dummy_set, &state_.dummy.density_constant}}) {
+    const std::span<const double> wanted = layout_.part_of_set(target, set);
+    const std::span<const double> density = of_set(density_, set);
+    for (std::size_t i = 0; i < density.size(); ++i) {
+      if (!Arith::try_from_real(wanted[i] - density[i], field->info().scale, field->at(0, i))) {
+        throw SimulationFault(
+            {field->info().particle_set, i, "density_constant", "does not fit its scale"}, 0);
+      }
     }
   }
   invalidate_derived();
@@ -116,12 +118,10 @@ void Model<D, Arith>::update_derived() {
   const std::size_t carriers = layout_.slot_count();
   layout_.gather(std::span<const double>(mass_), slot_mass_);
   layout_.gather(std::span<const Raw>(density_constant_), slot_density_constant_);
-  slot_is_fluid_.resize(carriers);
-  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
-  const std::size_t fluid = fluid_count();
-#pragma omp parallel for schedule(static)
-  for (std::size_t s = 0; s < carriers; ++s) {
-    slot_is_fluid_[s] = carrier_of_slot[s] < fluid;
+  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  slot_is_fluid_.assign(carriers, 0);
+  for (const std::uint32_t s : fluid) {
+    slot_is_fluid_[s] = 1;
   }
   walls_.find_near(layout_, parameters_.wall_radius);
 
@@ -157,18 +157,14 @@ void Model<D, Arith>::update_derived() {
                                          parameters_.gravity};
   sum_pairs<Arith>(layout_, acceleration, acceleration_sums_, walls_.cross_pairs());
 
-  density_.resize(carriers); // in the canonical order, for the outputs
+  layout_.scatter(slot_density, density_); // in the canonical order, for the outputs
   for (int k = 0; k < D; ++k) {
-    acceleration_[k].resize(fluid);
+    acceleration_[k].resize(fluid.size());
   }
 #pragma omp parallel for schedule(static)
-  for (std::size_t s = 0; s < carriers; ++s) {
-    const std::uint32_t a = carrier_of_slot[s];
-    density_[a] = slot_density[s];
-    if (a < fluid) {
-      for (int k = 0; k < D; ++k) {
-        acceleration_[k][a] = acceleration_sums_.value(k, s);
-      }
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    for (int k = 0; k < D; ++k) {
+      acceleration_[k][i] = acceleration_sums_.value(k, fluid[i]);
     }
   }
   derived_valid_ = true;
@@ -202,16 +198,13 @@ std::array<std::vector<double>, D> Model<D, Arith>::real_velocity() const {
 template <int D, class Arith>
 std::array<std::vector<double>, D> Model<D, Arith>::filtered_velocity() {
   update_derived();
-  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
-  const std::size_t fluid = fluid_count();
+  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
   const std::array<std::vector<double>, D> velocity = real_velocity();
   std::array<std::vector<double>, D> slot_velocity;
   for (int k = 0; k < D; ++k) {
-    slot_velocity[k].assign(carrier_of_slot.size(), 0.0);
-    for (std::size_t s = 0; s < carrier_of_slot.size(); ++s) {
-      if (slot_is_fluid_[s]) {
-        slot_velocity[k][s] = velocity[k][carrier_of_slot[s]];
-      }
+    slot_velocity[k].assign(layout_.slot_count(), 0.0);
+    for (std::size_t i = 0; i < fluid.size(); ++i) {
+      slot_velocity[k][fluid[i]] = velocity[k][i];
     }
   }
   // The weights V w are about 1 in sum; the weighted velocities share the velocity's scale.
@@ -225,11 +218,9 @@ std::array<std::vector<double>, D> Model<D, Arith>::filtered_velocity() {
       sums);
   std::array<std::vector<double>, D> filtered;
   for (int k = 0; k < D; ++k) {
-    filtered[k].resize(fluid);
-    for (std::size_t s = 0; s < carrier_of_slot.size(); ++s) {
-      if (slot_is_fluid_[s]) {
-        filtered[k][carrier_of_slot[s]] = sums.value(k + 1, s) / sums.value(0, s);
-      }
+    filtered[k].resize(fluid.size());
+    for (std::size_t i = 0; i < fluid.size(); ++i) {
+      filtered[k][i] = sums.value(k + 1, fluid[i]) / sums.value(0, fluid[i]);
     }
   }
   return filtered;
@@ -274,13 +265,15 @@ typename Model<D, Arith>::ParticleEnergies Model<D, Arith>::particle_energies() 
   const WallPotential wall = parameters_.wall_potential();
   const std::array<std::vector<double>, D> velocity = real_velocity();
   const std::size_t n = fluid_count();
+  const std::span<const double> mass = of_set(mass_, fluid_set);
+  const std::span<const double> density = of_set(density_, fluid_set);
   ParticleEnergies energies{std::vector<double>(n),
                             std::vector<double>(n),
                             std::vector<double>(n),
                             std::vector<double>(n),
                             {}};
   for (std::size_t a = 0; a < n; ++a) {
-    const double m = mass_[a];
+    const double m = mass[a];
     double v_squared = 0.0;
     for (int k = 0; k < D; ++k) {
       v_squared += velocity[k][a] * velocity[k][a];
@@ -289,24 +282,24 @@ typename Model<D, Arith>::ParticleEnergies Model<D, Arith>::particle_energies() 
     energies.gravitational[a] =
         m * parameters_.gravity * (fluid_position(D - 1, a) - parameters_.gravity_reference_height);
     energies.compressional[a] =
-        m * compressional_energy_per_mass(density_[a], parameters_.rest_density,
+        m * compressional_energy_per_mass(density[a], parameters_.rest_density,
                                           parameters_.sound_speed); // eq. (3)
   }
   // Eq. (7), attributed to the fluid particle.
   PairSums<FloatArithmetic, 1> wall_sums(SummedQuantity{"wall_energy", fixedpoint::Scale()});
   sum_cross_pairs<FloatArithmetic>(layout_, WallEnergyTerm<D>{slot_mass_, slot_is_fluid_, wall},
                                    wall_sums, walls_.cross_pairs());
-  const std::span<const std::uint32_t> carrier_of_slot = layout_.carrier_of_slot();
-  for (std::size_t s = 0; s < carrier_of_slot.size(); ++s) {
-    if (slot_is_fluid_[s]) {
-      energies.wall[carrier_of_slot[s]] = wall_sums.value(0, s);
-    }
+  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    energies.wall[i] = wall_sums.value(0, fluid[i]);
   }
   // Dummy particles store compressional energy too (their density follows the fluid).
-  for (std::size_t d = n; d < density_.size(); ++d) {
+  const std::span<const double> dummy_mass = of_set(mass_, dummy_set);
+  const std::span<const double> dummy_density = of_set(density_, dummy_set);
+  for (std::size_t d = 0; d < dummy_density.size(); ++d) {
     energies.dummy_compressional.push_back(
-        mass_[d] * compressional_energy_per_mass(density_[d], parameters_.rest_density,
-                                                 parameters_.sound_speed));
+        dummy_mass[d] * compressional_energy_per_mass(dummy_density[d], parameters_.rest_density,
+                                                      parameters_.sound_speed));
   }
   return energies;
 }
@@ -331,13 +324,10 @@ EnergyBudget Model<D, Arith>::energy() {
 
 template <int D, class Arith>
 void Model<D, Arith>::derived_views(const ViewSink& sink) {
-  const std::size_t fluid = fluid_count();
-  const std::size_t carriers = density_.size();
-  auto pressure_of = [&](std::size_t first, std::size_t end) {
-    std::vector<double> pressure(end - first);
-    for (std::size_t a = first; a < end; ++a) {
-      pressure[a - first] =
-          tait_pressure(density_[a], parameters_.rest_density, parameters_.sound_speed);
+  auto pressure_of = [&](std::span<const double> density) {
+    std::vector<double> pressure(density.size());
+    for (std::size_t a = 0; a < density.size(); ++a) {
+      pressure[a] = tait_pressure(density[a], parameters_.rest_density, parameters_.sound_speed);
     }
     return pressure;
   };
@@ -356,8 +346,9 @@ void Model<D, Arith>::derived_views(const ViewSink& sink) {
     sink(ParticleView{set, name, std::move(unit), components, std::move(values)});
   };
   ParticleEnergies energies = particle_energies();
-  emit("fluid", "density", "kg/m^3", 1, {density_.begin(), density_.begin() + fluid});
-  emit("fluid", "pressure", "Pa", 1, pressure_of(0, fluid));
+  const std::span<const double> fluid_density = of_set(density_, fluid_set);
+  emit("fluid", "density", "kg/m^3", 1, {fluid_density.begin(), fluid_density.end()});
+  emit("fluid", "pressure", "Pa", 1, pressure_of(fluid_density));
   emit("fluid", "acceleration", "m/s^2", D, component_major(acceleration_));
   emit("fluid", "kinetic_energy", energy_unit, 1, std::move(energies.kinetic));
   emit("fluid", "gravitational_energy", energy_unit, 1, std::move(energies.gravitational));
@@ -366,9 +357,10 @@ void Model<D, Arith>::derived_views(const ViewSink& sink) {
   if (parameters_.shepard_every > 0) {
     emit("fluid", "filtered_velocity", "m/s", D, component_major(filtered_velocity()));
   }
-  if (carriers > fluid) {
-    emit("dummy", "density", "kg/m^3", 1, {density_.begin() + fluid, density_.end()});
-    emit("dummy", "pressure", "Pa", 1, pressure_of(fluid, carriers));
+  const std::span<const double> dummy_density = of_set(density_, dummy_set);
+  if (!dummy_density.empty()) {
+    emit("dummy", "density", "kg/m^3", 1, {dummy_density.begin(), dummy_density.end()});
+    emit("dummy", "pressure", "Pa", 1, pressure_of(dummy_density));
     emit("dummy", "compressional_energy", energy_unit, 1, std::move(energies.dummy_compressional));
   }
 }
@@ -386,13 +378,15 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics() {
     update_derived();
     const std::array<std::vector<double>, D> velocity = real_velocity();
     const std::array<std::vector<double>, D> filtered = filtered_velocity();
+    const std::span<const double> mass = of_set(mass_, fluid_set);
+    const std::span<const double> density = of_set(density_, fluid_set);
     double raw_sum = 0.0;
     double filtered_sum = 0.0;
     for (std::size_t a = 0; a < fluid_count(); ++a) {
       const auto [exact_x, exact_y] =
           gresho::velocity(fluid_position(0, a) - parameters_.centre[0],
                            fluid_position(1, a) - parameters_.centre[1]);
-      const double volume = mass_[a] / density_[a];
+      const double volume = mass[a] / density[a];
       raw_sum += volume * ((velocity[0][a] - exact_x) * (velocity[0][a] - exact_x) +
                            (velocity[1][a] - exact_y) * (velocity[1][a] - exact_y));
       filtered_sum += volume * ((filtered[0][a] - exact_x) * (filtered[0][a] - exact_x) +

@@ -105,7 +105,15 @@ private:
   // in cell order (slots, core/slot_layout.hpp); the state and everything the model reports stay
   // in the canonical particle order.
   bool derived_valid_ = false;
-  SlotLayout<D> layout_;  // carriers: the fluid and dummy particles
+  SlotLayout<D> layout_; // carriers: the fluid and dummy particles
+  // The layout's sets, in the order the constructor gives them.
+  static constexpr std::size_t fluid_set = 0;
+  static constexpr std::size_t dummy_set = 1;
+  // A per-carrier array's part of one set.
+  template <class T>
+  std::span<const T> of_set(const std::vector<T>& by_carrier, std::size_t set) const {
+    return layout_.part_of_set(std::span<const T>(by_carrier), set);
+  }
   FixedTargets<D> walls_; // the wall particles of eq. (7)
   std::vector<double> slot_mass_;
   std::vector<Raw> slot_density_constant_;
