@@ -5,6 +5,7 @@
 
 #include "core/state_field.hpp"
 
+#include <array>
 #include <cstdint>
 #include <initializer_list>
 #include <span>
@@ -43,6 +44,27 @@ public:
 #pragma omp parallel for schedule(static)
       for (std::size_t i = 0; i < raw.size(); ++i) {
         first[i] = Arith::real(raw[i], scale);
+      }
+    }
+  }
+  // Components 0 .. D-1 of every carrier (positions, say) into out[k], in one parallel region
+  // (every region is a barrier: issue 15).
+  template <int D>
+  void fill_reals(std::array<std::vector<double>, D>& out) const {
+    for (int k = 0; k < D; ++k) {
+      out[k].resize(count_);
+    }
+#pragma omp parallel
+    for (std::size_t set = 0; set < fields_.size(); ++set) {
+      const fixedpoint::Scale& scale = fields_[set]->info().scale;
+      const std::size_t first = firsts_[set];
+      const std::size_t n = fields_[set]->count();
+      for (int k = 0; k < D; ++k) {
+        const auto raw = fields_[set]->component(k);
+#pragma omp for schedule(static) nowait
+        for (std::size_t i = 0; i < n; ++i) {
+          out[k][first + i] = Arith::real(raw[i], scale);
+        }
       }
     }
   }

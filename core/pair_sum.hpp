@@ -121,39 +121,47 @@ void fill_geometry(const CoordinateView<D>& x_a, std::uint32_t a, const Coordina
   pair.r = std::sqrt(pair.r_squared);
 }
 
-// Self terms, then every wanted slot's value; a sum that does not fit becomes a fault. Called by
-// every thread of the pair loop's parallel region.
-template <class Arith, int D, class Term, int K>
+// Self terms, then every wanted slot's value; a sum that does not fit becomes a fault; then
+// then(slot). Called by every thread of the pair loop's parallel region.
+template <class Arith, int D, class Term, int K, class Then>
 void finish_in_team(const SlotLayout<D>& layout, const Term& term, PairSums<Arith, K>& sums,
-                    FaultRecorder& faults) {
+                    FaultRecorder& faults, const Then& then) {
   const std::size_t n = layout.slot_count();
 #pragma omp for schedule(static)
   for (std::size_t s = 0; s < n; ++s) {
     const auto slot = static_cast<std::uint32_t>(s);
     if (!receives(term, slot)) {
       sums.clear_values(s);
-      continue;
+    } else {
+      if constexpr (HasSelfTerms<Term, Arith>) {
+        SelfTerms<Arith, K> add(sums, s);
+        term.self(slot, add);
+      }
+      int failed = 0;
+      if (!sums.convert(s, failed)) {
+        layout.record_fault(faults, s, sums.quantities()[failed].name,
+                            "overflow or non-finite value in a pair sum");
+      }
     }
-    if constexpr (HasSelfTerms<Term, Arith>) {
-      SelfTerms<Arith, K> add(sums, s);
-      term.self(slot, add);
-    }
-    int failed = 0;
-    if (!sums.convert(s, failed)) {
-      layout.record_fault(faults, s, sums.quantities()[failed].name,
-                          "overflow or non-finite value in a pair sum");
-    }
+    then(slot);
   }
 }
 
 } // namespace detail
 
+// Nothing to do once a slot's sums are final (the default of sum_pairs).
+struct NothingAfter {
+  void operator()(std::uint32_t) const {}
+};
+
 // Sums `term` over every pair of the layout (and, if the term has cross pairs, over `cross`), then
 // adds the self terms and converts: sums.value(q, slot) afterwards. Throws SimulationFault (step
-// unknown) for the lowest-index particle whose sum does not fit.
-template <class Arith, int D, PairTerm<D> Term>
+// unknown) for the lowest-index particle whose sum does not fit. `then(slot)` runs for every slot
+// as soon as its sums are final, in the same parallel loop: per-slot work on the sums (a pressure
+// from a density) costs no barrier of its own. It must touch nothing but its slot's data.
+template <class Arith, int D, PairTerm<D> Term, class Then = NothingAfter>
 void sum_pairs(const SlotLayout<D>& layout, const Term& term, PairSums<Arith, Term::width>& sums,
-               const CrossPairs<D>& cross = {}) {
+               const CrossPairs<D>& cross = {}, const Then& then = {}) {
   constexpr int K = Term::width;
   sums.resize(layout.slot_count());
   const CoordinateView<D> x = layout.position();
@@ -190,7 +198,7 @@ void sum_pairs(const SlotLayout<D>& layout, const Term& term, PairSums<Arith, Te
           }
           sums.add_local(a, own);
         });
-    detail::finish_in_team<Arith>(layout, term, sums, faults);
+    detail::finish_in_team<Arith>(layout, term, sums, faults, then);
   }
   faults.throw_if_any();
 }
@@ -225,7 +233,7 @@ void sum_cross_pairs(const SlotLayout<D>& layout, const Term& term,
         }
       }
     }
-    detail::finish_in_team<Arith>(layout, term, sums, faults);
+    detail::finish_in_team<Arith>(layout, term, sums, faults, NothingAfter{});
   }
   faults.throw_if_any();
 }

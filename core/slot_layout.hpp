@@ -35,6 +35,13 @@ struct SetParticle {
   std::uint32_t index;
 };
 
+// A per-carrier array and where to put it in slot order (SlotLayout::build).
+template <class T>
+struct Gathered {
+  std::span<const T> by_carrier;
+  std::vector<T>* by_slot;
+};
+
 template <int D>
 class SlotLayout {
 public:
@@ -45,17 +52,16 @@ public:
 
   // Sorts the carriers into cells by coordinate(axis, carrier) (metres) and lists the pairs
   // closer than `radius`. A carrier outside the domain becomes a SimulationFault (step unknown)
-  // naming its set and index.
-  template <class Coordinate>
-  void build(const Coordinate& coordinate, double radius);
+  // naming its set and index. Each `gathered` per-carrier array is copied into slot order in the
+  // same pass (the masses and constants a model's pair terms read: no separate region each).
+  template <class Coordinate, class... T>
+  void build(const Coordinate& coordinate, double radius, Gathered<T>... gathered);
   // The same from the carriers' position field (one per carrier set, core/carrier_field.hpp).
-  template <class Arith>
-  void build(const CarrierField<Arith>& position, double radius) {
-    for (int k = 0; k < D; ++k) {
-      position.fill_reals(k, carrier_position_[k]);
-    }
+  template <class Arith, class... T>
+  void build(const CarrierField<Arith>& position, double radius, Gathered<T>... gathered) {
+    position.template fill_reals<D>(carrier_position_);
     build([this](int axis, std::size_t carrier) { return carrier_position_[axis][carrier]; },
-          radius);
+          radius, gathered...);
   }
 
   std::size_t carrier_count() const { return carrier_count_; }
@@ -111,8 +117,8 @@ private:
 };
 
 template <int D>
-template <class Coordinate>
-void SlotLayout<D>::build(const Coordinate& coordinate, double radius) {
+template <class Coordinate, class... T>
+void SlotLayout<D>::build(const Coordinate& coordinate, double radius, Gathered<T>... gathered) {
   try {
     cells_.build(carrier_count_, coordinate);
   } catch (const PointOutsideDomain& outside) {
@@ -126,6 +132,7 @@ void SlotLayout<D>::build(const Coordinate& coordinate, double radius) {
   }
   slot_of_carrier_.resize(carrier_count_);
   particle_in_slot_.resize(carrier_count_);
+    (gathered.by_slot->resize(carrier_count_), ...);
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < carrier_count_; ++s) {
     for (int k = 0; k < D; ++k) {
@@ -133,6 +140,7 @@ void SlotLayout<D>::build(const Coordinate& coordinate, double radius) {
     }
     const std::size_t set = set_of_carrier(carrier[s]);
     slot_of_carrier_[carrier[s]] = static_cast<std::uint32_t>(s);
+    (((*gathered.by_slot)[s] = gathered.by_carrier[carrier[s]]), ...);
     particle_in_slot_[s] = {static_cast<std::uint32_t>(set),
                             static_cast<std::uint32_t>(carrier[s] - first_carrier_[set])};
   }

@@ -10,29 +10,42 @@
 #include "core/state_field.hpp"
 
 #include <array>
+#include <concepts>
 #include <cstddef>
 #include <vector>
 
 namespace revsph {
 
-// target += dt * rate, component by component. `rate[c][i]` is in the target's unit per second.
-template <class Arith, int D>
-void add_rate(StateField<typename Arith::Raw>& target,
-              const std::array<std::vector<double>, D>& rate, double dt, FaultRecorder& faults) {
+// target += dt * rate(c, i), component by component, rate in the target's unit per second. The
+// rate is read where it was computed (a pair sum in slot order, say): no copy, no region of its
+// own.
+template <class Arith, class Rate>
+requires std::invocable<const Rate&, int, std::size_t>
+void add_rate(StateField<typename Arith::Raw>& target, const Rate& rate, double dt,
+              FaultRecorder& faults) {
   const auto& scale = target.info().scale;
   const std::size_t n = target.count();
+  const int components = target.components();
   // One parallel region for all components: every region is a barrier, and a busy machine
   // makes each one cost a time slice (issue 15).
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
-    for (int c = 0; c < D; ++c) {
-      if (!Arith::try_increment(target.at(c, i), dt * rate[c][i], scale)) {
+    for (int c = 0; c < components; ++c) {
+      if (!Arith::try_increment(target.at(c, i), dt * rate(c, i), scale)) {
         faults.record(i, target.info().particle_set.c_str(), target.info().name.c_str(),
                       "overflow or non-finite value in a kick");
       }
     }
   }
   faults.throw_if_any();
+}
+
+// The same with the rate as arrays, rate[c][i].
+template <class Arith, int D>
+void add_rate(StateField<typename Arith::Raw>& target,
+              const std::array<std::vector<double>, D>& rate, double dt, FaultRecorder& faults) {
+  add_rate<Arith>(
+      target, [&rate](int c, std::size_t i) { return rate[c][i]; }, dt, faults);
 }
 
 // position += dt * velocity. The increment dt * v is odd in v bit for bit (IEEE negation and

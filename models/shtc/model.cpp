@@ -348,10 +348,10 @@ void Model<D>::update_geometry() {
   }
   update_constants();
   const std::size_t n = carrier_count();
-  layout_.build(carrier_position(), parameters_.support_radius());
-  layout_.gather(std::span<const double>(mass_), slot_mass_);
-  layout_.gather(std::span<const std::int64_t>(density_constant_), slot_density_constant_);
-  layout_.gather(std::span<const std::int64_t>(lambda_constant_), slot_lambda_constant_);
+  layout_.build(carrier_position(), parameters_.support_radius(),
+                Gathered<double>{mass_, &slot_mass_},
+                Gathered<std::int64_t>{density_constant_, &slot_density_constant_},
+                Gathered<std::int64_t>{lambda_constant_, &slot_lambda_constant_});
   compute_kernel_sums<D>(kernel_, layout_, slot_mass_, slot_density_constant_,
                          slot_lambda_constant_, sums_);
   FaultRecorder faults;

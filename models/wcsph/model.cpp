@@ -52,9 +52,9 @@ void Model<D, Arith>::initialise_density_constants(std::span<const double> targe
   for (const auto& [set, field] : {std::pair{fluid_set, &state_.fluid.density_constant},
                                    std::pair{dummy_set, &state_.dummy.density_constant}}) {
     const std::span<const double> wanted = layout_.part_of_set(target, set);
-    const std::span<const double> density = of_set(density_, set);
-    for (std::size_t i = 0; i < density.size(); ++i) {
-      if (!Arith::try_from_real(wanted[i] - density[i], field->info().scale, field->at(0, i))) {
+    const std::span<const double> rho = of_set(density(), set);
+    for (std::size_t i = 0; i < rho.size(); ++i) {
+      if (!Arith::try_from_real(wanted[i] - rho[i], field->info().scale, field->at(0, i))) {
         throw SimulationFault(
             {field->info().particle_set, i, "density_constant", "does not fit its scale"}, 0);
       }
@@ -77,7 +77,10 @@ template <int D, class Arith>
 void Model<D, Arith>::kick(double dt) {
   update_derived();
   FaultRecorder faults;
-  add_rate<Arith, D>(state_.fluid.velocity, acceleration_, dt, faults);
+  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  add_rate<Arith>(
+      state_.fluid.velocity,
+      [&](int k, std::size_t i) { return acceleration_sums_.value(k, fluid[i]); }, dt, faults);
 }
 
 template <int D, class Arith>
@@ -105,6 +108,9 @@ void Model<D, Arith>::update_constants() {
   mass_ = CarrierField<Arith>{&state_.fluid.mass, &state_.dummy.mass}.reals();
   density_constant_ =
       CarrierField<Arith>{&state_.fluid.density_constant, &state_.dummy.density_constant}.raws();
+  is_fluid_.assign(mass_.size(), 0);
+  const std::span<std::uint8_t> fluid = layout_.part_of_set(std::span(is_fluid_), fluid_set);
+  std::fill(fluid.begin(), fluid.end(), 1);
   constants_valid_ = true;
 }
 
@@ -114,28 +120,21 @@ void Model<D, Arith>::update_derived() {
     return;
   }
   update_constants();
-  layout_.build(carrier_position(), parameters_.support_radius);
+  layout_.build(carrier_position(), parameters_.support_radius,
+                Gathered<double>{mass_, &slot_mass_},
+                Gathered<Raw>{density_constant_, &slot_density_constant_},
+                Gathered<std::uint8_t>{is_fluid_, &slot_is_fluid_});
   const std::size_t carriers = layout_.slot_count();
-  layout_.gather(std::span<const double>(mass_), slot_mass_);
-  layout_.gather(std::span<const Raw>(density_constant_), slot_density_constant_);
-  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
-  slot_is_fluid_.assign(carriers, 0);
-  for (const std::uint32_t s : fluid) {
-    slot_is_fluid_[s] = 1;
-  }
   walls_.find_near(layout_, parameters_.wall_radius);
 
-  sum_pairs<Arith>(layout_, DensityTerm<D, Arith>{kernel_, slot_mass_, slot_density_constant_},
-                   density_sums_);
-  const std::span<const double> slot_density = density_sums_.values(0);
-  FaultRecorder faults;
   pressure_over_density_squared_.resize(carriers);
   if (anti_clump_kernel_) {
     inverse_density_squared_.resize(carriers);
   }
-#pragma omp parallel for schedule(static)
-  for (std::size_t s = 0; s < carriers; ++s) {
-    const double rho = slot_density[s];
+  FaultRecorder faults;
+  // Eq. (2) per slot as soon as its density is summed (no barrier of its own).
+  const auto pressure_term = [&](std::uint32_t s) {
+    const double rho = density_sums_.value(0, s);
     if (!(rho > 0.0)) {
       layout_.record_fault(faults, s, "density", "density not positive");
     }
@@ -144,7 +143,9 @@ void Model<D, Arith>::update_derived() {
     if (anti_clump_kernel_) {
       inverse_density_squared_[s] = 1.0 / (rho * rho);
     }
-  }
+  };
+  sum_pairs<Arith>(layout_, DensityTerm<D, Arith>{kernel_, slot_mass_, slot_density_constant_},
+                   density_sums_, {}, pressure_term);
   faults.throw_if_any();
   const AccelerationTerm<D> acceleration{kernel_,
                                          slot_mass_,
@@ -156,29 +157,26 @@ void Model<D, Arith>::update_derived() {
                                          parameters_.wall_potential(),
                                          parameters_.gravity};
   sum_pairs<Arith>(layout_, acceleration, acceleration_sums_, walls_.cross_pairs());
-
-  layout_.scatter(slot_density, density_); // in the canonical order, for the outputs
-  for (int k = 0; k < D; ++k) {
-    acceleration_[k].resize(fluid.size());
-  }
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < fluid.size(); ++i) {
-    for (int k = 0; k < D; ++k) {
-      acceleration_[k][i] = acceleration_sums_.value(k, fluid[i]);
-    }
-  }
   derived_valid_ = true;
 }
 
 template <int D, class Arith>
 const std::vector<double>& Model<D, Arith>::density() {
   update_derived();
+  layout_.scatter(density_sums_.values(0), density_);
   return density_;
 }
 
 template <int D, class Arith>
 const std::array<std::vector<double>, D>& Model<D, Arith>::acceleration() {
   update_derived();
+  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  for (int k = 0; k < D; ++k) {
+    acceleration_[k].resize(fluid.size());
+    for (std::size_t i = 0; i < fluid.size(); ++i) {
+      acceleration_[k][i] = acceleration_sums_.value(k, fluid[i]);
+    }
+  }
   return acceleration_;
 }
 
@@ -266,7 +264,7 @@ typename Model<D, Arith>::ParticleEnergies Model<D, Arith>::particle_energies() 
   const std::array<std::vector<double>, D> velocity = real_velocity();
   const std::size_t n = fluid_count();
   const std::span<const double> mass = of_set(mass_, fluid_set);
-  const std::span<const double> density = of_set(density_, fluid_set);
+  const std::span<const double> rho = of_set(density(), fluid_set);
   ParticleEnergies energies{std::vector<double>(n),
                             std::vector<double>(n),
                             std::vector<double>(n),
@@ -282,7 +280,7 @@ typename Model<D, Arith>::ParticleEnergies Model<D, Arith>::particle_energies() 
     energies.gravitational[a] =
         m * parameters_.gravity * (fluid_position(D - 1, a) - parameters_.gravity_reference_height);
     energies.compressional[a] =
-        m * compressional_energy_per_mass(density[a], parameters_.rest_density,
+        m * compressional_energy_per_mass(rho[a], parameters_.rest_density,
                                           parameters_.sound_speed); // eq. (3)
   }
   // Eq. (7), attributed to the fluid particle.
@@ -293,9 +291,9 @@ typename Model<D, Arith>::ParticleEnergies Model<D, Arith>::particle_energies() 
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     energies.wall[i] = wall_sums.value(0, fluid[i]);
   }
-  // Dummy particles store compressional energy too (their density follows the fluid).
+  // Dummy particles store compressional energy too (their rho follows the fluid).
   const std::span<const double> dummy_mass = of_set(mass_, dummy_set);
-  const std::span<const double> dummy_density = of_set(density_, dummy_set);
+  const std::span<const double> dummy_density = of_set(density(), dummy_set);
   for (std::size_t d = 0; d < dummy_density.size(); ++d) {
     energies.dummy_compressional.push_back(
         dummy_mass[d] * compressional_energy_per_mass(dummy_density[d], parameters_.rest_density,
@@ -346,10 +344,10 @@ void Model<D, Arith>::derived_views(const ViewSink& sink) {
     sink(ParticleView{set, name, std::move(unit), components, std::move(values)});
   };
   ParticleEnergies energies = particle_energies();
-  const std::span<const double> fluid_density = of_set(density_, fluid_set);
+  const std::span<const double> fluid_density = of_set(density(), fluid_set);
   emit("fluid", "density", "kg/m^3", 1, {fluid_density.begin(), fluid_density.end()});
   emit("fluid", "pressure", "Pa", 1, pressure_of(fluid_density));
-  emit("fluid", "acceleration", "m/s^2", D, component_major(acceleration_));
+  emit("fluid", "acceleration", "m/s^2", D, component_major(acceleration()));
   emit("fluid", "kinetic_energy", energy_unit, 1, std::move(energies.kinetic));
   emit("fluid", "gravitational_energy", energy_unit, 1, std::move(energies.gravitational));
   emit("fluid", "compressional_energy", energy_unit, 1, std::move(energies.compressional));
@@ -357,7 +355,7 @@ void Model<D, Arith>::derived_views(const ViewSink& sink) {
   if (parameters_.shepard_every > 0) {
     emit("fluid", "filtered_velocity", "m/s", D, component_major(filtered_velocity()));
   }
-  const std::span<const double> dummy_density = of_set(density_, dummy_set);
+  const std::span<const double> dummy_density = of_set(density(), dummy_set);
   if (!dummy_density.empty()) {
     emit("dummy", "density", "kg/m^3", 1, {dummy_density.begin(), dummy_density.end()});
     emit("dummy", "pressure", "Pa", 1, pressure_of(dummy_density));
@@ -379,14 +377,14 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics() {
     const std::array<std::vector<double>, D> velocity = real_velocity();
     const std::array<std::vector<double>, D> filtered = filtered_velocity();
     const std::span<const double> mass = of_set(mass_, fluid_set);
-    const std::span<const double> density = of_set(density_, fluid_set);
+    const std::span<const double> rho = of_set(density(), fluid_set);
     double raw_sum = 0.0;
     double filtered_sum = 0.0;
     for (std::size_t a = 0; a < fluid_count(); ++a) {
       const auto [exact_x, exact_y] =
           gresho::velocity(fluid_position(0, a) - parameters_.centre[0],
                            fluid_position(1, a) - parameters_.centre[1]);
-      const double volume = mass[a] / density[a];
+      const double volume = mass[a] / rho[a];
       raw_sum += volume * ((velocity[0][a] - exact_x) * (velocity[0][a] - exact_x) +
                            (velocity[1][a] - exact_y) * (velocity[1][a] - exact_y));
       filtered_sum += volume * ((filtered[0][a] - exact_x) * (filtered[0][a] - exact_x) +

@@ -99,8 +99,9 @@ private:
 
   // Constant parts (wall positions, masses), converted once.
   bool constants_valid_ = false;
-  std::vector<double> mass_;          // carriers: fluid then dummies
-  std::vector<Raw> density_constant_; // carriers, C_a of eq. (5)
+  std::vector<double> mass_;           // carriers: fluid then dummies
+  std::vector<Raw> density_constant_;  // carriers, C_a of eq. (5)
+  std::vector<std::uint8_t> is_fluid_; // carriers
   // Derived from the state, recomputed after every drift. The pair loops run over the carriers
   // in cell order (slots, core/slot_layout.hpp); the state and everything the model reports stay
   // in the canonical particle order.
@@ -122,8 +123,9 @@ private:
   PairSums<Arith, D> acceleration_sums_;
   std::vector<double> pressure_over_density_squared_; // slots
   std::vector<double> inverse_density_squared_;       // slots, with the anti-clump force
-  std::vector<double> density_;                       // carriers, canonical order
-  std::array<std::vector<double>, D> acceleration_;   // fluid, canonical order
+  // For the outputs, filled on demand by density() and acceleration().
+  std::vector<double> density_;                     // carriers, canonical order
+  std::array<std::vector<double>, D> acceleration_; // fluid, canonical order
 };
 
 extern template class Model<1, FixedArithmetic>;
