@@ -107,15 +107,13 @@ void compute_kernel_sums(const WendlandQuintic<D>& kernel, const SlotLayout<D>& 
                          std::span<const double> mass,
                          std::span<const std::int64_t> density_constant,
                          std::span<const std::int64_t> lambda_constant, KernelSums<D>& sums) {
-  sum_pairs<FixedArithmetic>(
-      layout, KernelSumsTerm<D>{kernel, mass, density_constant, lambda_constant}, sums.totals);
   const std::size_t n = layout.slot_count();
   sums.density.resize(n);
   sums.lambda.resize(n);
   sums.h_matrix.resize(n);
   sums.h_inverse.resize(n);
-#pragma omp parallel for schedule(static)
-  for (std::size_t s = 0; s < n; ++s) {
+  // Each slot's values and H^-1 as soon as its sums are final (no region of their own).
+  const auto unpack = [&sums](std::uint32_t s) {
     sums.density[s] = sums.totals.value(0, s);
     sums.lambda[s] = sums.totals.value(1, s);
     int entry = 2;
@@ -126,7 +124,10 @@ void compute_kernel_sums(const WendlandQuintic<D>& kernel, const SlotLayout<D>& 
       }
     }
     sums.h_inverse[s] = renormalisation_inverse<D>(sums.h_matrix[s]);
-  }
+  };
+  sum_pairs<FixedArithmetic>(layout,
+                             KernelSumsTerm<D>{kernel, mass, density_constant, lambda_constant},
+                             sums.totals, {}, unpack);
 }
 
 } // namespace revsph::shtc
