@@ -1,8 +1,7 @@
 #include "models/wcsph/initial_state_correction.hpp"
 
-#include "core/cell_list.hpp"
 #include "core/kernel_wendland.hpp"
-#include "core/neighbour_list.hpp"
+#include "core/neighbour_rows.hpp"
 
 #include <Eigen/SparseCore>
 
@@ -181,62 +180,21 @@ void apply_jitter(CoordinateArrays<D>& points, const IscSettings& settings) {
   }
 }
 
-// The neighbours of every movable particle: movable ones (itself excluded) and fixed ones.
-template <int D>
-struct Neighbours {
-  Neighbours(const Box<D>& domain, double support_radius, std::size_t movable_count,
-             const CoordinateArrays<D>& fixed)
-      : movable_cells(domain, support_radius, cell_budget(movable_count)),
-        fixed_cells(domain, support_radius, cell_budget(fixed[0].size())) {
-    fixed_cells.build(view_of<D>(fixed));
-  }
-
-  // Step 4 of the paper.
-  void update(const CoordinateArrays<D>& movable, const CoordinateArrays<D>& fixed,
-              double support_radius) {
-    const CoordinateView<D> movable_view = view_of<D>(movable);
-    movable_cells.build(movable_view);
-    find_neighbours<D>(movable_cells, movable_view, movable_view, support_radius,
-                       SelfPairs::excluded, of_movable);
-    find_neighbours<D>(fixed_cells, view_of<D>(fixed), movable_view, support_radius,
-                       SelfPairs::included, of_fixed);
-  }
-
-  CellList<D> movable_cells;
-  CellList<D> fixed_cells;
-  NeighbourList of_movable;
-  NeighbourList of_fixed;
-};
-
 // Eq. (4), the sum including b = a, in ascending neighbour order (deterministic).
 template <int D>
-void compute_density(const WendlandQuintic<D>& kernel, const CoordinateArrays<D>& movable,
-                     std::span<const double> movable_mass, const CoordinateArrays<D>& fixed,
-                     std::span<const double> fixed_mass, const Neighbours<D>& neighbours,
+void compute_density(const WendlandQuintic<D>& kernel, std::span<const double> movable_mass,
+                     std::span<const double> fixed_mass, const NeighbourRows<D>& rows,
                      std::vector<double>& density) {
-  const std::size_t n = movable_mass.size();
   const double self_weight = kernel.value(0.0);
-  density.resize(n);
-#pragma omp parallel for schedule(static)
-  for (std::size_t a = 0; a < n; ++a) {
+  density.resize(movable_mass.size());
+  rows.for_each_row([&](std::size_t a, const NeighbourRow<D>& row) {
     double sum = movable_mass[a] * self_weight;
-    const auto add = [&](const CoordinateArrays<D>& others, std::span<const double> mass,
-                         std::uint32_t b) {
-      double r_squared = 0.0;
-      for (int k = 0; k < D; ++k) {
-        const double d = movable[k][a] - others[k][b];
-        r_squared += d * d;
-      }
-      sum += mass[b] * kernel.value(std::sqrt(r_squared));
-    };
-    for (const std::uint32_t b : neighbours.of_movable.of(a)) {
-      add(movable, movable_mass, b);
-    }
-    for (const std::uint32_t f : neighbours.of_fixed.of(a)) {
-      add(fixed, fixed_mass, f);
-    }
+    row.for_each_movable(
+        [&](const RowNeighbour<D>& b) { sum += movable_mass[b.index] * kernel.value(b.distance); });
+    row.for_each_fixed(
+        [&](const RowNeighbour<D>& f) { sum += fixed_mass[f.index] * kernel.value(f.distance); });
     density[a] = sum;
-  }
+  });
 }
 
 double max_relative_error(const std::vector<double>& density, double rest_density) {
@@ -259,11 +217,10 @@ struct Jacobian {
 };
 
 template <int D>
-Jacobian assemble_jacobian(const WendlandQuintic<D>& kernel, const CoordinateArrays<D>& movable,
-                           std::span<const double> movable_mass, const CoordinateArrays<D>& fixed,
-                           std::span<const double> fixed_mass, const Neighbours<D>& neighbours) {
+Jacobian assemble_jacobian(const WendlandQuintic<D>& kernel, std::span<const double> movable_mass,
+                           std::span<const double> fixed_mass, const NeighbourRows<D>& rows) {
   const std::size_t n = movable_mass.size();
-  const std::size_t entries = D * (n + neighbours.of_movable.pair_count());
+  const std::size_t entries = D * (n + rows.movable_pair_count());
   if (D * n > static_cast<std::size_t>(std::numeric_limits<int>::max()) ||
       entries > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
     throw std::length_error("initial state correction: too many particles for one linear system");
@@ -281,58 +238,52 @@ Jacobian assemble_jacobian(const WendlandQuintic<D>& kernel, const CoordinateArr
   int* const starts = matrix.outerIndexPtr();
   starts[0] = 0;
   for (std::size_t a = 0; a < n; ++a) {
-    starts[a + 1] = starts[a] + static_cast<int>(D * (1 + neighbours.of_movable.of(a).size()));
+    starts[a + 1] = starts[a] + static_cast<int>(D * (1 + rows.movable_neighbour_count(a)));
   }
   int* const columns = matrix.innerIndexPtr();
   double* const values = matrix.valuePtr();
-#pragma omp parallel for schedule(static)
-  for (std::size_t a = 0; a < n; ++a) {
-    // w'(r_ab) e_ab = (w'(r)/r) x_ab: no division by r, finite for coincident particles.
-    const auto gradient = [&](const CoordinateArrays<D>& others, std::uint32_t b) {
-      double r_squared = 0.0;
-      Vec<D> difference{};
-      for (int k = 0; k < D; ++k) {
-        difference[k] = movable[k][a] - others[k][b];
-        r_squared += difference[k] * difference[k];
-      }
-      const double factor = kernel.derivative_over_r(std::sqrt(r_squared));
-      for (int k = 0; k < D; ++k) {
-        difference[k] *= factor;
-      }
-      return difference;
-    };
+  // w'(r_ab) e_ab = (w'(r)/r) x_ab: no division by r, finite for coincident particles.
+  const auto gradient = [&](const RowNeighbour<D>& b) {
+    const double factor = kernel.derivative_over_r(b.distance);
+    Vec<D> g = b.separation;
+    for (int k = 0; k < D; ++k) {
+      g[k] *= factor;
+    }
+    return g;
+  };
+  rows.for_each_row([&](std::size_t a, const NeighbourRow<D>& row) {
     Vec<D> diagonal{};
     int slot = starts[a];
     int diagonal_slot = -1;
-    // Neighbour lists are sorted, so the row's columns come out ascending if the diagonal block
-    // is placed before the first neighbour above a.
-    for (const std::uint32_t b : neighbours.of_movable.of(a)) {
-      if (diagonal_slot < 0 && b > a) {
+    // Rows list their neighbours ascending, so the row's columns come out ascending if the
+    // diagonal block is placed before the first neighbour above a.
+    row.for_each_movable([&](const RowNeighbour<D>& b) {
+      if (diagonal_slot < 0 && b.index > a) {
         diagonal_slot = slot;
         slot += D;
       }
-      const Vec<D> g = gradient(movable, b);
+      const Vec<D> g = gradient(b);
       for (int k = 0; k < D; ++k) {
-        diagonal[k] += movable_mass[b] * g[k];
-        columns[slot + k] = static_cast<int>(D * b + k);
-        values[slot + k] = -movable_mass[b] * g[k];
+        diagonal[k] += movable_mass[b.index] * g[k];
+        columns[slot + k] = static_cast<int>(D * b.index + k);
+        values[slot + k] = -movable_mass[b.index] * g[k];
       }
       slot += D;
-    }
+    });
     if (diagonal_slot < 0) {
       diagonal_slot = slot;
     }
-    for (const std::uint32_t f : neighbours.of_fixed.of(a)) {
-      const Vec<D> g = gradient(fixed, f);
+    row.for_each_fixed([&](const RowNeighbour<D>& f) {
+      const Vec<D> g = gradient(f);
       for (int k = 0; k < D; ++k) {
-        diagonal[k] += fixed_mass[f] * g[k];
+        diagonal[k] += fixed_mass[f.index] * g[k];
       }
-    }
+    });
     for (int k = 0; k < D; ++k) {
       columns[diagonal_slot + k] = static_cast<int>(D * a + k);
       values[diagonal_slot + k] = diagonal[k];
     }
-  }
+  });
   return jacobian;
 }
 
@@ -423,12 +374,13 @@ IscReport correct_initial_state(CoordinateArrays<D>& movable, std::span<const do
   require_inside<D>(position, domain, "movable", "would be moved by the initial jitter to");
 
   const WendlandQuintic<D> kernel(support_radius);
-  Neighbours<D> neighbours(domain, support_radius, n, fixed);
+  NeighbourRows<D> rows(domain, support_radius, n, view_of<D>(fixed));
   std::vector<double> density;
   IscReport report;
   for (;;) {
-    neighbours.update(position, fixed, support_radius);
-    compute_density<D>(kernel, position, movable_mass, fixed, fixed_mass, neighbours, density);
+    // Step 4 of the paper.
+    rows.update(view_of<D>(position));
+    compute_density<D>(kernel, movable_mass, fixed_mass, rows, density);
     report.residuals.push_back(max_relative_error(density, rest_density));
     if (report.residuals.back() <= settings.tolerance) {
       report.converged = true;
@@ -441,8 +393,7 @@ IscReport correct_initial_state(CoordinateArrays<D>& movable, std::span<const do
       report.stopped_early = "the density is not finite";
       break;
     }
-    const Jacobian jacobian =
-        assemble_jacobian<D>(kernel, position, movable_mass, fixed, fixed_mass, neighbours);
+    const Jacobian jacobian = assemble_jacobian<D>(kernel, movable_mass, fixed_mass, rows);
     if (const std::optional<std::size_t> stuck = first_zero_row(jacobian.matrix)) {
       report.stopped_early = "movable particle " + std::to_string(*stuck) +
                              " has no neighbour closer than the support radius, so no "
