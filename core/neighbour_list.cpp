@@ -44,20 +44,24 @@ void find_neighbours(const CellList<D>& cells, const CoordinateView<D>& targets,
   const bool exclude_self = self_pairs == SelfPairs::excluded;
   result.offsets.assign(n + 1, 0);
 
-  // Two passes (count, then fill) keep the output layout independent of the thread count.
-#pragma omp parallel for schedule(static)
-  for (std::size_t a = 0; a < n; ++a) {
-    std::size_t count = 0;
-    scan_query<D>(cells, targets, queries, a, radius_squared, exclude_self,
-                  [&](std::uint32_t, bool accepted) { count += accepted; });
-    result.offsets[a + 1] = count;
-  }
-  for (std::size_t a = 0; a < n; ++a) {
-    result.offsets[a + 1] += result.offsets[a];
-  }
-  result.indices.resize(result.offsets[n]);
+  // Two passes (count, then fill) keep the output layout independent of the thread count; one
+  // parallel region for both (every region is a barrier: issue 15).
 #pragma omp parallel
   {
+#pragma omp for schedule(static)
+    for (std::size_t a = 0; a < n; ++a) {
+      std::size_t count = 0;
+      scan_query<D>(cells, targets, queries, a, radius_squared, exclude_self,
+                    [&](std::uint32_t, bool accepted) { count += accepted; });
+      result.offsets[a + 1] = count;
+    }
+#pragma omp single
+    {
+      for (std::size_t a = 0; a < n; ++a) {
+        result.offsets[a + 1] += result.offsets[a];
+      }
+      result.indices.resize(result.offsets[n]);
+    }
     // Every candidate is written at the next free place, which advances only when accepted: one
     // spare place past the (known) count suffices.
     std::vector<std::uint32_t> buffer;

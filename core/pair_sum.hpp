@@ -122,12 +122,13 @@ void fill_geometry(const CoordinateView<D>& x_a, std::uint32_t a, const Coordina
 }
 
 // Self terms, then every wanted slot's value; a sum that does not fit becomes a fault; then
-// then(slot). Called by every thread of the pair loop's parallel region.
+// then(slot). Called by every thread of the pair loop's parallel region, as its last work.
 template <class Arith, int D, class Term, int K, class Then>
 void finish_in_team(const SlotLayout<D>& layout, const Term& term, PairSums<Arith, K>& sums,
                     FaultRecorder& faults, const Then& then) {
   const std::size_t n = layout.slot_count();
-#pragma omp for schedule(static)
+  // nowait: the end of the parallel region that calls this is the barrier.
+#pragma omp for schedule(static) nowait
   for (std::size_t s = 0; s < n; ++s) {
     const auto slot = static_cast<std::uint32_t>(s);
     if (!receives(term, slot)) {
