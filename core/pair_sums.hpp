@@ -49,6 +49,12 @@ public:
   // Quantity q of slot s after the loop (zero for a slot the term does not receive).
   double value(int q, std::size_t slot) const { return values_[q][slot]; }
   std::span<const double> values(int q) const { return values_[q]; }
+  // The exact total of quantity q in slot s, in raw units of its scale (fixed point; valid after
+  // the loop for a slot whose sums converted): what a state update adds without a rounding of
+  // its own (a momentum kick made of pair impulses, say).
+  std::int64_t raw_total(int q, std::size_t slot) const requires(exact) {
+    return totals_[slot * K + q];
+  }
   const std::array<SummedQuantity, K>& quantities() const { return quantities_; }
 
   // The partial sums of one slot's own partners (128-bit in fixed point: they cannot overflow).

@@ -48,7 +48,7 @@ struct StiffenedGas {
 };
 
 // Everything the particle loop needs from (rho, sigma).
-struct State {
+struct ThermodynamicState {
   double pressure = 0.0;
   double temperature = 0.0;
   double specific_energy = 0.0; // u = eps / rho
@@ -95,10 +95,11 @@ inline double temperature(const StiffenedGas& eos, double density, double specif
 namespace detail {
 
 // The rest of the state from T (see the top of the file); stiffening = 0 for the ideal gas.
-inline State state_from_temperature(double gamma, double heat_capacity, double stiffening,
-                                    double density, double specific_entropy, double temperature) {
+inline ThermodynamicState state_from_temperature(double gamma, double heat_capacity,
+                                                 double stiffening, double density,
+                                                 double specific_entropy, double temperature) {
   const double thermal = heat_capacity * temperature; // c_V T = eps1 / rho
-  State state;
+  ThermodynamicState state;
   state.temperature = temperature;
   state.specific_energy = thermal + stiffening / density;          // (88), (90)
   state.pressure = (gamma - 1.0) * density * thermal - stiffening; // (89a), (91a), (92)
@@ -142,13 +143,13 @@ inline std::optional<std::string> above(const char* name, double value, double b
 
 } // namespace detail
 
-// All of State at once: one pow and one exp.
-inline State state(const IdealGas& eos, double density, double specific_entropy) {
+// All of ThermodynamicState at once: one pow and one exp.
+inline ThermodynamicState state(const IdealGas& eos, double density, double specific_entropy) {
   return detail::state_from_temperature(eos.gamma, eos.heat_capacity, 0.0, density,
                                         specific_entropy,
                                         temperature(eos, density, specific_entropy));
 }
-inline State state(const StiffenedGas& eos, double density, double specific_entropy) {
+inline ThermodynamicState state(const StiffenedGas& eos, double density, double specific_entropy) {
   return detail::state_from_temperature(eos.gamma, eos.heat_capacity, stiffening_pressure(eos),
                                         density, specific_entropy,
                                         temperature(eos, density, specific_entropy));
@@ -232,7 +233,7 @@ inline std::optional<std::string> constants_error(const StiffenedGas& eos) {
 template <class Eos>
 concept EquationOfState = requires(const Eos& eos, double x) {
   { energy_density(eos, x, x) } -> std::same_as<double>;
-  { state(eos, x, x) } -> std::same_as<State>;
+  { state(eos, x, x) } -> std::same_as<ThermodynamicState>;
   { specific_entropy_for_energy(eos, x, x) } -> std::same_as<std::optional<double>>;
   { constants_error(eos) } -> std::same_as<std::optional<std::string>>;
 };

@@ -2,6 +2,7 @@
 // Pointwise physics of symplectic WCSPH (Kincl & Pavelka, Comput. Phys. Commun. 284 (2023)
 // 108593, "paper 1"). Pure functions of doubles; the neighbour loops are in forces.hpp.
 
+#include "core/wall_potential.hpp"
 #include <cmath>
 
 namespace revsph::wcsph {
@@ -31,31 +32,7 @@ inline double compressional_energy_per_mass(double density, double rest_density,
   return sound_speed * sound_speed / 42.0 * (ratio3 * ratio3 + 6.0 / ratio);
 }
 
-// The conservative Lennard-Jones-like wall, paper 1 §3.3 eq. (7):
-//   s = (r_wall^2 + eps^2) / (r^2 + eps^2) for r < r_wall, else 1;
-//   energy of a pair E_wall (s^2 / 4 - s / 2 + 1 / 4) = E_wall (s - 1)^2 / 4;
-//   force on the fluid particle b from wall particle a:
-//   F = -dH/dx_b = E_wall (s^2 - s) / (r^2 + eps^2) (x_b - x_a).
-// E_wall is proportional to the particle mass (Table 1: E_wall = 10 m g l_wch), so both are
-// written per unit mass of the fluid particle: energy_per_mass = E_wall / m.
-struct WallPotential {
-  double radius_squared_plus_epsilon_squared; // r_wall^2 + eps^2
-  double epsilon_squared;
-  double energy_per_mass;
-
-  double s(double r_squared) const {
-    const double value = radius_squared_plus_epsilon_squared / (r_squared + epsilon_squared);
-    return value > 1.0 ? value : 1.0;
-  }
-  // Acceleration of the fluid particle divided by (x_fluid - x_wall).
-  double acceleration_over_distance(double r_squared) const {
-    const double s_value = s(r_squared);
-    return energy_per_mass * (s_value * s_value - s_value) / (r_squared + epsilon_squared);
-  }
-  double energy_per_fluid_mass(double r_squared) const {
-    const double excess = s(r_squared) - 1.0;
-    return 0.25 * energy_per_mass * excess * excess;
-  }
-};
+// The conservative wall of eq. (7): core/wall_potential.hpp (shared with the entropic model).
+using revsph::WallPotential;
 
 } // namespace revsph::wcsph

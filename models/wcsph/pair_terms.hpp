@@ -91,20 +91,7 @@ struct AccelerationTerm {
   }
 };
 
-// Eq. (7): the wall energy of each fluid particle, E_wall (s - 1)^2 / 4 per wall particle within
-// reach (a diagnostic, summed in doubles in ascending wall order).
-template <int D>
-struct WallEnergyTerm {
-  static constexpr int width = 1;
-  std::span<const double> mass;
-  std::span<const std::uint8_t> is_fluid;
-  WallPotential wall;
-
-  bool receives(std::uint32_t s) const { return is_fluid[s] != 0; }
-  void cross_pair(const PairGeometry<D>& p, std::array<double, 1>& to_a) const {
-    to_a[0] = mass[p.a] * wall.energy_per_fluid_mass(p.r_squared);
-  }
-};
+// The wall energy of eq. (7): WallEnergyTerm in core/wall_potential.hpp.
 
 // App. A Shepard filter of the fluid velocity, u~_a = sum_b V_b u_b w_ab / sum_b V_b w_ab over
 // fluid b (including b = a), V_b = m_b / rho_b: quantity 0 is the denominator, 1..D the

@@ -17,8 +17,8 @@
 namespace {
 
 using revsph::entropic::IdealGas;
-using revsph::entropic::State;
 using revsph::entropic::StiffenedGas;
+using revsph::entropic::ThermodynamicState;
 
 static_assert(revsph::entropic::EquationOfState<IdealGas>);
 static_assert(revsph::entropic::EquationOfState<StiffenedGas>);
@@ -93,7 +93,7 @@ void expect_thermodynamics_of_the_energy(const Eos& eos) {
     const double rho = point.density;
     const double s = rho * point.specific_entropy;
     const double eps = revsph::entropic::energy_density(eos, rho, s);
-    const State state = revsph::entropic::state(eos, rho, point.specific_entropy);
+    const ThermodynamicState state = revsph::entropic::state(eos, rho, point.specific_entropy);
     const Derivatives numeric = finite_differences(eos, rho, s);
     const double energy_scale = std::fabs(eps) + std::fabs(stiffening(eos));
     const std::string where =
@@ -137,7 +137,7 @@ void expect_sound_speed_is_isentropic_derivative(const Eos& eos) {
     const double numeric = (revsph::entropic::pressure(eos, rho + d_rho, sigma) -
                             revsph::entropic::pressure(eos, rho - d_rho, sigma)) /
                            (2.0 * d_rho);
-    const State state = revsph::entropic::state(eos, rho, sigma);
+    const ThermodynamicState state = revsph::entropic::state(eos, rho, sigma);
     EXPECT_GT(state.sound_speed_squared, 0.0);
     EXPECT_NEAR(state.sound_speed_squared, numeric,
                 tolerance * (state.sound_speed_squared +
@@ -158,7 +158,7 @@ TEST(EntropicEquationOfState, SoundSpeedIsTheIsentropicPressureDerivative) {
 
 TEST(EntropicEquationOfState, StiffenedGasReferenceState) {
   for (const StiffenedGas& eos : {hyperbolic_heat, water}) {
-    const State state = revsph::entropic::state(eos, eos.rest_density, 0.0);
+    const ThermodynamicState state = revsph::entropic::state(eos, eos.rest_density, 0.0);
     const double t0 =
         eos.sound_speed * eos.sound_speed / (eos.gamma * (eos.gamma - 1.0) * eos.heat_capacity);
     // pow(1, x) = exp(0) = 1 exactly, so T = T0; p = p0 up to the cancellation in
@@ -214,7 +214,7 @@ TEST(EntropicEquationOfState, IdealGasAdiabaticLawAndPressureFromEnergy) {
       const double reference =
           revsph::entropic::state(eos, 1.0, sigma).temperature; // T rho^(1-gamma) at rho = 1
       for (const double rho : {0.1, 0.5, 2.0, 30.0}) {
-        const State state = revsph::entropic::state(eos, rho, sigma);
+        const ThermodynamicState state = revsph::entropic::state(eos, rho, sigma);
         // Few roundings in each of pow and exp, and one in rho^(1-gamma) here.
         EXPECT_NEAR(state.temperature * std::pow(rho, 1.0 - eos.gamma), reference,
                     1e-14 * reference);
@@ -249,7 +249,8 @@ void expect_inverse_recovers_entropy(const Eos& eos) {
 
     // The increment form agrees with the closed form for a heat input and a heat loss, and for a
     // tiny du it keeps full relative precision (log1p; ln(1 + x) would lose ~7 digits here).
-    const State state = revsph::entropic::state(eos, point.density, point.specific_entropy);
+    const ThermodynamicState state =
+        revsph::entropic::state(eos, point.density, point.specific_entropy);
     for (const double fraction : {1e-9, 0.3, -0.5}) {
       const double du = fraction * eos.heat_capacity * state.temperature;
       const std::optional<double> change =

@@ -1,0 +1,271 @@
+#include "models/entropic/model.hpp"
+
+#include "core/carrier_field.hpp"
+#include "core/state_snapshot.hpp"
+#include "fixedpoint/exact_sum.hpp"
+#include "models/entropic/pair_terms.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <variant>
+
+namespace revsph::entropic {
+
+namespace {
+
+constexpr std::size_t gas_set = 0; // the layout's only set
+
+std::array<SummedQuantity, 1> density_quantity(const fixedpoint::Scale& scale) {
+  return {SummedQuantity{"density", scale}};
+}
+
+template <int D>
+std::array<SummedQuantity, D> impulse_quantities(const fixedpoint::Scale& scale) {
+  std::array<SummedQuantity, D> quantities{};
+  quantities.fill({"momentum", scale});
+  return quantities;
+}
+
+} // namespace
+
+template <int D>
+Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state)
+    : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
+      kernel_(parameters_.support_radius),
+      layout_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
+              {{"gas", state_.gas.position.count()}}),
+      walls_(parameters_.domain,
+             std::max(parameters_.support_radius, parameters_.wall_radius) *
+                 parameters_.cell_size_factor,
+             state_.wall.position.count(), "wall"),
+      density_sums_(density_quantity(parameters_.density_scale)),
+      impulse_sums_(impulse_quantities<D>(parameters_.momentum_scale)) {}
+
+template <int D>
+std::span<const Substep<Model<D>>> Model<D>::palindrome() {
+  static constexpr Substep<Model> sequence[] = {
+      {"kick", 0.5, &Model::kick_substep},
+      {"drift", 1.0, &Model::drift_substep},
+      {"kick", 0.5, &Model::kick_substep},
+  };
+  return sequence;
+}
+
+template <int D>
+void Model<D>::update_constants() {
+  if (constants_valid_) {
+    return;
+  }
+  CoordinateArrays<D> wall_position;
+  for (int k = 0; k < D; ++k) {
+    wall_position[k] = CarrierField<FixedArithmetic>{&state_.wall.position}.reals(k);
+  }
+  walls_.place(std::move(wall_position));
+  mass_ = CarrierField<FixedArithmetic>{&state_.gas.mass}.reals();
+  entropy_ = CarrierField<FixedArithmetic>{&state_.gas.entropy}.reals();
+  constants_valid_ = true;
+}
+
+template <int D>
+void Model<D>::update_geometry() {
+  if (geometry_valid_) {
+    return;
+  }
+  update_constants();
+  layout_.build(CarrierField<FixedArithmetic>{&state_.gas.position}, parameters_.support_radius,
+                Gathered<double>{mass_, &slot_mass_}, Gathered<double>{entropy_, &slot_entropy_});
+  walls_.find_near(layout_, parameters_.wall_radius);
+  const std::size_t n = layout_.slot_count();
+  for (std::vector<double>* values : {&density_, &entropy_density_, &volume_, &pressure_,
+                                      &temperature_, &specific_energy_, &alpha_, &beta_}) {
+    values->resize(n);
+  }
+  // Per slot, as soon as its density is summed: the mass volume (eq. 23), the entropy density
+  // (32b) and the equation of state (App. C), then the coefficients of the pair force (34c).
+  FaultRecorder faults;
+  const auto thermodynamics_of = [&](std::uint32_t s) {
+    const double rho = density_sums_.value(0, s);
+    const double m = slot_mass_[s];
+    const double sigma = slot_entropy_[s] / m;
+    const ThermodynamicState st = std::visit(
+        [&](const auto& law) { return entropic::state(law, rho, sigma); }, parameters_.gas_law);
+    density_[s] = rho;
+    entropy_density_[s] = rho * sigma;
+    volume_[s] = m / rho;
+    pressure_[s] = st.pressure;
+    temperature_[s] = st.temperature;
+    specific_energy_[s] = st.specific_energy;
+    alpha_[s] = m * st.pressure / (rho * rho);
+    beta_[s] = m;
+    if (!(rho > 0.0) || !std::isfinite(alpha_[s])) {
+      layout_.record_fault(faults, s, "density", "density not positive or pressure not finite");
+    }
+  };
+  sum_pairs<FixedArithmetic>(layout_, DensityTerm<D>{kernel_, slot_mass_}, density_sums_, {},
+                             thermodynamics_of);
+  faults.throw_if_any();
+  geometry_valid_ = true;
+  impulses_valid_ = false;
+}
+
+template <int D>
+void Model<D>::update_impulses(double dt) {
+  update_geometry();
+  if (impulses_valid_ && impulse_dt_ == dt) {
+    return;
+  }
+  const ImpulseTerm<D> term{kernel_,
+                            dt,
+                            slot_mass_,
+                            alpha_,
+                            beta_,
+                            {},
+                            {},
+                            parameters_.wall_potential(),
+                            parameters_.gravity};
+  sum_pairs<FixedArithmetic>(layout_, term, impulse_sums_, walls_.cross_pairs());
+  impulse_dt_ = dt;
+  impulses_valid_ = true;
+}
+
+template <int D>
+void Model<D>::kick(double dt) {
+  update_impulses(dt);
+  // M_a += the exact sum of its rounded pair impulses: no rounding of its own, so a reversed
+  // kick subtracts bit for bit what this one added.
+  const std::span<const std::uint32_t> slots = layout_.slots_of_set(gas_set);
+  Field& momentum = state_.gas.momentum;
+  FaultRecorder faults;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < slots.size(); ++i) {
+    for (int k = 0; k < D; ++k) {
+      std::int64_t& raw = momentum.at(k, i);
+      if (!fixedpoint::try_add(raw, impulse_sums_.raw_total(k, slots[i]), raw)) {
+        faults.record(i, "gas", "momentum", "overflow in a kick");
+      }
+    }
+  }
+  faults.throw_if_any();
+}
+
+template <int D>
+void Model<D>::drift(double dt) {
+  update_constants();
+  Field& position = state_.gas.position;
+  const Field& momentum = state_.gas.momentum;
+  const fixedpoint::Scale& x_scale = position.info().scale;
+  const fixedpoint::Scale& m_scale = momentum.info().scale;
+  FaultRecorder faults;
+  // x += round(dt M / m): dt (-M) / m is -(dt M / m) bit for bit, so the drift is odd in M.
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < position.count(); ++i) {
+    for (int k = 0; k < D; ++k) {
+      const double velocity = fixedpoint::to_real(momentum.at(k, i), m_scale) / mass_[i];
+      if (!FixedArithmetic::try_increment(position.at(k, i), dt * velocity, x_scale)) {
+        faults.record(i, "gas", "position", "overflow or non-finite value in a drift");
+      }
+    }
+  }
+  faults.throw_if_any();
+  geometry_valid_ = false;
+}
+
+template <int D>
+void Model<D>::reverse_time() {
+  apply_time_reversal<FixedArithmetic>(state_);
+}
+
+template <int D>
+typename Model<D>::Thermodynamics Model<D>::thermodynamics() {
+  update_geometry();
+  const std::span<const std::uint32_t> slots = layout_.slots_of_set(gas_set);
+  Thermodynamics values;
+  for (const std::uint32_t s : slots) {
+    values.density.push_back(density_[s]);
+    values.entropy_density.push_back(entropy_density_[s]);
+    values.volume.push_back(volume_[s]);
+    values.pressure.push_back(pressure_[s]);
+    values.temperature.push_back(temperature_[s]);
+    values.specific_energy.push_back(specific_energy_[s]);
+  }
+  return values;
+}
+
+template <int D>
+EnergyBudget Model<D>::energy() {
+  const Thermodynamics values = thermodynamics();
+  const Field& momentum = state_.gas.momentum;
+  const Field& position = state_.gas.position;
+  // Serial sums in particle order: the same value for any thread count.
+  double kinetic = 0.0;
+  double internal = 0.0;
+  double gravitational = 0.0;
+  for (std::size_t i = 0; i < gas_count(); ++i) {
+    double m_squared = 0.0;
+    for (int k = 0; k < D; ++k) {
+      const double p = fixedpoint::to_real(momentum.at(k, i), momentum.info().scale);
+      m_squared += p * p;
+    }
+    kinetic += 0.5 * m_squared / mass_[i];
+    internal += mass_[i] * values.specific_energy[i]; // V_a eps_a = m_a u_a, eq. (20)
+    const double height = fixedpoint::to_real(position.at(D - 1, i), position.info().scale);
+    gravitational +=
+        mass_[i] * parameters_.gravity * (height - parameters_.gravity_reference_height);
+  }
+  PairSums<FloatArithmetic, 1> wall_sums(SummedQuantity{"wall_energy", fixedpoint::Scale()});
+  sum_cross_pairs<FloatArithmetic>(layout_,
+                                   WallEnergyTerm<D>{slot_mass_, {}, parameters_.wall_potential()},
+                                   wall_sums, walls_.cross_pairs());
+  double wall = 0.0;
+  for (const std::uint32_t s : layout_.slots_of_set(gas_set)) {
+    wall += wall_sums.value(0, s);
+  }
+  return EnergyBudget{{{"kinetic", kinetic},
+                       {"internal", internal},
+                       {"gravitational", gravitational},
+                       {"wall", wall}}};
+}
+
+template <int D>
+void Model<D>::derived_views(const ViewSink& sink) {
+  Thermodynamics values = thermodynamics();
+  sink(ParticleView{"gas", "density", "kg/m^3", 1, std::move(values.density)});
+  sink(ParticleView{"gas", "entropy_density", "J/(K m^3)", 1, std::move(values.entropy_density)});
+  sink(ParticleView{"gas", "volume", D == 1 ? "m" : (D == 2 ? "m^2" : "m^3"), 1,
+                    std::move(values.volume)});
+  sink(ParticleView{"gas", "pressure", "Pa", 1, std::move(values.pressure)});
+  sink(ParticleView{"gas", "temperature", "K", 1, std::move(values.temperature)});
+  const Field& momentum = state_.gas.momentum;
+  std::vector<double> velocity(static_cast<std::size_t>(D) * gas_count());
+  for (int k = 0; k < D; ++k) {
+    for (std::size_t i = 0; i < gas_count(); ++i) {
+      velocity[static_cast<std::size_t>(k) * gas_count() + i] =
+          fixedpoint::to_real(momentum.at(k, i), momentum.info().scale) / mass_[i];
+    }
+  }
+  sink(ParticleView{"gas", "velocity", "m/s", D, std::move(velocity)});
+}
+
+template <int D>
+std::vector<EnergyTerm> Model<D>::diagnostics() {
+  // The total momentum, summed exactly in integers: internal forces leave it unchanged bit for
+  // bit, so what changes it is walls and gravity alone.
+  static constexpr const char* names[] = {"momentum_x", "momentum_y", "momentum_z"};
+  const Field& momentum = state_.gas.momentum;
+  std::vector<EnergyTerm> terms;
+  for (int k = 0; k < D; ++k) {
+    fixedpoint::int128 total = 0;
+    for (const std::int64_t raw : momentum.component(k)) {
+      total += raw;
+    }
+    terms.push_back(
+        {names[k], static_cast<double>(total) * fixedpoint::to_real(1, momentum.info().scale)});
+  }
+  return terms;
+}
+
+template class Model<1>;
+template class Model<2>;
+template class Model<3>;
+
+} // namespace revsph::entropic

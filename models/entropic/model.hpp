@@ -1,0 +1,102 @@
+#pragma once
+// Entropic SPH (paper 4: Pavelka, Klika, Kincl 2024) in fixed point, the reversible part:
+//   kick(dt/2)  M_a += sum_b round(dt/2 f_ab) + round(dt/2 (wall and gravity forces on a))
+//   drift(dt)   x_a += round(dt M_a / m_a)
+//   kick(dt/2)
+// with f_ab = -Phi_ab W'_ab e_ab the pair force of the chosen particle volume (pair_terms.hpp).
+// Each pair impulse is rounded once and added to a and, negated, to b: the total momentum of
+// the gas changes only by what walls and gravity give, bit for bit. The kick depends on the
+// positions and the (even) entropies only, so the palindrome is bitwise reversible (design note
+// §2, §4). Density, entropy density and volume are recomputed from the positions every step
+// (the paper's symplectic form, §2.4).
+
+#include "core/energy.hpp"
+#include "core/fixed_targets.hpp"
+#include "core/kernel_wendland.hpp"
+#include "core/pair_sum.hpp"
+#include "core/particle_view.hpp"
+#include "core/simulation.hpp"
+#include "core/slot_layout.hpp"
+#include "core/step_composition.hpp"
+#include "models/entropic/parameters.hpp"
+#include "models/entropic/state.hpp"
+
+#include <array>
+#include <span>
+#include <vector>
+
+namespace revsph::entropic {
+
+template <int D>
+class Model {
+public:
+  // `state` holds positions, momenta, entropies, masses and wall positions with their scales.
+  Model(Parameters<D> parameters, SimulationInfo info, State<D> state);
+
+  static std::span<const Substep<Model>> palindrome();
+
+  State<D>& state() { return state_; }
+  const SimulationInfo& info() const { return info_; }
+  const Parameters<D>& parameters() const { return parameters_; }
+  // Kinetic, internal (sum_a V_a eps(rho_a, s_a), eq. 20), wall (eq. 7 of paper 1) and
+  // gravitational energy.
+  EnergyBudget energy();
+  // Density, entropy density, volume, pressure, temperature and velocity per gas particle.
+  void derived_views(const ViewSink& sink);
+  // Total momentum of the gas, per axis (exact in integers up to walls and gravity).
+  std::vector<EnergyTerm> diagnostics();
+  void invalidate_derived() {
+    constants_valid_ = false;
+    geometry_valid_ = false;
+  }
+  void reverse_time();
+
+  void kick(double dt);
+  void drift(double dt);
+
+  // Per gas particle, canonical order, at the current positions (for tests and outputs).
+  struct Thermodynamics {
+    std::vector<double> density, entropy_density, volume, pressure, temperature, specific_energy;
+  };
+  Thermodynamics thermodynamics();
+
+private:
+  static void kick_substep(Model& model, double dt) { model.kick(dt); }
+  static void drift_substep(Model& model, double dt) { model.drift(dt); }
+  std::size_t gas_count() const { return state_.gas.position.count(); }
+  void update_constants();
+  // Layout, kernel sums, volumes and the per-slot thermodynamics of the current positions.
+  void update_geometry();
+  // The exact impulse sums of a kick over dt (cached: the two half kicks around a step boundary
+  // see the same positions).
+  void update_impulses(double dt);
+
+  Parameters<D> parameters_;
+  SimulationInfo info_;
+  State<D> state_;
+  WendlandQuintic<D> kernel_;
+
+  bool constants_valid_ = false;
+  std::vector<double> mass_;    // gas, canonical order
+  std::vector<double> entropy_; // gas, canonical order
+  bool geometry_valid_ = false;
+  SlotLayout<D> layout_; // carriers: the gas
+  FixedTargets<D> walls_;
+  std::vector<double> slot_mass_, slot_entropy_;
+  PairSums<FixedArithmetic, 1> density_sums_; // sum_b m_b W_ab (eq. 32a)
+  // Per slot: density, entropy density, volume, the thermodynamic state, and the coefficients
+  // of the volume's pair force Phi_ab = alpha_a beta_b + alpha_b beta_a (+ gamma_a delta_b +
+  // gamma_b delta_a for the mixed volume), pair_terms.hpp.
+  std::vector<double> density_, entropy_density_, volume_, pressure_, temperature_,
+      specific_energy_;
+  std::vector<double> alpha_, beta_, gamma_, delta_;
+  double impulse_dt_ = 0.0;
+  bool impulses_valid_ = false;
+  PairSums<FixedArithmetic, D> impulse_sums_;
+};
+
+extern template class Model<1>;
+extern template class Model<2>;
+extern template class Model<3>;
+
+} // namespace revsph::entropic

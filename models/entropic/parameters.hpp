@@ -1,0 +1,62 @@
+#pragma once
+// Parameters of an entropic SPH case (paper 4), read from its case file. Every key read is
+// declared in case_keys() (revsph cases --keys entropic, docs/case-keys.md).
+
+#include "core/case_file.hpp"
+#include "core/case_keys.hpp"
+#include "core/geometry.hpp"
+#include "core/wall_potential.hpp"
+#include "fixedpoint/scale.hpp"
+#include "models/entropic/equation_of_state.hpp"
+
+#include <variant>
+
+namespace revsph::entropic {
+
+using GasLaw = std::variant<IdealGas, StiffenedGas>;
+
+// The particle volumes of §3.2 and §4 (eqs. 23-28).
+enum class ParticleVolume { mass, entropic, direct, implicit, mixed };
+
+template <int D>
+struct Parameters {
+  // [physics]
+  GasLaw gas_law = IdealGas{}; // App. C: ideal gas (88-89) or stiffened gas (90-92)
+  ParticleVolume volume = ParticleVolume::mass;
+  double gravity = 0.0;                  // g (m/s^2), along -axis D-1
+  double gravity_reference_height = 0.0; // height of zero gravitational potential (m)
+  // [initial]: the gas at rest, uniform
+  double initial_density = 0.0;  // rho (kg/m^3): the particle masses are rho dr^D
+  double initial_pressure = 0.0; // p (Pa): with rho, the specific entropy S / m of every particle
+  // [discretisation]
+  double dr = 0.0;               // particle spacing (m)
+  double support_radius = 0.0;   // kernel support radius h (m; the paper's h, §3.4)
+  double dt = 0.0;               // time step (s)
+  double cell_size_factor = 1.0; // neighbour-search cell size / search radius, >= 1
+  // [wall]: the conservative wall of paper 1 eq. (7)
+  double wall_radius = 0.0;
+  double wall_energy_per_mass = 0.0;
+  double wall_epsilon = 0.0;
+  Box<D> domain;
+  // [fixed_point]
+  fixedpoint::Scale position_scale;
+  fixedpoint::Scale momentum_scale; // momenta, and the pair impulses of the kick
+  fixedpoint::Scale entropy_scale;  // particle entropies S
+  fixedpoint::Scale density_scale;  // the kernel sums (density, entropy density, number density)
+
+  WallPotential wall_potential() const {
+    return {wall_radius * wall_radius + wall_epsilon * wall_epsilon, wall_epsilon * wall_epsilon,
+            wall_energy_per_mass};
+  }
+  // The sound speed of the initial state (m/s), the scale of the time step and of the momenta.
+  double initial_sound_speed() const;
+  // The specific entropy S / m of the initial state (J/(kg K)).
+  double initial_specific_entropy() const;
+};
+
+template <int D>
+Parameters<D> read_parameters(const CaseFile& case_file);
+
+const KeyTable& case_keys();
+
+} // namespace revsph::entropic

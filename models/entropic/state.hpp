@@ -1,0 +1,57 @@
+#pragma once
+// The state of an entropic SPH simulation (paper 4: Pavelka, Klika, Kincl 2024), declared once
+// (core/particle_sets.hpp). Fixed point only: the kick adds exact pair impulses to the momenta.
+//
+// What is integrated is what the paper's symplectic form integrates (§2.4, §4.1-4.5): positions
+// and momenta. Density, entropy density and volume are recomputed from the positions every step.
+// The particle entropy S is even under time reversal and constant in the reversible part; only
+// dissipation changes it (§5).
+
+#include "core/particle_sets.hpp"
+#include "core/state_field.hpp"
+
+#include <cstdint>
+#include <tuple>
+
+namespace revsph::entropic {
+
+using Field = StateField<std::int64_t>;
+
+template <int D>
+inline constexpr const char* mass_unit = D == 1 ? "kg/m^2" : (D == 2 ? "kg/m" : "kg");
+template <int D>
+inline constexpr const char* momentum_unit = D == 1 ? "kg/(m s)" : (D == 2 ? "kg/s" : "kg m/s");
+template <int D>
+inline constexpr const char* entropy_unit = D == 1 ? "J/(K m^2)" : (D == 2 ? "J/(K m)" : "J/K");
+
+// The gas: positions and momenta M = m v evolve (eq. 11); the particle entropy S (extensive, eq.
+// 21) and the mass are constants of the reversible motion.
+template <int D>
+struct Gas {
+  static constexpr SetInfo set{.name = "gas", .motion = Motion::moving};
+  Field position{{.name = "position", .unit = "m", .components = D}};
+  Field momentum{
+      {.name = "momentum", .unit = momentum_unit<D>, .parity = Parity::odd, .components = D}};
+  Field entropy{{.name = "entropy", .unit = entropy_unit<D>}};
+  Field mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
+  auto fields() { return std::tie(position, momentum, entropy, mass); }
+};
+
+// Wall particles of the conservative wall (paper 1 §3.3, eq. 7): fixed, only their positions.
+template <int D>
+struct Wall {
+  static constexpr SetInfo set{.name = "wall", .motion = Motion::fixed};
+  Field position{{.name = "position", .unit = "m", .components = D, .evolved = false}};
+  auto fields() { return std::tie(position); }
+};
+
+template <int D>
+struct State {
+  Gas<D> gas;
+  Wall<D> wall;
+
+  State() { declare_state(*this); }
+  auto sets() { return std::tie(gas, wall); }
+};
+
+} // namespace revsph::entropic
