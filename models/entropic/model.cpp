@@ -19,6 +19,21 @@ std::array<SummedQuantity, 1> density_quantity(const fixedpoint::Scale& scale) {
   return {SummedQuantity{"density", scale}};
 }
 
+// The scales of sum m W, sum S W and sum W: the initial density, entropy density and number
+// density 1 / dr^D, each resolved with 48 bits.
+template <int D>
+std::array<SummedQuantity, 3> kernel_sum_quantities(const Parameters<D>& parameters) {
+  const double heat_capacity =
+      std::visit([](const auto& law) { return law.heat_capacity; }, parameters.gas_law);
+  const double entropy_density =
+      parameters.initial_density *
+      std::max(std::abs(parameters.initial_specific_entropy()), heat_capacity);
+  return {SummedQuantity{"density", parameters.density_scale},
+          SummedQuantity{"entropy_density", fixedpoint::Scale::covering(entropy_density, 48)},
+          SummedQuantity{"number_density",
+                         fixedpoint::Scale::covering(std::pow(parameters.dr, -D), 48)}};
+}
+
 template <int D>
 std::array<SummedQuantity, D> impulse_quantities(const fixedpoint::Scale& scale) {
   std::array<SummedQuantity, D> quantities{};
@@ -39,6 +54,7 @@ Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state)
                  parameters_.cell_size_factor,
              state_.wall.position.count(), "wall"),
       density_sums_(density_quantity(parameters_.density_scale)),
+      kernel_sums_(kernel_sum_quantities(parameters_)),
       impulse_sums_(impulse_quantities<D>(parameters_.momentum_scale)) {}
 
 template <int D>
@@ -80,32 +96,94 @@ void Model<D>::update_geometry() {
                                       &temperature_, &specific_energy_, &alpha_, &beta_}) {
     values->resize(n);
   }
-  // Per slot, as soon as its density is summed: the mass volume (eq. 23), the entropy density
-  // (32b) and the equation of state (App. C), then the coefficients of the pair force (34c).
+  const bool mixed = parameters_.volume == ParticleVolume::mixed;
+  gamma_.resize(mixed ? n : 0);
+  delta_.resize(mixed ? n : 0);
+  // Each slot's thermodynamics as soon as its kernel sums are final.
   FaultRecorder faults;
-  const auto thermodynamics_of = [&](std::uint32_t s) {
-    const double rho = density_sums_.value(0, s);
-    const double m = slot_mass_[s];
-    const double sigma = slot_entropy_[s] / m;
-    const ThermodynamicState st = std::visit(
-        [&](const auto& law) { return entropic::state(law, rho, sigma); }, parameters_.gas_law);
-    density_[s] = rho;
-    entropy_density_[s] = rho * sigma;
-    volume_[s] = m / rho;
-    pressure_[s] = st.pressure;
-    temperature_[s] = st.temperature;
-    specific_energy_[s] = st.specific_energy;
-    alpha_[s] = m * st.pressure / (rho * rho);
-    beta_[s] = m;
-    if (!(rho > 0.0) || !std::isfinite(alpha_[s])) {
-      layout_.record_fault(faults, s, "density", "density not positive or pressure not finite");
+  const auto per_slot = [&](std::uint32_t s) {
+    if (!update_slot(s)) {
+      layout_.record_fault(faults, s, "density",
+                           "volume, density or pressure not positive and finite");
     }
   };
-  sum_pairs<FixedArithmetic>(layout_, DensityTerm<D>{kernel_, slot_mass_}, density_sums_, {},
-                             thermodynamics_of);
+  if (parameters_.volume == ParticleVolume::mass) {
+    sum_pairs<FixedArithmetic>(layout_, DensityTerm<D>{kernel_, slot_mass_}, density_sums_, {},
+                               per_slot);
+  } else {
+    sum_pairs<FixedArithmetic>(layout_, KernelSumsTerm<D>{kernel_, slot_mass_, slot_entropy_},
+                               kernel_sums_, {}, per_slot);
+  }
   faults.throw_if_any();
   geometry_valid_ = true;
   impulses_valid_ = false;
+}
+
+template <int D>
+bool Model<D>::update_slot(std::uint32_t s) {
+  const double m = slot_mass_[s];
+  const double entropy = slot_entropy_[s];
+  double rho = 0.0;
+  double entropy_density = 0.0;
+  double volume = 0.0;
+  switch (parameters_.volume) {
+  case ParticleVolume::mass: // eqs. (23), (32)
+    rho = density_sums_.value(0, s);
+    volume = m / rho;
+    entropy_density = entropy / volume;
+    break;
+  case ParticleVolume::entropic: // eqs. (24), (36)
+    entropy_density = kernel_sums_.value(1, s);
+    volume = entropy / entropy_density;
+    rho = m / volume;
+    break;
+  case ParticleVolume::direct: // eqs. (25), (39)-(40)
+    volume = 1.0 / kernel_sums_.value(2, s);
+    rho = m / volume;
+    entropy_density = entropy / volume;
+    break;
+  case ParticleVolume::mixed: // eq. (28); the energy takes the mass volume (before eq. 47)
+    rho = kernel_sums_.value(0, s);
+    entropy_density = kernel_sums_.value(1, s);
+    volume = m / rho;
+    break;
+  case ParticleVolume::implicit:
+    return false; // not yet (setup refuses it)
+  }
+  const double sigma = entropy_density / rho;
+  const ThermodynamicState st = std::visit(
+      [&](const auto& law) { return entropic::state(law, rho, sigma); }, parameters_.gas_law);
+  density_[s] = rho;
+  entropy_density_[s] = entropy_density;
+  volume_[s] = volume;
+  pressure_[s] = st.pressure;
+  temperature_[s] = st.temperature;
+  specific_energy_[s] = st.specific_energy; // V rho = m in every volume: U_a = m_a u_a
+  // The pair-force coefficients, Phi_ab = alpha_a beta_b + alpha_b beta_a (+ gamma delta).
+  switch (parameters_.volume) {
+  case ParticleVolume::mass: // (34c)
+    alpha_[s] = m * st.pressure / (rho * rho);
+    beta_[s] = m;
+    break;
+  case ParticleVolume::entropic: // (38b)
+    alpha_[s] = entropy * st.pressure / (entropy_density * entropy_density);
+    beta_[s] = entropy;
+    break;
+  case ParticleVolume::direct: // (42c)
+    alpha_[s] = st.pressure * volume * volume;
+    beta_[s] = 1.0;
+    break;
+  case ParticleVolume::mixed: // (47c): A = dU/drho, B = dU/ds at fixed x
+    alpha_[s] = m * (st.pressure - entropy_density * st.temperature) / (rho * rho);
+    beta_[s] = m;
+    gamma_[s] = m * st.temperature / rho;
+    delta_[s] = entropy;
+    break;
+  case ParticleVolume::implicit:
+    break;
+  }
+  return rho > 0.0 && volume > 0.0 && std::isfinite(rho) && std::isfinite(alpha_[s]) &&
+         std::isfinite(st.pressure);
 }
 
 template <int D>
@@ -119,8 +197,8 @@ void Model<D>::update_impulses(double dt) {
                             slot_mass_,
                             alpha_,
                             beta_,
-                            {},
-                            {},
+                            gamma_,
+                            delta_,
                             parameters_.wall_potential(),
                             parameters_.gravity};
   sum_pairs<FixedArithmetic>(layout_, term, impulse_sums_, walls_.cross_pairs());

@@ -67,6 +67,9 @@ private:
   void update_constants();
   // Layout, kernel sums, volumes and the per-slot thermodynamics of the current positions.
   void update_geometry();
+  // Slot s's volume, densities, thermodynamic state and pair-force coefficients from its kernel
+  // sums (the chosen particle volume, §3.2 and §4); false if they are not physical.
+  bool update_slot(std::uint32_t s);
   // The exact impulse sums of a kick over dt (cached: the two half kicks around a step boundary
   // see the same positions).
   void update_impulses(double dt);
@@ -83,7 +86,8 @@ private:
   SlotLayout<D> layout_; // carriers: the gas
   FixedTargets<D> walls_;
   std::vector<double> slot_mass_, slot_entropy_;
-  PairSums<FixedArithmetic, 1> density_sums_; // sum_b m_b W_ab (eq. 32a)
+  PairSums<FixedArithmetic, 1> density_sums_; // sum_b m_b W_ab (eq. 32a): the mass volume
+  PairSums<FixedArithmetic, 3> kernel_sums_;  // sum m W, sum S W, sum W: the other volumes
   // Per slot: density, entropy density, volume, the thermodynamic state, and the coefficients
   // of the volume's pair force Phi_ab = alpha_a beta_b + alpha_b beta_a (+ gamma_a delta_b +
   // gamma_b delta_a for the mixed volume), pair_terms.hpp.

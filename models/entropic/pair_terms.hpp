@@ -32,6 +32,30 @@ struct DensityTerm {
   }
 };
 
+// The three kernel sums the other particle volumes need (the sums include b = a):
+//   sum_b m_b W_ab (28a, 32a), sum_b S_b W_ab (28b, 36a), sum_b W_ab (39).
+template <int D>
+struct KernelSumsTerm {
+  static constexpr int width = 3;
+  const WendlandQuintic<D>& kernel;
+  std::span<const double> mass;
+  std::span<const double> entropy;
+
+  void pair(const PairGeometry<D>& p, std::array<double, 3>& to_a,
+            std::array<double, 3>& to_b) const {
+    const double w = kernel.value(p.r);
+    to_a = {mass[p.b] * w, entropy[p.b] * w, w};
+    to_b = {mass[p.a] * w, entropy[p.a] * w, w};
+  }
+  template <class Add>
+  void self(std::uint32_t s, Add& add) const {
+    const double w = kernel.value(0.0);
+    add(0, mass[s] * w);
+    add(1, entropy[s] * w);
+    add(2, w);
+  }
+};
+
 // The momentum a kick of length dt gives, in pair impulses. Every particle volume's reversible
 // force is a pair sum f_ab = -Phi_ab W'_ab e_ab with Phi_ab = Phi_ba (digest of §4):
 //   mass     (34c)  Phi = m_a m_b (p_a / rho_a^2 + p_b / rho_b^2):  alpha = m p / rho^2, beta = m
