@@ -1,0 +1,300 @@
+#include "models/entropic/parameters.hpp"
+
+#include "core/case_values.hpp"
+#include "core/particle_blocks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <variant>
+
+namespace revsph::entropic {
+
+namespace {
+
+// Both laws have p = (gamma-1) rho c_V T - B and u = c_V T + B / rho (B = 0 for the ideal gas,
+// equation_of_state.hpp), so the specific energy of (rho, p) is (p + B) / ((gamma-1) rho) + B / rho
+// and sigma follows from the inverse of u(rho, sigma). Nothing when p + B <= 0 (no temperature
+// reaches that pressure) or a value overflows.
+std::optional<double> specific_entropy_for_pressure(const GasLaw& gas_law, double density,
+                                                    double pressure) {
+  return std::visit(
+      [&](const auto& law) -> std::optional<double> {
+        double stiffening = 0.0;
+        if constexpr (std::is_same_v<std::decay_t<decltype(law)>, StiffenedGas>) {
+          stiffening = stiffening_pressure(law);
+        }
+        const double thermal = (pressure + stiffening) / ((law.gamma - 1.0) * density); // c_V T
+        if (!(thermal > 0.0) || !std::isfinite(thermal)) {
+          return std::nullopt;
+        }
+        return specific_entropy_for_energy(law, density, thermal + stiffening / density);
+      },
+      gas_law);
+}
+
+double heat_capacity(const GasLaw& gas_law) {
+  return std::visit([](const auto& law) { return law.heat_capacity; }, gas_law);
+}
+
+// constants_error() names the constant first ("gamma must be > 1 (got 0.5)",
+// "rest_density * sound_speed^2 must be finite ..."): that name is the key under [physics].
+template <class Law>
+void check_constants(const CaseFile& case_file, const Law& law) {
+  if (const std::optional<std::string> error = constants_error(law)) {
+    const std::size_t end = error->find_first_not_of("abcdefghijklmnopqrstuvwxyz_");
+    case_file.fail("physics." + error->substr(0, end), *error);
+  }
+}
+
+constexpr const char* stiffened_only[] = {"physics.rest_density", "physics.reference_pressure",
+                                          "physics.sound_speed"};
+
+GasLaw read_gas_law(const CaseFile& case_file) {
+  const std::string name = case_file.string("physics.equation_of_state");
+  const double gamma = case_file.number("physics.gamma");
+  const double heat_capacity = case_file.number("physics.heat_capacity");
+  if (name == "ideal_gas") {
+    for (const char* key : stiffened_only) {
+      if (case_file.has(key)) {
+        case_file.fail(key, "only for equation_of_state = \"stiffened_gas\" (the ideal gas of "
+                            "eq. 88 has no reference state)");
+      }
+    }
+    const IdealGas law{gamma, heat_capacity};
+    check_constants(case_file, law);
+    return law;
+  }
+  if (name == "stiffened_gas") {
+    const StiffenedGas law{gamma, heat_capacity, case_file.number("physics.rest_density"),
+                           case_file.number("physics.reference_pressure"),
+                           case_file.number("physics.sound_speed")};
+    check_constants(case_file, law);
+    return law;
+  }
+  case_file.fail("physics.equation_of_state",
+                 "expected \"ideal_gas\" or \"stiffened_gas\", got \"" + name + "\"");
+}
+
+ParticleVolume read_volume(const CaseFile& case_file) {
+  const std::string name = case_file.string_or("physics.particle_volume", "mass");
+  if (name == "mass") {
+    return ParticleVolume::mass;
+  }
+  if (name == "entropic") {
+    return ParticleVolume::entropic;
+  }
+  if (name == "direct") {
+    return ParticleVolume::direct;
+  }
+  if (name == "mixed") {
+    return ParticleVolume::mixed;
+  }
+  if (name == "implicit") {
+    case_file.fail(
+        "physics.particle_volume",
+        "\"implicit\" is not implemented yet (mass, entropic, direct and mixed, so far)");
+  }
+  case_file.fail("physics.particle_volume",
+                 "expected \"mass\", \"entropic\", \"direct\", \"implicit\" or \"mixed\", got \"" +
+                     name + "\"");
+}
+
+} // namespace
+
+template <int D>
+double Parameters<D>::initial_specific_entropy() const {
+  const std::optional<double> sigma =
+      specific_entropy_for_pressure(gas_law, initial_density, initial_pressure);
+  if (!sigma) {
+    throw std::invalid_argument("entropic SPH: no specific entropy gives the initial pressure at "
+                                "the initial density");
+  }
+  return *sigma;
+}
+
+template <int D>
+double Parameters<D>::initial_sound_speed() const {
+  const double sigma = initial_specific_entropy();
+  return std::sqrt(std::visit(
+      [&](const auto& law) { return state(law, initial_density, sigma).sound_speed_squared; },
+      gas_law));
+}
+
+template <int D>
+Parameters<D> read_parameters(const CaseFile& case_file) {
+  Parameters<D> p;
+  p.gas_law = read_gas_law(case_file);
+  p.volume = read_volume(case_file);
+  p.gravity = case_file.number_or("physics.gravity", 0.0);
+  p.gravity_reference_height = case_file.number_or("physics.gravity_reference_height", 0.0);
+
+  p.initial_density = case_file.positive_number("initial.density");
+  p.initial_pressure = case_file.positive_number("initial.pressure");
+  if (!specific_entropy_for_pressure(p.gas_law, p.initial_density, p.initial_pressure)) {
+    if (const auto* law = std::get_if<StiffenedGas>(&p.gas_law)) {
+      case_file.fail("initial.pressure",
+                     "no temperature gives this pressure at initial.density: p + B must be > 0, "
+                     "B = (rho0 c0^2 - gamma p0) / gamma = " +
+                         format_scientific(stiffening_pressure(*law), 3) +
+                         " (eq. 92), and the specific entropy finite");
+    }
+    case_file.fail("initial.pressure",
+                   "the specific entropy of this pressure at initial.density is not finite");
+  }
+  // The entropic volume V = S / s (eq. 24) needs S > 0 for every particle (§2.2; the paper's
+  // conclusion: it is "sensitive to negative particle entropies").
+  if (p.volume == ParticleVolume::entropic && !(p.initial_specific_entropy() > 0.0)) {
+    case_file.fail("physics.particle_volume",
+                   "the entropic volume V = S / s needs positive particle entropies, but the "
+                   "initial specific entropy is " +
+                       format_scientific(p.initial_specific_entropy(), 3) +
+                       " (raise initial.pressure at this initial.density)");
+  }
+  const double sound_speed = p.initial_sound_speed();
+  require_positive_finite(case_file, "initial.pressure", "the initial sound speed c", sound_speed);
+
+  p.dr = case_file.positive_number("discretisation.dr");
+  p.support_radius = p.dr * case_file.positive_number("discretisation.support_radius_over_dr");
+  const bool has_courant = case_file.has("discretisation.courant_number");
+  const bool has_dt = case_file.has("discretisation.dt");
+  if (has_courant == has_dt) {
+    case_file.fail("discretisation.dt",
+                   has_dt ? "give either dt or courant_number, not both"
+                          : "missing required key (or give discretisation.courant_number, "
+                            "dt = courant_number * h / c)");
+  }
+  p.dt = has_dt ? case_file.positive_number("discretisation.dt")
+                : case_file.positive_number("discretisation.courant_number") * p.support_radius /
+                      sound_speed;
+  p.cell_size_factor = case_file.number_or("discretisation.cell_size_factor", 1.0);
+  if (!(p.cell_size_factor >= 1.0 && p.cell_size_factor <= 100.0)) {
+    case_file.fail("discretisation.cell_size_factor", "must be between 1 and 100");
+  }
+  require_positive_finite(case_file, "discretisation.support_radius_over_dr",
+                          "the support radius h = dr * support_radius_over_dr", p.support_radius);
+  require_positive_finite(case_file, has_dt ? "discretisation.dt" : "discretisation.courant_number",
+                          "the time step dt", p.dt);
+  require_positive_finite(case_file, "discretisation.cell_size_factor",
+                          "the search cell size h * cell_size_factor",
+                          p.support_radius * p.cell_size_factor);
+
+  p.wall_radius = p.dr * case_file.number_or("wall.radius_over_dr", 0.95);
+  p.wall_energy_per_mass = case_file.number_or("wall.energy_per_mass", 0.0);
+  p.wall_epsilon = case_file.number_or("wall.epsilon", 1e-6);
+  if (!(p.wall_radius > 0.0)) {
+    case_file.fail("wall.radius_over_dr", "must be > 0");
+  }
+  require_positive_finite(case_file, "wall.radius_over_dr",
+                          "the wall search cell size dr * radius_over_dr * cell_size_factor",
+                          p.wall_radius * p.cell_size_factor);
+  if (!(p.wall_energy_per_mass >= 0.0)) {
+    case_file.fail("wall.energy_per_mass", "must be >= 0");
+  }
+  if (!(p.wall_epsilon >= 0.0)) {
+    case_file.fail("wall.epsilon", "must be >= 0");
+  }
+
+  p.domain = read_domain<D>(case_file);
+
+  // Default scales: positions keep 52 fraction bits below the domain size, so the double view of
+  // a position is exact; momenta resolve m c * 2^-50 and entropies max(|m sigma0|, m c_V) * 2^-48
+  // for the particle mass m = rho dr^D; kernel sums resolve rho * 2^-48.
+  const double mass = p.initial_density * std::pow(p.dr, D);
+  const double entropy_magnitude =
+      std::max(std::abs(mass * p.initial_specific_entropy()), mass * heat_capacity(p.gas_law));
+  p.position_scale =
+      scale_or(case_file, "fixed_point.position_exponent", p.domain.max_abs_coordinate(), 52);
+  p.momentum_scale = scale_or(case_file, "fixed_point.momentum_exponent", mass * sound_speed, 50);
+  p.entropy_scale = scale_or(case_file, "fixed_point.entropy_exponent", entropy_magnitude, 48);
+  p.density_scale = scale_or(case_file, "fixed_point.density_exponent", p.initial_density, 48);
+  return p;
+}
+
+const KeyTable& case_keys() {
+  static const KeyTable table = [] {
+    using T = KeyType;
+    KeyTable t("entropic");
+    t.add({"dimension", T::integer, "-", "required", "1, 2 or 3"});
+    t.add({"physics.equation_of_state",
+           T::string,
+           "-",
+           "required",
+           "the gas law of App. C: the ideal gas (eqs. 88-89, sigma = 0 at p = rho^gamma) or the "
+           "stiffened gas (eqs. 90-92, sigma = 0 at rho0, p0)",
+           {"ideal_gas", "stiffened_gas"}});
+    t.add({"physics.gamma", T::number, "1", "required", "adiabatic index c_P / c_V; > 1"});
+    t.add({"physics.heat_capacity", T::number, "J/(kg K)", "required",
+           "specific heat at constant volume c_V; > 0"});
+    t.add({"physics.rest_density", T::number, "kg/m^3", "required for the stiffened gas",
+           "reference density rho0 of the stiffened gas; > 0 (not for the ideal gas)"});
+    t.add({"physics.reference_pressure", T::number, "Pa", "required for the stiffened gas",
+           "pressure p0 of the stiffened gas at rho0 and sigma = 0 (not for the ideal gas)"});
+    t.add({"physics.sound_speed", T::number, "m/s", "required for the stiffened gas",
+           "sound speed c0 of the stiffened gas at rho0 and sigma = 0; > 0 (not for the ideal "
+           "gas)"});
+    t.add({"physics.particle_volume",
+           T::string,
+           "-",
+           "\"mass\"",
+           "the particle volume of §3.2: mass V = m / rho (eq. 23), entropic V = S / s (eq. 24; "
+           "needs S > 0), direct V = 1 / sum W (eq. 25), implicit (eq. 26; not implemented yet) "
+           "or mixed (eq. 28)",
+           {"mass", "entropic", "direct", "implicit", "mixed"}});
+    t.add({"physics.gravity", T::number, "m/s^2", "0",
+           "gravitational acceleration g, along minus the last axis"});
+    t.add({"physics.gravity_reference_height", T::number, "m", "0",
+           "height of zero gravitational potential (shifts the reported energy only)"});
+    t.add({"initial.density", T::number, "kg/m^3", "required",
+           "density rho of the gas at rest: particle masses are rho times the lattice cell "
+           "volume; > 0"});
+    t.add({"initial.pressure", T::number, "Pa", "required",
+           "pressure p of the gas at rest: with rho it gives every particle's entropy "
+           "S = m sigma(rho, p); > 0"});
+    t.add({"discretisation.dr", T::number, "m", "required", "particle spacing; > 0"});
+    t.add({"discretisation.support_radius_over_dr", T::number, "1", "required",
+           "kernel support radius h in units of dr (the paper's h, §3.4: h = 3 dr)"});
+    t.add({"discretisation.dt", T::number, "s", "required (or courant_number)",
+           "time step; give dt or courant_number, not both"});
+    t.add({"discretisation.courant_number", T::number, "1", "none (or dt)",
+           "time step as a fraction of h / c: dt = courant_number * h / c, c the sound speed of "
+           "the initial state"});
+    t.add({"discretisation.cell_size_factor", T::number, "1", "1",
+           "neighbour-search cell size over the search radius, 1 to 100"});
+    t.add({"wall.radius_over_dr", T::number, "1", "0.95",
+           "range r_wall of the wall potential (paper 1 eq. 7) in units of dr; > 0"});
+    t.add({"wall.energy_per_mass", T::number, "J/kg", "0",
+           "strength E_wall / m of the wall potential (paper 1 eq. 7); >= 0"});
+    t.add({"wall.epsilon", T::number, "m", "1e-6",
+           "regularisation eps of the wall potential (paper 1 eq. 7); >= 0"});
+    t.add(domain_case_keys());
+    t.add(particle_block_case_keys({"gas", "wall"}));
+    t.add({"fixed_point.position_exponent", T::integer, "-",
+           "covers the domain with 52 fraction bits",
+           "positions are stored as integers times 2^exponent"});
+    t.add({"fixed_point.momentum_exponent", T::integer, "-",
+           "covers m c with 50 fraction bits (m = rho dr^D, c the initial sound speed)",
+           "momenta (and the pair impulses of a kick) are stored as integers times 2^exponent"});
+    t.add({"fixed_point.entropy_exponent", T::integer, "-",
+           "covers max(|m sigma|, m c_V) with 48 fraction bits (m = rho dr^D, sigma the initial "
+           "specific entropy)",
+           "particle entropies are stored as integers times 2^exponent"});
+    t.add({"fixed_point.density_exponent", T::integer, "-",
+           "covers the initial density with 48 fraction bits",
+           "scale of the density sums rho_a = sum_b m_b W_ab (eq. 32a)"});
+    return t;
+  }();
+  return table;
+}
+
+template struct Parameters<1>;
+template struct Parameters<2>;
+template struct Parameters<3>;
+template Parameters<1> read_parameters<1>(const CaseFile&);
+template Parameters<2> read_parameters<2>(const CaseFile&);
+template Parameters<3> read_parameters<3>(const CaseFile&);
+
+} // namespace revsph::entropic

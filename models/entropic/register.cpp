@@ -1,0 +1,13 @@
+#include "core/model_registry.hpp"
+#include "models/entropic/parameters.hpp"
+#include "models/entropic/setup.hpp"
+
+namespace revsph {
+
+void register_model_entropic(ModelRegistry& registry) {
+  registry.add({"entropic",
+                "entropic SPH: particles that carry entropy (Pavelka, Klika, Kincl 2024)",
+                &entropic::create, &entropic::case_keys});
+}
+
+} // namespace revsph

@@ -1,0 +1,137 @@
+#include "models/entropic/setup.hpp"
+
+#include "core/case_values.hpp"
+#include "core/dimension.hpp"
+#include "core/particle_blocks.hpp"
+#include "core/run_settings.hpp"
+#include "fixedpoint/conversion.hpp"
+#include "models/entropic/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+namespace revsph::entropic {
+
+namespace {
+
+constexpr std::string_view particle_kinds[] = {"gas", "wall"};
+// Memory per particle, generously: state (~(2 D + 2) * 8 B), slot copies, a dozen per-slot
+// arrays (density, volume, thermodynamic state, force coefficients), the kernel and impulse sums
+// and the cell list ~400 B, plus 4 B per neighbour in the lists and as much again while they are
+// built (as models/wcsph/setup.cpp).
+double bytes_per_particle(int dimension, double support_radius_over_dr) {
+  const double r = support_radius_over_dr;
+  const double neighbours = dimension == 1   ? 2.0 * r
+                            : dimension == 2 ? std::numbers::pi * r * r
+                                             : 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  return 400.0 + 8.0 * neighbours;
+}
+// Masses are constants of the setup; 52 bits keep their double view exact.
+constexpr int mass_fraction_bits = 52;
+
+template <int D>
+void fill_vectors(const CaseFile& case_file, const std::vector<Vec<D>>& values,
+                  StateField<std::int64_t>& field, const char* what) {
+  field.resize(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    for (int k = 0; k < D; ++k) {
+      if (!fixedpoint::try_to_fixed(values[i][k], field.info().scale, field.at(k, i))) {
+        case_file.fail("particles", std::string("a particle ") + what +
+                                        " does not fit its fixed-point scale (see [fixed_point])");
+      }
+    }
+  }
+}
+
+void fill_scalars(const CaseFile& case_file, const char* key, const std::vector<double>& values,
+                  StateField<std::int64_t>& field, const char* what) {
+  field.resize(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (!fixedpoint::try_to_fixed(values[i], field.info().scale, field.at(0, i))) {
+      case_file.fail(key,
+                     std::string("a particle ") + what + " does not fit its fixed-point scale");
+    }
+  }
+}
+
+std::string scientific(double value) {
+  return format_scientific(value, 6);
+}
+
+template <int D>
+std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const SimulationOptions& options) {
+  const Parameters<D> parameters = read_parameters<D>(case_file);
+  const auto blocks =
+      read_particle_blocks<D>(case_file, parameters.dr, parameters.domain, particle_kinds,
+                              {bytes_per_particle(D, parameters.support_radius / parameters.dr),
+                               options.memory_budget_bytes});
+  // Gas particles in block order, at rest, each with the mass rho times its lattice cell volume
+  // and the entropy S = m sigma of the initial state (eq. 21 with uniform sigma).
+  const double specific_entropy = parameters.initial_specific_entropy();
+  std::vector<Vec<D>> gas_positions, wall_positions;
+  std::vector<double> gas_masses, gas_entropies;
+  for (const auto& block : blocks) {
+    if (block.kind == "wall") {
+      wall_positions.insert(wall_positions.end(), block.positions.begin(), block.positions.end());
+      continue;
+    }
+    const double mass = parameters.initial_density * block.volume_per_particle;
+    gas_positions.insert(gas_positions.end(), block.positions.begin(), block.positions.end());
+    gas_masses.insert(gas_masses.end(), block.positions.size(), mass);
+    gas_entropies.insert(gas_entropies.end(), block.positions.size(), mass * specific_entropy);
+  }
+  if (gas_positions.empty()) {
+    case_file.fail("particles", "the case has no gas particles");
+  }
+  const double largest_mass = *std::max_element(gas_masses.begin(), gas_masses.end());
+  // initial.density * lattice cell volume can overflow or underflow even when both are valid.
+  if (!(largest_mass > 0.0) || !std::isfinite(largest_mass)) {
+    std::ostringstream reason;
+    reason << "the particle mass initial.density * (lattice cell volume) is " << largest_mass
+           << ": it must be positive and finite";
+    case_file.fail("initial.density", reason.str());
+  }
+
+  State<D> state;
+  state.gas.position.set_scale(parameters.position_scale);
+  state.gas.momentum.set_scale(parameters.momentum_scale);
+  state.gas.entropy.set_scale(parameters.entropy_scale);
+  state.gas.mass.set_scale(fixedpoint::Scale::covering(largest_mass, mass_fraction_bits));
+  state.wall.position.set_scale(parameters.position_scale);
+  fill_vectors<D>(case_file, gas_positions, state.gas.position, "position");
+  state.gas.momentum.resize(gas_positions.size()); // at rest
+  fill_scalars(case_file, "fixed_point.entropy_exponent", gas_entropies, state.gas.entropy,
+               "entropy");
+  fill_scalars(case_file, "initial.density", gas_masses, state.gas.mass, "mass");
+  fill_vectors<D>(case_file, wall_positions, state.wall.position, "position");
+
+  SimulationInfo info;
+  info.case_name = case_name(case_file);
+  info.model = "entropic";
+  info.dimension = D;
+  info.arithmetic = Arithmetic::fixed;
+  info.dt = parameters.dt;
+  info.setup_report.emplace_back("dt", scientific(parameters.dt));
+  info.setup_report.emplace_back("initial_sound_speed",
+                                 scientific(parameters.initial_sound_speed()));
+  info.setup_report.emplace_back("initial_specific_entropy", scientific(specific_entropy));
+  Model<D> model(parameters, std::move(info), std::move(state));
+  return std::make_unique<ModelSimulation<Model<D>>>(std::move(model));
+}
+
+} // namespace
+
+std::unique_ptr<Simulation> create(const CaseFile& case_file, const SimulationOptions& options) {
+  if (options.arithmetic != Arithmetic::fixed) {
+    throw std::invalid_argument(
+        "entropic SPH runs in fixed point only: its kick adds exact pair impulses to integer "
+        "momenta (models/entropic/model.hpp)");
+  }
+  return with_dimension<1, 2, 3>(case_file,
+                                 [&]<int D>() { return create_in<D>(case_file, options); });
+}
+
+} // namespace revsph::entropic
