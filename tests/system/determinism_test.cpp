@@ -56,7 +56,8 @@ INSTANTIATE_TEST_SUITE_P(BothModels, Determinism,
                                            DeterminismCase{"dambreak-3d-small", 15},
                                            DeterminismCase{"beryllium-plate-small", 40},
                                            DeterminismCase{"cavity-re100-small", 25},
-                                           DeterminismCase{"twisting-column-small", 8}),
+                                           DeterminismCase{"twisting-column-small", 8},
+                                           DeterminismCase{"expansion-small", 300}),
                          [](const ::testing::TestParamInfo<DeterminismCase>& info) {
                            std::string name = info.param.name;
                            std::replace(name.begin(), name.end(), '-', '_');
