@@ -676,7 +676,8 @@ struct FuzzSettings {
   std::string coarse_from; // a line of the built-in case ...
   std::string coarse_to;   // ... replaced to make it cheap
   std::uint64_t default_mutants = 0;
-  std::uint64_t seed_offset = 0; // a different stream per test
+  std::uint64_t seed_offset = 0;  // a different stream per test
+  bool floating_point_too = true; // false for a model that runs in fixed point only
 };
 
 void fuzz(const FuzzSettings& settings) {
@@ -725,7 +726,9 @@ void fuzz(const FuzzSettings& settings) {
         overrides.items.push_back(mutator.random_override());
       }
     }
-    const Arithmetic arithmetic = mutator.chance(0.2) ? Arithmetic::floating : Arithmetic::fixed;
+    const Arithmetic arithmetic = settings.floating_point_too && mutator.chance(0.2)
+                                      ? Arithmetic::floating
+                                      : Arithmetic::fixed;
 
     std::ostringstream report;
     report << "seed " << seed << ", mutant " << m << " (" << to_string(arithmetic) << " arithmetic";
@@ -777,6 +780,11 @@ void fuzz(const FuzzSettings& settings) {
 TEST(CaseFuzz, MutantsOfDambreakSmall2D) {
   // dr 0.1: 200 fluid and about 150 wall particles.
   fuzz({"dambreak-small", "\ndr = 0.02", "\ndr = 0.1", 12000, 0});
+}
+
+TEST(CaseFuzz, MutantsOfExpansionSmall) {
+  // The entropic model (fixed point only); dr 0.1: 100 gas and about 130 wall particles.
+  fuzz({"expansion-small", "dr = 0.05", "dr = 0.1", 8000, 2, false});
 }
 
 TEST(CaseFuzz, MutantsOfDambreakSmall3D) {
