@@ -22,7 +22,9 @@
 #include "models/entropic/state.hpp"
 
 #include <array>
+#include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace revsph::entropic {
@@ -53,6 +55,12 @@ public:
 
   void kick(double dt);
   void drift(double dt);
+  // Heat conduction and viscosity over tau (§5.1-5.2): the viscous impulses change the momenta
+  // (pair by pair, exactly antisymmetric), and each particle's entropy grows by the heat it
+  // receives, conduction and the kinetic energy the viscosity removed, at fixed density: the
+  // total energy is kept up to rounding. Irreversible.
+  void dissipate(double tau);
+  static std::span<const StepHook<Model>> step_hooks();
 
   // Per gas particle, canonical order, at the current positions (for tests and outputs).
   struct Thermodynamics {
@@ -63,6 +71,13 @@ public:
 private:
   static void kick_substep(Model& model, double dt) { model.kick(dt); }
   static void drift_substep(Model& model, double dt) { model.drift(dt); }
+  // The dissipation as Strang half steps at the step's ends, or as one update after the step
+  // (parameters.hpp); each does nothing in the other splitting or without dissipation.
+  static void dissipation_substep(Model& model, double dt);
+  static void dissipation_hook(Model& model, std::int64_t step);
+  static std::string strang_dissipation(const Model& model);
+  static std::string first_order_dissipation(const Model& model);
+  std::string dissipation_description() const;
   std::size_t gas_count() const { return state_.gas.position.count(); }
   void update_constants();
   // Layout, kernel sums, volumes and the per-slot thermodynamics of the current positions.
@@ -94,6 +109,10 @@ private:
   std::vector<double> density_, entropy_density_, volume_, pressure_, temperature_,
       specific_energy_;
   std::vector<double> alpha_, beta_, gamma_, delta_;
+  // Scratch of the dissipation.
+  CoordinateArrays<D> slot_velocity_, slot_heat_flux_;
+  PairSums<FixedArithmetic, D> heat_flux_sums_;
+  PairSums<FixedArithmetic, D + 1> dissipation_sums_;
   double impulse_dt_ = 0.0;
   bool impulses_valid_ = false;
   PairSums<FixedArithmetic, D> impulse_sums_;

@@ -131,6 +131,24 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.volume = read_volume(case_file);
   p.gravity = case_file.number_or("physics.gravity", 0.0);
   p.gravity_reference_height = case_file.number_or("physics.gravity_reference_height", 0.0);
+  p.viscosity = case_file.number_or("physics.viscosity", 0.0);
+  if (!(p.viscosity >= 0.0) || !std::isfinite(p.viscosity)) {
+    case_file.fail("physics.viscosity",
+                   "must be >= 0 and finite (got " + format_scientific(p.viscosity, 3) + ")");
+  }
+  p.heat_conductivity = case_file.number_or("physics.heat_conductivity", 0.0);
+  if (!(p.heat_conductivity >= 0.0) || !std::isfinite(p.heat_conductivity)) {
+    case_file.fail("physics.heat_conductivity", "must be >= 0 and finite (got " +
+                                                    format_scientific(p.heat_conductivity, 3) +
+                                                    ")");
+  }
+  const std::string splitting = case_file.string_or("dissipation.splitting", "strang");
+  if (splitting == "first_order") {
+    p.splitting = DissipationSplitting::first_order;
+  } else if (splitting != "strang") {
+    case_file.fail("dissipation.splitting",
+                   "expected \"strang\" or \"first_order\", got \"" + splitting + "\"");
+  }
 
   p.initial_density = case_file.positive_number("initial.density");
   p.initial_pressure = case_file.positive_number("initial.pressure");
@@ -244,6 +262,19 @@ const KeyTable& case_keys() {
            "needs S > 0), direct V = 1 / sum W (eq. 25), implicit (eq. 26; not implemented yet) "
            "or mixed (eq. 28)",
            {"mass", "entropic", "direct", "implicit", "mixed"}});
+    t.add({"physics.viscosity", T::number, "Pa s", "0",
+           "shear viscosity mu of the viscous dissipation, paper 4 eq. (60); >= 0 (0: off)"});
+    t.add({"physics.heat_conductivity", T::number, "W/(m K^3)", "0",
+           "lambda_F of the Fourier heat conduction lambda(T) = lambda_F T^2, paper 4 eq. (51); "
+           ">= 0 (0: off)"});
+    t.add({"dissipation.splitting",
+           T::string,
+           "-",
+           "\"strang\"",
+           "where the dissipative update goes: \"strang\", half steps at both ends of the "
+           "reversible step (second order); \"first_order\", one full step after it (the "
+           "paper's)",
+           {"strang", "first_order"}});
     t.add({"physics.gravity", T::number, "m/s^2", "0",
            "gravitational acceleration g, along minus the last axis"});
     t.add({"physics.gravity_reference_height", T::number, "m", "0",

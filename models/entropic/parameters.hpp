@@ -18,6 +18,11 @@ using GasLaw = std::variant<IdealGas, StiffenedGas>;
 // The particle volumes of §3.2 and §4 (eqs. 23-28).
 enum class ParticleVolume { mass, entropic, direct, implicit, mixed };
 
+// Where the dissipative update of §5.1-5.2 goes in the step: half steps at both ends of the
+// reversible palindrome (Strang splitting, second order), or one full update after it (the
+// paper's first-order explicit update, kept for comparison).
+enum class DissipationSplitting { strang, first_order };
+
 template <int D>
 struct Parameters {
   // [physics]
@@ -25,6 +30,12 @@ struct Parameters {
   ParticleVolume volume = ParticleVolume::mass;
   double gravity = 0.0;                  // g (m/s^2), along -axis D-1
   double gravity_reference_height = 0.0; // height of zero gravitational potential (m)
+  // Dissipation (§5.1-5.2): shear viscosity mu of eq. (60) and the Fourier conductivity
+  // lambda(T) = lambda_F T^2 of eq. (51); 0: off.
+  double viscosity = 0.0;
+  double heat_conductivity = 0.0; // lambda_F
+  DissipationSplitting splitting = DissipationSplitting::strang;
+  bool dissipative() const { return viscosity > 0.0 || heat_conductivity > 0.0; }
   // [initial]: the gas at rest, uniform
   double initial_density = 0.0;  // rho (kg/m^3): the particle masses are rho dr^D
   double initial_pressure = 0.0; // p (Pa): with rho, the specific entropy S / m of every particle
@@ -42,7 +53,7 @@ struct Parameters {
   fixedpoint::Scale position_scale;
   fixedpoint::Scale momentum_scale; // momenta, and the pair impulses of the kick
   fixedpoint::Scale entropy_scale;  // particle entropies S
-  fixedpoint::Scale density_scale;  // the kernel sums (density, entropy density, number density)
+  fixedpoint::Scale density_scale;  // the density sums (sum m W)
 
   WallPotential wall_potential() const {
     return {wall_radius * wall_radius + wall_epsilon * wall_epsilon, wall_epsilon * wall_epsilon,
