@@ -1,11 +1,13 @@
 #include "models/entropic/model.hpp"
 
 #include "core/carrier_field.hpp"
+
 #include "core/case_values.hpp"
 #include "core/state_snapshot.hpp"
 #include "fixedpoint/exact_sum.hpp"
 #include "models/entropic/dissipation_terms.hpp"
 #include "models/entropic/pair_terms.hpp"
+#include <Eigen/IterativeLinearSolvers>
 
 #include <algorithm>
 #include <cmath>
@@ -211,7 +213,9 @@ void Model<D>::update_geometry() {
                            "volume, density or pressure not positive and finite");
     }
   };
-  if (parameters_.volume == ParticleVolume::mass) {
+  if (parameters_.volume == ParticleVolume::implicit) {
+    update_implicit_volume();
+  } else if (parameters_.volume == ParticleVolume::mass) {
     sum_pairs<FixedArithmetic>(layout_, DensityTerm<D>{kernel_, slot_mass_}, density_sums_, {},
                                per_slot);
   } else {
@@ -251,8 +255,11 @@ bool Model<D>::update_slot(std::uint32_t s) {
     entropy_density = kernel_sums_.value(1, s);
     volume = m / rho;
     break;
-  case ParticleVolume::implicit:
-    return false; // not yet (setup refuses it)
+  case ParticleVolume::implicit: // eqs. (26), (43): W V = 1 solved before (update_implicit_volume)
+    volume = implicit_volume_[layout_.carrier_of_slot()[s]];
+    rho = m / volume;
+    entropy_density = entropy / volume;
+    break;
   }
   const double sigma = entropy_density / rho;
   const ThermodynamicState st = std::visit(
@@ -283,11 +290,61 @@ bool Model<D>::update_slot(std::uint32_t s) {
     gamma_[s] = m * st.temperature / rho;
     delta_[s] = entropy;
     break;
-  case ParticleVolume::implicit:
+  case ParticleVolume::implicit: // (45b): alpha = y (W y = p), set by update_implicit_volume
+    alpha_[s] = 0.0;
+    beta_[s] = volume;
     break;
   }
   return rho > 0.0 && volume > 0.0 && std::isfinite(rho) && std::isfinite(alpha_[s]) &&
          std::isfinite(st.pressure);
+}
+
+template <int D>
+void Model<D>::update_implicit_volume() {
+  // W is symmetric positive definite for distinct points (Wendland functions are positive
+  // definite), so conjugate gradients apply (§4.4). A fixed zero start and a relative residual of
+  // 1e-12 make V and y functions of the positions alone; the tolerance enters the energy error
+  // (the force is the exact gradient only for exact solves).
+  fill_pair_matrix<D>(
+      layout_, [this](double r) { return kernel_.value(r); }, kernel_matrix_);
+  Eigen::ConjugateGradient<PairMatrix, Eigen::Lower | Eigen::Upper> solver;
+  solver.setTolerance(1e-12);
+  solver.setMaxIterations(5000);
+  solver.compute(kernel_matrix_);
+  const auto n = static_cast<Eigen::Index>(layout_.carrier_count());
+  implicit_volume_ = solver.solve(Eigen::VectorXd::Ones(n));
+  if (solver.info() != Eigen::Success) {
+    throw SimulationFault({"gas", 0, "volume",
+                           "the implicit volume's solve W V = 1 did not converge (residual " +
+                               format_scientific(solver.error(), 3) + ")"},
+                          -1);
+  }
+  FaultRecorder faults;
+  const std::size_t slots = layout_.slot_count();
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < slots; ++s) {
+    if (!update_slot(static_cast<std::uint32_t>(s))) {
+      layout_.record_fault(faults, s, "volume",
+                           "implicit volume, density or pressure not positive and finite (eq. "
+                           "26 gives negative volumes near free surfaces: paper 4, Fig. 8)");
+    }
+  }
+  faults.throw_if_any();
+  implicit_pressure_.resize(n);
+  const std::span<const std::uint32_t> carrier = layout_.carrier_of_slot();
+  for (std::size_t s = 0; s < slots; ++s) {
+    implicit_pressure_[carrier[s]] = pressure_[s];
+  }
+  implicit_y_ = solver.solve(implicit_pressure_); // (45): y = W^-1 p
+  if (solver.info() != Eigen::Success) {
+    throw SimulationFault({"gas", 0, "pressure",
+                           "the implicit volume's solve W y = p did not converge (residual " +
+                               format_scientific(solver.error(), 3) + ")"},
+                          -1);
+  }
+  for (std::size_t s = 0; s < slots; ++s) {
+    alpha_[s] = implicit_y_[carrier[s]];
+  }
 }
 
 template <int D>
@@ -509,6 +566,14 @@ std::vector<EnergyTerm> Model<D>::diagnostics() {
     }
     terms.push_back(
         {names[k], static_cast<double>(total) * fixedpoint::to_real(1, momentum.info().scale)});
+  }
+  if (parameters_.volume == ParticleVolume::implicit) {
+    // How well the volumes solve eq. (26): max_a |sum_b W_ab V_b - 1|.
+    update_geometry();
+    const Eigen::VectorXd residual =
+        kernel_matrix_ * implicit_volume_ -
+        Eigen::VectorXd::Ones(static_cast<Eigen::Index>(implicit_volume_.size()));
+    terms.push_back({"implicit_volume_residual", residual.cwiseAbs().maxCoeff()});
   }
   return terms;
 }

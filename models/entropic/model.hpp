@@ -13,6 +13,7 @@
 #include "core/energy.hpp"
 #include "core/fixed_targets.hpp"
 #include "core/kernel_wendland.hpp"
+#include "core/pair_matrix.hpp"
 #include "core/pair_sum.hpp"
 #include "core/particle_view.hpp"
 #include "core/simulation.hpp"
@@ -85,6 +86,9 @@ private:
   // Slot s's volume, densities, thermodynamic state and pair-force coefficients from its kernel
   // sums (the chosen particle volume, §3.2 and §4); false if they are not physical.
   bool update_slot(std::uint32_t s);
+  // The implicit volume (eqs. 26, 43-45): V from W V = 1, then every slot's thermodynamics, then
+  // y from W y = p, by conjugate gradients (canonical order: the same bits for any cell size).
+  void update_implicit_volume();
   // The exact impulse sums of a kick over dt (cached: the two half kicks around a step boundary
   // see the same positions).
   void update_impulses(double dt);
@@ -113,6 +117,8 @@ private:
   CoordinateArrays<D> slot_velocity_, slot_heat_flux_;
   PairSums<FixedArithmetic, D> heat_flux_sums_;
   PairSums<FixedArithmetic, D + 1> dissipation_sums_;
+  PairMatrix kernel_matrix_;                                         // implicit volume: W_ab
+  Eigen::VectorXd implicit_volume_, implicit_pressure_, implicit_y_; // carriers
   double impulse_dt_ = 0.0;
   bool impulses_valid_ = false;
   PairSums<FixedArithmetic, D> impulse_sums_;

@@ -94,9 +94,7 @@ ParticleVolume read_volume(const CaseFile& case_file) {
     return ParticleVolume::mixed;
   }
   if (name == "implicit") {
-    case_file.fail(
-        "physics.particle_volume",
-        "\"implicit\" is not implemented yet (mass, entropic, direct and mixed, so far)");
+    return ParticleVolume::implicit;
   }
   case_file.fail("physics.particle_volume",
                  "expected \"mass\", \"entropic\", \"direct\", \"implicit\" or \"mixed\", got \"" +
