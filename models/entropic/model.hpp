@@ -79,6 +79,7 @@ private:
   static std::string strang_dissipation(const Model& model);
   static std::string first_order_dissipation(const Model& model);
   std::string dissipation_description() const;
+  static constexpr std::size_t gas_set = 0; // the layout's only set
   std::size_t gas_count() const { return state_.gas.position.count(); }
   void update_constants();
   // Layout, kernel sums, volumes and the per-slot thermodynamics of the current positions.

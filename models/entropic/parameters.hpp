@@ -59,6 +59,9 @@ struct Parameters {
     return {wall_radius * wall_radius + wall_epsilon * wall_epsilon, wall_epsilon * wall_epsilon,
             wall_energy_per_mass};
   }
+  double heat_capacity() const {
+    return std::visit([](const auto& law) { return law.heat_capacity; }, gas_law);
+  }
   // The sound speed of the initial state (m/s), the scale of the time step and of the momenta.
   double initial_sound_speed() const;
   // The specific entropy S / m of the initial state (J/(kg K)).
