@@ -68,6 +68,7 @@ void Model<D>::dissipate(double tau) {
   Field& momentum = state_.gas.momentum;
   Field& entropy = state_.gas.entropy;
   const fixedpoint::Scale& m_scale = momentum.info().scale;
+  const std::span<const double> gas_mass = of_gas(mass_);
   for (int k = 0; k < D; ++k) {
     slot_velocity_[k].resize(n);
     slot_heat_flux_[k].resize(parameters_.heat_conductivity > 0.0 ? n : 0);
@@ -75,7 +76,7 @@ void Model<D>::dissipate(double tau) {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < slots.size(); ++i) {
     for (int k = 0; k < D; ++k) {
-      slot_velocity_[k][slots[i]] = fixedpoint::to_real(momentum.at(k, i), m_scale) / mass_[i];
+      slot_velocity_[k][slots[i]] = fixedpoint::to_real(momentum.at(k, i), m_scale) / gas_mass[i];
     }
   }
   if (parameters_.heat_conductivity > 0.0) {
@@ -84,14 +85,16 @@ void Model<D>::dissipate(double tau) {
         slot_heat_flux_[k][s] = heat_flux_sums_.value(k, s);
       }
     };
-    sum_pairs<FixedArithmetic>(
-        layout_, HeatFluxTerm<D>{kernel_, parameters_.heat_conductivity, volume_, temperature_},
-        heat_flux_sums_, {}, keep);
+    sum_pairs<FixedArithmetic>(layout_,
+                               HeatFluxTerm<D>{kernel_, parameters_.heat_conductivity, volume_,
+                                               temperature_, slot_is_gas_},
+                               heat_flux_sums_, {}, keep);
   }
   const double h = parameters_.support_radius;
   sum_pairs<FixedArithmetic>(layout_,
                              DissipationTerm<D>{kernel_, tau, parameters_.viscosity, 0.01 * h * h,
-                                                volume_, slot_velocity_, slot_heat_flux_},
+                                                volume_, slot_velocity_, slot_heat_flux_,
+                                                slot_is_gas_},
                              dissipation_sums_);
   // Per particle: the exact impulse sum onto the momentum; then the heat, less the kinetic
   // energy the impulses themselves carry (sum_b tau P_ab / 2 - |J_a|^2 / (2 m_a): these add up
@@ -113,9 +116,9 @@ void Model<D>::dissipate(double tau) {
       impulse_squared += real_impulse * real_impulse;
       fits = fits && fixedpoint::try_add(momentum.at(k, i), impulse, momentum.at(k, i));
     }
-    const double heat = dissipation_sums_.value(D, s) - 0.5 * impulse_squared / mass_[i];
-    const double thermal = mass_[i] * heat_capacity * temperature_[s];
-    const double change = mass_[i] * heat_capacity * std::log1p(heat / thermal);
+    const double heat = dissipation_sums_.value(D, s) - 0.5 * impulse_squared / gas_mass[i];
+    const double thermal = gas_mass[i] * heat_capacity * temperature_[s];
+    const double change = gas_mass[i] * heat_capacity * std::log1p(heat / thermal);
     const double units = std::ceil(change * per_entropy_unit);
     if (!fits || !std::isfinite(units) || std::fabs(units) > 0x1p62 ||
         !fixedpoint::try_add(entropy.at(0, i), static_cast<std::int64_t>(units),

@@ -23,9 +23,15 @@ struct HeatFluxTerm {
   double conductivity; // lambda_F
   std::span<const double> volume;
   std::span<const double> temperature;
+  std::span<const std::uint8_t> conducting; // by slot; pairs with another particle add nothing
 
   void pair(const PairGeometry<D>& p, std::array<double, D>& to_a,
             std::array<double, D>& to_b) const {
+    if (!conducting[p.a] || !conducting[p.b]) {
+      to_a.fill(0.0);
+      to_b.fill(0.0);
+      return;
+    }
     const double slope = kernel.derivative_over_r(p.r);
     const double t_a = temperature[p.a];
     const double t_b = temperature[p.b];
@@ -58,9 +64,16 @@ struct DissipationTerm {
   std::span<const double> volume;
   const CoordinateArrays<D>& velocity;  // by slot
   const CoordinateArrays<D>& heat_flux; // by slot; empty without conduction
+  std::span<const std::uint8_t> active; // by slot: pairs with another particle add nothing
+                                        // (dummy particles: adiabatic and free-slip)
 
   void pair(const PairGeometry<D>& p, std::array<double, D + 1>& to_a,
             std::array<double, D + 1>& to_b) const {
+    if (!active[p.a] || !active[p.b]) {
+      to_a.fill(0.0);
+      to_b.fill(0.0);
+      return;
+    }
     const double slope = kernel.derivative_over_r(p.r);
     const double volumes = volume[p.a] * volume[p.b];
     double exchanged = 0.0;

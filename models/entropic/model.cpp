@@ -83,7 +83,7 @@ Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state)
     : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
       kernel_(parameters_.support_radius),
       layout_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
-              {{"gas", state_.gas.position.count()}}),
+              {{"gas", state_.gas.position.count()}, {"dummy", state_.dummy.position.count()}}),
       walls_(parameters_.domain,
              std::max(parameters_.support_radius, parameters_.wall_radius) *
                  parameters_.cell_size_factor,
@@ -124,7 +124,10 @@ void Model<D>::update_constants() {
     wall_position[k] = CarrierField<FixedArithmetic>{&state_.wall.position}.reals(k);
   }
   walls_.place(std::move(wall_position));
-  mass_ = CarrierField<FixedArithmetic>{&state_.gas.mass}.reals();
+  mass_ = CarrierField<FixedArithmetic>{&state_.gas.mass, &state_.dummy.mass}.reals();
+  is_gas_.assign(mass_.size(), 0);
+  const std::span<std::uint8_t> gas = layout_.part_of_set(std::span(is_gas_), gas_set);
+  std::fill(gas.begin(), gas.end(), 1);
   constants_valid_ = true;
 }
 
@@ -134,9 +137,12 @@ void Model<D>::update_geometry() {
     return;
   }
   update_constants();
-  entropy_ = CarrierField<FixedArithmetic>{&state_.gas.entropy}.reals(); // dissipation changes it
-  layout_.build(CarrierField<FixedArithmetic>{&state_.gas.position}, parameters_.support_radius,
-                Gathered<double>{mass_, &slot_mass_}, Gathered<double>{entropy_, &slot_entropy_});
+  // The dissipation changes the gas's entropies: read at every rebuild.
+  entropy_ = CarrierField<FixedArithmetic>{&state_.gas.entropy, &state_.dummy.entropy}.reals();
+  layout_.build(CarrierField<FixedArithmetic>{&state_.gas.position, &state_.dummy.position},
+                parameters_.support_radius, Gathered<double>{mass_, &slot_mass_},
+                Gathered<double>{entropy_, &slot_entropy_},
+                Gathered<std::uint8_t>{is_gas_, &slot_is_gas_});
   walls_.find_near(layout_, parameters_.wall_radius);
   const std::size_t n = layout_.slot_count();
   for (std::vector<double>* values : {&density_, &entropy_density_, &volume_, &pressure_,
@@ -335,12 +341,13 @@ void Model<D>::drift(double dt) {
   const Field& momentum = state_.gas.momentum;
   const fixedpoint::Scale& x_scale = position.info().scale;
   const fixedpoint::Scale& m_scale = momentum.info().scale;
+  const std::span<const double> gas_mass = of_gas(mass_);
   FaultRecorder faults;
   // x += round(dt M / m): dt (-M) / m is -(dt M / m) bit for bit, so the drift is odd in M.
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < position.count(); ++i) {
     for (int k = 0; k < D; ++k) {
-      const double velocity = fixedpoint::to_real(momentum.at(k, i), m_scale) / mass_[i];
+      const double velocity = fixedpoint::to_real(momentum.at(k, i), m_scale) / gas_mass[i];
       if (!FixedArithmetic::try_increment(position.at(k, i), dt * velocity, x_scale)) {
         faults.record(i, "gas", "position", "overflow or non-finite value in a drift");
       }
@@ -376,6 +383,7 @@ EnergyBudget Model<D>::energy() {
   const Thermodynamics values = thermodynamics();
   const Field& momentum = state_.gas.momentum;
   const Field& position = state_.gas.position;
+  const std::span<const double> gas_mass = of_gas(mass_);
   // Serial sums in particle order: the same value for any thread count.
   double kinetic = 0.0;
   double internal = 0.0;
@@ -386,16 +394,20 @@ EnergyBudget Model<D>::energy() {
       const double p = fixedpoint::to_real(momentum.at(k, i), momentum.info().scale);
       m_squared += p * p;
     }
-    kinetic += 0.5 * m_squared / mass_[i];
-    internal += mass_[i] * values.specific_energy[i]; // V_a eps_a = m_a u_a, eq. (20)
+    kinetic += 0.5 * m_squared / gas_mass[i];
+    internal += gas_mass[i] * values.specific_energy[i]; // V_a eps_a = m_a u_a, eq. (20)
     const double height = fixedpoint::to_real(position.at(D - 1, i), position.info().scale);
     gravitational +=
-        mass_[i] * parameters_.gravity * (height - parameters_.gravity_reference_height);
+        gas_mass[i] * parameters_.gravity * (height - parameters_.gravity_reference_height);
+  }
+  // Dummy particles store internal energy too: their density follows the gas around them.
+  for (const std::uint32_t s : layout_.slots_of_set(dummy_set)) {
+    internal += slot_mass_[s] * specific_energy_[s];
   }
   PairSums<FloatArithmetic, 1> wall_sums(SummedQuantity{"wall_energy", fixedpoint::Scale()});
-  sum_cross_pairs<FloatArithmetic>(layout_,
-                                   WallEnergyTerm<D>{slot_mass_, {}, parameters_.wall_potential()},
-                                   wall_sums, walls_.cross_pairs());
+  sum_cross_pairs<FloatArithmetic>(
+      layout_, WallEnergyTerm<D>{slot_mass_, slot_is_gas_, parameters_.wall_potential()}, wall_sums,
+      walls_.cross_pairs());
   double wall = 0.0;
   for (const std::uint32_t s : layout_.slots_of_set(gas_set)) {
     wall += wall_sums.value(0, s);
@@ -416,11 +428,12 @@ void Model<D>::derived_views(const ViewSink& sink) {
   sink(ParticleView{"gas", "pressure", "Pa", 1, std::move(values.pressure)});
   sink(ParticleView{"gas", "temperature", "K", 1, std::move(values.temperature)});
   const Field& momentum = state_.gas.momentum;
+  const std::span<const double> gas_mass = of_gas(mass_);
   std::vector<double> velocity(static_cast<std::size_t>(D) * gas_count());
   for (int k = 0; k < D; ++k) {
     for (std::size_t i = 0; i < gas_count(); ++i) {
       velocity[static_cast<std::size_t>(k) * gas_count() + i] =
-          fixedpoint::to_real(momentum.at(k, i), momentum.info().scale) / mass_[i];
+          fixedpoint::to_real(momentum.at(k, i), momentum.info().scale) / gas_mass[i];
     }
   }
   sink(ParticleView{"gas", "velocity", "m/s", D, std::move(velocity)});

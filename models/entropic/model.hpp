@@ -79,7 +79,13 @@ private:
   static std::string strang_dissipation(const Model& model);
   static std::string first_order_dissipation(const Model& model);
   std::string dissipation_description() const;
-  static constexpr std::size_t gas_set = 0; // the layout's only set
+  // The layout's sets: the gas, then the dummy particles.
+  static constexpr std::size_t gas_set = 0;
+  static constexpr std::size_t dummy_set = 1;
+  // The gas's part of a per-carrier array.
+  std::span<const double> of_gas(const std::vector<double>& by_carrier) const {
+    return layout_.part_of_set(std::span<const double>(by_carrier), gas_set);
+  }
   std::size_t gas_count() const { return state_.gas.position.count(); }
   void update_constants();
   // Layout, kernel sums, volumes and the per-slot thermodynamics of the current positions.
@@ -100,10 +106,12 @@ private:
   WendlandQuintic<D> kernel_;
 
   bool constants_valid_ = false;
-  std::vector<double> mass_;    // gas, canonical order
-  std::vector<double> entropy_; // gas, canonical order
+  std::vector<double> mass_;         // carriers (gas, then dummies), canonical order
+  std::vector<double> entropy_;      // carriers, canonical order
+  std::vector<std::uint8_t> is_gas_; // carriers
   bool geometry_valid_ = false;
-  SlotLayout<D> layout_; // carriers: the gas
+  SlotLayout<D> layout_; // carriers: the gas and the dummy particles
+  std::vector<std::uint8_t> slot_is_gas_;
   FixedTargets<D> walls_;
   std::vector<double> slot_mass_, slot_entropy_;
   PairSums<FixedArithmetic, 1> density_sums_; // sum_b m_b W_ab (eq. 32a): the mass volume

@@ -300,7 +300,7 @@ const KeyTable& case_keys() {
     t.add({"wall.epsilon", T::number, "m", "1e-6",
            "regularisation eps of the wall potential (paper 1 eq. 7); >= 0"});
     t.add(domain_case_keys());
-    t.add(particle_block_case_keys({"gas", "wall"}));
+    t.add(particle_block_case_keys({"gas", "wall", "dummy"}));
     t.add({"fixed_point.position_exponent", T::integer, "-",
            "covers the domain with 52 fraction bits",
            "positions are stored as integers times 2^exponent"});

@@ -17,7 +17,7 @@ namespace revsph::entropic {
 
 namespace {
 
-constexpr std::string_view particle_kinds[] = {"gas", "wall"};
+constexpr std::string_view particle_kinds[] = {"gas", "wall", "dummy"};
 // Memory per particle, generously: state (~(2 D + 2) * 8 B), slot copies, a dozen per-slot
 // arrays (density, volume, thermodynamic state, force coefficients), the kernel and impulse sums
 // and the cell list ~400 B, plus 4 B per neighbour in the lists and as much again while they are
@@ -71,22 +71,30 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   // Gas particles in block order, at rest, each with the mass rho times its lattice cell volume
   // and the entropy S = m sigma of the initial state (eq. 21 with uniform sigma).
   const double specific_entropy = parameters.initial_specific_entropy();
-  std::vector<Vec<D>> gas_positions, wall_positions;
-  std::vector<double> gas_masses, gas_entropies;
+  // Dummy particles get the same mass and entropy per lattice cell.
+  std::vector<Vec<D>> gas_positions, wall_positions, dummy_positions;
+  std::vector<double> gas_masses, gas_entropies, dummy_masses, dummy_entropies;
   for (const auto& block : blocks) {
     if (block.kind == "wall") {
       wall_positions.insert(wall_positions.end(), block.positions.begin(), block.positions.end());
       continue;
     }
+    const bool dummy = block.kind == "dummy";
+    std::vector<Vec<D>>& positions = dummy ? dummy_positions : gas_positions;
+    std::vector<double>& masses = dummy ? dummy_masses : gas_masses;
+    std::vector<double>& entropies = dummy ? dummy_entropies : gas_entropies;
     const double mass = parameters.initial_density * block.volume_per_particle;
-    gas_positions.insert(gas_positions.end(), block.positions.begin(), block.positions.end());
-    gas_masses.insert(gas_masses.end(), block.positions.size(), mass);
-    gas_entropies.insert(gas_entropies.end(), block.positions.size(), mass * specific_entropy);
+    positions.insert(positions.end(), block.positions.begin(), block.positions.end());
+    masses.insert(masses.end(), block.positions.size(), mass);
+    entropies.insert(entropies.end(), block.positions.size(), mass * specific_entropy);
   }
   if (gas_positions.empty()) {
     case_file.fail("particles", "the case has no gas particles");
   }
-  const double largest_mass = *std::max_element(gas_masses.begin(), gas_masses.end());
+  double largest_mass = *std::max_element(gas_masses.begin(), gas_masses.end());
+  for (const double m : dummy_masses) {
+    largest_mass = std::max(largest_mass, m);
+  }
   // initial.density * lattice cell volume can overflow or underflow even when both are valid.
   if (!(largest_mass > 0.0) || !std::isfinite(largest_mass)) {
     std::ostringstream reason;
@@ -107,6 +115,13 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
                "entropy");
   fill_scalars(case_file, "initial.density", gas_masses, state.gas.mass, "mass");
   fill_vectors<D>(case_file, wall_positions, state.wall.position, "position");
+  state.dummy.position.set_scale(parameters.position_scale);
+  state.dummy.entropy.set_scale(parameters.entropy_scale);
+  state.dummy.mass.set_scale(state.gas.mass.info().scale);
+  fill_vectors<D>(case_file, dummy_positions, state.dummy.position, "position");
+  fill_scalars(case_file, "fixed_point.entropy_exponent", dummy_entropies, state.dummy.entropy,
+               "entropy");
+  fill_scalars(case_file, "initial.density", dummy_masses, state.dummy.mass, "mass");
 
   SimulationInfo info;
   info.case_name = case_name(case_file);

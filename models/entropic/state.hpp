@@ -45,13 +45,27 @@ struct Wall {
   auto fields() { return std::tie(position); }
 };
 
+// Dummy particles (as paper 1 App. A): fixed, they take part in the kernel sums and the pair
+// forces like gas particles (the paper's "dummy particles outside", §3.4), with their own mass
+// and entropy, so that the sums near a wall are not cut. They do not move, and the dissipation
+// leaves them out (adiabatic, free-slip).
+template <int D>
+struct Dummy {
+  static constexpr SetInfo set{.name = "dummy", .motion = Motion::fixed};
+  Field position{{.name = "position", .unit = "m", .components = D, .evolved = false}};
+  Field entropy{{.name = "entropy", .unit = entropy_unit<D>, .evolved = false}};
+  Field mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
+  auto fields() { return std::tie(position, entropy, mass); }
+};
+
 template <int D>
 struct State {
   Gas<D> gas;
   Wall<D> wall;
+  Dummy<D> dummy;
 
   State() { declare_state(*this); }
-  auto sets() { return std::tie(gas, wall); }
+  auto sets() { return std::tie(gas, wall, dummy); }
 };
 
 } // namespace revsph::entropic

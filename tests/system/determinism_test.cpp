@@ -57,9 +57,10 @@ INSTANTIATE_TEST_SUITE_P(BothModels, Determinism,
                                            DeterminismCase{"beryllium-plate-small", 40},
                                            DeterminismCase{"cavity-re100-small", 25},
                                            DeterminismCase{"twisting-column-small", 8},
-                                           DeterminismCase{"expansion-small", 300}),
-                         [](const ::testing::TestParamInfo<DeterminismCase>& info) {
-                           std::string name = info.param.name;
+                                           DeterminismCase{"expansion-small", 300},
+                                           DeterminismCase{"box-small", 200}),
+                         [](const ::testing::TestParamInfo<DeterminismCase>& param_info) {
+                           std::string name = param_info.param.name;
                            std::replace(name.begin(), name.end(), '-', '_');
                            return name;
                          });
