@@ -1,0 +1,45 @@
+// revsph_entropic_discontinuity [OUT.csv]: the discontinuity test of paper 4 (§3.5, Figs. 3-7),
+// the particles within 5 h of the jump, as CSV (stdout without an argument):
+//   x, volume (mass | entropic | direct | implicit | mixed), density, entropy_density
+// Plot: /usr/bin/python3 tools/plots/entropic_discontinuity.py OUT.csv OUT.png
+
+#include "entropic_discontinuity.hpp"
+
+#include <cmath>
+#include <exception>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+
+int main(int argc, char** argv) {
+  using namespace revsph::analysis;
+  if (argc > 2) {
+    std::cerr << "usage: revsph_entropic_discontinuity [OUT.csv]\n";
+    return 2;
+  }
+  std::ofstream file;
+  if (argc == 2) {
+    file.open(argv[1]);
+    if (!file) {
+      std::cerr << "revsph_entropic_discontinuity: cannot write " << argv[1] << "\n";
+      return 2;
+    }
+  }
+  std::ostream& out = argc == 2 ? file : std::cout;
+  try {
+    const DiscontinuityProfiles profiles = entropic_discontinuity();
+    out << "x,volume,density,entropy_density\n" << std::setprecision(17);
+    for (std::size_t v = 0; v < discontinuity_volumes.size(); ++v) {
+      for (std::size_t i = 0; i < profiles.x.size(); ++i) {
+        if (std::fabs(profiles.x[i] - 0.5) <= 5e-3) {
+          out << profiles.x[i] << ',' << name_of(discontinuity_volumes[v]) << ','
+              << profiles.density[v][i] << ',' << profiles.entropy_density[v][i] << '\n';
+        }
+      }
+    }
+  } catch (const std::exception& error) {
+    std::cerr << "revsph_entropic_discontinuity: " << error.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
