@@ -132,7 +132,7 @@ void SlotLayout<D>::build(const Coordinate& coordinate, double radius, Gathered<
   }
   slot_of_carrier_.resize(carrier_count_);
   particle_in_slot_.resize(carrier_count_);
-    (gathered.by_slot->resize(carrier_count_), ...);
+  (gathered.by_slot->resize(carrier_count_), ...);
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < carrier_count_; ++s) {
     for (int k = 0; k < D; ++k) {

@@ -85,7 +85,7 @@ Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state)
       layout_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
               {{"gas", state_.gas.position.count()}, {"dummy", state_.dummy.position.count()}}),
       walls_(parameters_.domain,
-             std::max(parameters_.support_radius, parameters_.wall_radius) *
+             std::max(parameters_.support_radius, parameters_.wall.radius) *
                  parameters_.cell_size_factor,
              state_.wall.position.count(), "wall"),
       density_sums_(density_quantity(parameters_.density_scale)),
@@ -143,7 +143,7 @@ void Model<D>::update_geometry() {
                 parameters_.support_radius, Gathered<double>{mass_, &slot_mass_},
                 Gathered<double>{entropy_, &slot_entropy_},
                 Gathered<std::uint8_t>{is_gas_, &slot_is_gas_});
-  walls_.find_near(layout_, parameters_.wall_radius);
+  walls_.find_near(layout_, parameters_.wall.radius);
   const std::size_t n = layout_.slot_count();
   for (std::vector<double>* values : {&density_, &entropy_density_, &volume_, &pressure_,
                                       &temperature_, &specific_energy_, &alpha_, &beta_}) {

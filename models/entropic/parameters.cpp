@@ -36,10 +36,6 @@ std::optional<double> specific_entropy_for_pressure(const GasLaw& gas_law, doubl
       gas_law);
 }
 
-double heat_capacity(const GasLaw& gas_law) {
-  return std::visit([](const auto& law) { return law.heat_capacity; }, gas_law);
-}
-
 // constants_error() names the constant first ("gamma must be > 1 (got 0.5)",
 // "rest_density * sound_speed^2 must be finite ..."): that name is the key under [physics].
 template <class Law>
@@ -173,46 +169,13 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   const double sound_speed = p.initial_sound_speed();
   require_positive_finite(case_file, "initial.pressure", "the initial sound speed c", sound_speed);
 
-  p.dr = case_file.positive_number("discretisation.dr");
-  p.support_radius = p.dr * case_file.positive_number("discretisation.support_radius_over_dr");
-  const bool has_courant = case_file.has("discretisation.courant_number");
-  const bool has_dt = case_file.has("discretisation.dt");
-  if (has_courant == has_dt) {
-    case_file.fail("discretisation.dt",
-                   has_dt ? "give either dt or courant_number, not both"
-                          : "missing required key (or give discretisation.courant_number, "
-                            "dt = courant_number * h / c)");
-  }
-  p.dt = has_dt ? case_file.positive_number("discretisation.dt")
-                : case_file.positive_number("discretisation.courant_number") * p.support_radius /
-                      sound_speed;
-  p.cell_size_factor = case_file.number_or("discretisation.cell_size_factor", 1.0);
-  if (!(p.cell_size_factor >= 1.0 && p.cell_size_factor <= 100.0)) {
-    case_file.fail("discretisation.cell_size_factor", "must be between 1 and 100");
-  }
-  require_positive_finite(case_file, "discretisation.support_radius_over_dr",
-                          "the support radius h = dr * support_radius_over_dr", p.support_radius);
-  require_positive_finite(case_file, has_dt ? "discretisation.dt" : "discretisation.courant_number",
-                          "the time step dt", p.dt);
-  require_positive_finite(case_file, "discretisation.cell_size_factor",
-                          "the search cell size h * cell_size_factor",
-                          p.support_radius * p.cell_size_factor);
-
-  p.wall_radius = p.dr * case_file.number_or("wall.radius_over_dr", 0.95);
-  p.wall_energy_per_mass = case_file.number_or("wall.energy_per_mass", 0.0);
-  p.wall_epsilon = case_file.number_or("wall.epsilon", 1e-6);
-  if (!(p.wall_radius > 0.0)) {
-    case_file.fail("wall.radius_over_dr", "must be > 0");
-  }
-  require_positive_finite(case_file, "wall.radius_over_dr",
-                          "the wall search cell size dr * radius_over_dr * cell_size_factor",
-                          p.wall_radius * p.cell_size_factor);
-  if (!(p.wall_energy_per_mass >= 0.0)) {
-    case_file.fail("wall.energy_per_mass", "must be >= 0");
-  }
-  if (!(p.wall_epsilon >= 0.0)) {
-    case_file.fail("wall.epsilon", "must be >= 0");
-  }
+  const ParticleDiscretisation discretisation =
+      read_particle_discretisation(case_file, sound_speed);
+  p.dr = discretisation.dr;
+  p.support_radius = discretisation.support_radius;
+  p.dt = discretisation.dt;
+  p.cell_size_factor = discretisation.cell_size_factor;
+  p.wall = read_wall_settings(case_file, discretisation);
 
   p.domain = read_domain<D>(case_file);
 
@@ -221,7 +184,7 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   // for the particle mass m = rho dr^D; kernel sums resolve rho * 2^-48.
   const double mass = p.initial_density * std::pow(p.dr, D);
   const double entropy_magnitude =
-      std::max(std::abs(mass * p.initial_specific_entropy()), mass * heat_capacity(p.gas_law));
+      std::max(std::abs(mass * p.initial_specific_entropy()), mass * p.heat_capacity());
   p.position_scale =
       scale_or(case_file, "fixed_point.position_exponent", p.domain.max_abs_coordinate(), 52);
   p.momentum_scale = scale_or(case_file, "fixed_point.momentum_exponent", mass * sound_speed, 50);
@@ -283,22 +246,11 @@ const KeyTable& case_keys() {
     t.add({"initial.pressure", T::number, "Pa", "required",
            "pressure p of the gas at rest: with rho it gives every particle's entropy "
            "S = m sigma(rho, p); > 0"});
-    t.add({"discretisation.dr", T::number, "m", "required", "particle spacing; > 0"});
-    t.add({"discretisation.support_radius_over_dr", T::number, "1", "required",
-           "kernel support radius h in units of dr (the paper's h, §3.4: h = 3 dr)"});
-    t.add({"discretisation.dt", T::number, "s", "required (or courant_number)",
-           "time step; give dt or courant_number, not both"});
-    t.add({"discretisation.courant_number", T::number, "1", "none (or dt)",
-           "time step as a fraction of h / c: dt = courant_number * h / c, c the sound speed of "
-           "the initial state"});
-    t.add({"discretisation.cell_size_factor", T::number, "1", "1",
-           "neighbour-search cell size over the search radius, 1 to 100"});
-    t.add({"wall.radius_over_dr", T::number, "1", "0.95",
-           "range r_wall of the wall potential (paper 1 eq. 7) in units of dr; > 0"});
-    t.add({"wall.energy_per_mass", T::number, "J/kg", "0",
-           "strength E_wall / m of the wall potential (paper 1 eq. 7); >= 0"});
-    t.add({"wall.epsilon", T::number, "m", "1e-6",
-           "regularisation eps of the wall potential (paper 1 eq. 7); >= 0"});
+    t.add(particle_discretisation_case_keys(
+        "kernel support radius h in units of dr (the paper's h, §3.4: h = 3 dr)",
+        "time step as a fraction of h / c: dt = courant_number * h / c, c the sound speed of "
+        "the initial state"));
+    t.add(wall_case_keys("paper 1 eq. 7"));
     t.add(domain_case_keys());
     t.add(particle_block_case_keys({"gas", "wall", "dummy"}));
     t.add({"fixed_point.position_exponent", T::integer, "-",

@@ -5,7 +5,7 @@
 #include "core/case_file.hpp"
 #include "core/case_keys.hpp"
 #include "core/geometry.hpp"
-#include "core/wall_potential.hpp"
+#include "core/particle_discretisation.hpp"
 #include "fixedpoint/scale.hpp"
 #include "models/entropic/equation_of_state.hpp"
 
@@ -45,9 +45,7 @@ struct Parameters {
   double dt = 0.0;               // time step (s)
   double cell_size_factor = 1.0; // neighbour-search cell size / search radius, >= 1
   // [wall]: the conservative wall of paper 1 eq. (7)
-  double wall_radius = 0.0;
-  double wall_energy_per_mass = 0.0;
-  double wall_epsilon = 0.0;
+  WallSettings wall;
   Box<D> domain;
   // [fixed_point]
   fixedpoint::Scale position_scale;
@@ -55,10 +53,7 @@ struct Parameters {
   fixedpoint::Scale entropy_scale;  // particle entropies S
   fixedpoint::Scale density_scale;  // the density sums (sum m W)
 
-  WallPotential wall_potential() const {
-    return {wall_radius * wall_radius + wall_epsilon * wall_epsilon, wall_epsilon * wall_epsilon,
-            wall_energy_per_mass};
-  }
+  WallPotential wall_potential() const { return wall.potential(); }
   double heat_capacity() const {
     return std::visit([](const auto& law) { return law.heat_capacity; }, gas_law);
   }

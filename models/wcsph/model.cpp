@@ -29,7 +29,7 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
       layout_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
               {{"fluid", state_.fluid.position.count()}, {"dummy", state_.dummy.position.count()}}),
       walls_(parameters_.domain,
-             std::max(parameters_.support_radius, parameters_.wall_radius) *
+             std::max(parameters_.support_radius, parameters_.wall.radius) *
                  parameters_.cell_size_factor,
              state_.wall.position.count(), "wall"),
       density_sums_(SummedQuantity{"density", parameters_.density_scale}),
@@ -125,7 +125,7 @@ void Model<D, Arith>::update_derived() {
                 Gathered<Raw>{density_constant_, &slot_density_constant_},
                 Gathered<std::uint8_t>{is_fluid_, &slot_is_fluid_});
   const std::size_t carriers = layout_.slot_count();
-  walls_.find_near(layout_, parameters_.wall_radius);
+  walls_.find_near(layout_, parameters_.wall.radius);
 
   pressure_over_density_squared_.resize(carriers);
   if (anti_clump_kernel_) {

@@ -2,6 +2,7 @@
 
 #include "core/case_values.hpp"
 #include "core/particle_blocks.hpp"
+#include "core/particle_discretisation.hpp"
 
 #include <cmath>
 
@@ -15,46 +16,13 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.gravity = case_file.number_or("physics.gravity", 0.0);
   p.gravity_reference_height = case_file.number_or("physics.gravity_reference_height", 0.0);
 
-  p.dr = case_file.positive_number("discretisation.dr");
-  p.support_radius = p.dr * case_file.positive_number("discretisation.support_radius_over_dr");
-  const bool has_courant = case_file.has("discretisation.courant_number");
-  const bool has_dt = case_file.has("discretisation.dt");
-  if (has_courant == has_dt) {
-    case_file.fail("discretisation.dt",
-                   has_dt ? "give either dt or courant_number, not both"
-                          : "missing required key (or give discretisation.courant_number, "
-                            "dt = courant_number * h / c)");
-  }
-  p.dt = has_dt ? case_file.positive_number("discretisation.dt")
-                : case_file.positive_number("discretisation.courant_number") * p.support_radius /
-                      p.sound_speed;
-  p.cell_size_factor = case_file.number_or("discretisation.cell_size_factor", 1.0);
-  if (!(p.cell_size_factor >= 1.0 && p.cell_size_factor <= 100.0)) {
-    case_file.fail("discretisation.cell_size_factor", "must be between 1 and 100");
-  }
-  require_positive_finite(case_file, "discretisation.support_radius_over_dr",
-                          "the support radius h = dr * support_radius_over_dr", p.support_radius);
-  require_positive_finite(case_file, has_dt ? "discretisation.dt" : "discretisation.courant_number",
-                          "the time step dt", p.dt);
-  require_positive_finite(case_file, "discretisation.cell_size_factor",
-                          "the search cell size h * cell_size_factor",
-                          p.support_radius * p.cell_size_factor);
-
-  p.wall_radius = p.dr * case_file.number_or("wall.radius_over_dr", 0.95);
-  p.wall_energy_per_mass = case_file.number_or("wall.energy_per_mass", 0.0);
-  p.wall_epsilon = case_file.number_or("wall.epsilon", 1e-6);
-  if (!(p.wall_radius > 0.0)) {
-    case_file.fail("wall.radius_over_dr", "must be > 0");
-  }
-  require_positive_finite(case_file, "wall.radius_over_dr",
-                          "the wall search cell size dr * radius_over_dr * cell_size_factor",
-                          p.wall_radius * p.cell_size_factor);
-  if (p.wall_energy_per_mass < 0.0) {
-    case_file.fail("wall.energy_per_mass", "must be >= 0");
-  }
-  if (p.wall_epsilon < 0.0) {
-    case_file.fail("wall.epsilon", "must be >= 0");
-  }
+  const ParticleDiscretisation discretisation =
+      read_particle_discretisation(case_file, p.sound_speed);
+  p.dr = discretisation.dr;
+  p.support_radius = discretisation.support_radius;
+  p.dt = discretisation.dt;
+  p.cell_size_factor = discretisation.cell_size_factor;
+  p.wall = read_wall_settings(case_file, discretisation);
 
   p.anti_clump_pressure = case_file.number_or("physics.anti_clump_pressure", 0.0);
   if (p.anti_clump_pressure < 0.0) {
@@ -144,21 +112,10 @@ const KeyTable& case_keys() {
            "height of zero gravitational potential (shifts the reported energy only)"});
     t.add({"physics.anti_clump_pressure", T::number, "Pa", "0",
            "p0 of the anti-clump force of paper 1 App. A; >= 0 (0: off)"});
-    t.add({"discretisation.dr", T::number, "m", "required", "particle spacing; > 0"});
-    t.add({"discretisation.support_radius_over_dr", T::number, "1", "required",
-           "kernel support radius h in units of dr"});
-    t.add({"discretisation.dt", T::number, "s", "required (or courant_number)",
-           "time step; give dt or courant_number, not both"});
-    t.add({"discretisation.courant_number", T::number, "1", "none (or dt)",
-           "time step as a fraction of h / c: dt = courant_number * h / c"});
-    t.add({"discretisation.cell_size_factor", T::number, "1", "1",
-           "neighbour-search cell size over the search radius, 1 to 100"});
-    t.add({"wall.radius_over_dr", T::number, "1", "0.95",
-           "range r_wall of the wall potential (eq. 7) in units of dr; > 0"});
-    t.add({"wall.energy_per_mass", T::number, "J/kg", "0",
-           "strength E_wall / m of the wall potential (eq. 7); >= 0"});
-    t.add({"wall.epsilon", T::number, "m", "1e-6",
-           "regularisation eps of the wall potential (eq. 7); >= 0"});
+    t.add(particle_discretisation_case_keys("kernel support radius h in units of dr",
+                                            "time step as a fraction of h / c: dt = "
+                                            "courant_number * h / c"));
+    t.add(wall_case_keys("eq. 7"));
     t.add({"filter.shepard_every", T::integer, "-", "0",
            "steps between Shepard filters (paper 1 App. A); 0: no filter"});
     t.add({"filter.mode",

@@ -5,6 +5,7 @@
 #include "core/case_file.hpp"
 #include "core/case_keys.hpp"
 #include "core/geometry.hpp"
+#include "core/particle_discretisation.hpp"
 #include "fixedpoint/scale.hpp"
 #include "models/wcsph/equations.hpp"
 #include "models/wcsph/initial_state_correction.hpp"
@@ -26,9 +27,7 @@ struct Parameters {
   double dt = 0.0;               // time step (s)
   double cell_size_factor = 1.0; // neighbour-search cell size / search radius, >= 1
   // [wall], eq. (7)
-  double wall_radius = 0.0;          // r_wall (m)
-  double wall_energy_per_mass = 0.0; // E_wall / m (J/kg)
-  double wall_epsilon = 0.0;         // eps (m)
+  WallSettings wall;
   // [physics] anti_clump_pressure: p0 of the anti-clump force of App. A (0: off)
   double anti_clump_pressure = 0.0;
   // [filter]: the Shepard filter of App. A, every shepard_every steps; active replaces the
@@ -50,10 +49,7 @@ struct Parameters {
   fixedpoint::Scale acceleration_scale; // acceleration sums
 
   // The wall interaction of eq. (7) with these parameters.
-  WallPotential wall_potential() const {
-    return {wall_radius * wall_radius + wall_epsilon * wall_epsilon, wall_epsilon * wall_epsilon,
-            wall_energy_per_mass};
-  }
+  WallPotential wall_potential() const { return wall.potential(); }
 };
 
 template <int D>

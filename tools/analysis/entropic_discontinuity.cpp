@@ -5,6 +5,7 @@
 #include "core/pair_matrix.hpp"
 #include "core/pair_sum.hpp"
 #include "core/slot_layout.hpp"
+#include "models/entropic/pair_terms.hpp"
 
 #include <Eigen/IterativeLinearSolvers>
 
@@ -12,31 +13,6 @@
 #include <stdexcept>
 
 namespace revsph::analysis {
-
-namespace {
-
-// sum_b m_b W_ab, sum_b S_b W_ab, sum_b W_ab, the sums including b = a (eqs. 28, 32a, 36a, 39).
-struct KernelSumsTerm {
-  static constexpr int width = 3;
-  const WendlandQuintic<1>& kernel;
-  std::span<const double> mass, entropy; // by slot
-
-  void pair(const PairGeometry<1>& p, std::array<double, 3>& to_a,
-            std::array<double, 3>& to_b) const {
-    const double w = kernel.value(p.r);
-    to_a = {mass[p.b] * w, entropy[p.b] * w, w};
-    to_b = {mass[p.a] * w, entropy[p.a] * w, w};
-  }
-  template <class Add>
-  void self(std::uint32_t s, Add& add) const {
-    const double w = kernel.value(0.0);
-    add(0, mass[s] * w);
-    add(1, entropy[s] * w);
-    add(2, w);
-  }
-};
-
-} // namespace
 
 std::string_view name_of(DiscontinuityVolume volume) {
   static constexpr std::string_view names[] = {"mass", "entropic", "direct", "implicit", "mixed"};
@@ -73,7 +49,9 @@ DiscontinuityProfiles entropic_discontinuity(double left_spacing, double support
   PairSums<FixedArithmetic, 3> sums(std::array<SummedQuantity, 3>{
       SummedQuantity{"density", scale}, SummedQuantity{"entropy_density", scale},
       SummedQuantity{"number_density", scale}});
-  sum_pairs<FixedArithmetic>(layout, KernelSumsTerm{kernel, slot_mass, slot_entropy}, sums);
+  // sum m W, sum S W, sum W (eqs. 28, 32a, 36a, 39): the model's own kernel-sum term.
+  sum_pairs<FixedArithmetic>(layout, entropic::KernelSumsTerm<1>{kernel, slot_mass, slot_entropy},
+                             sums);
   std::array<std::vector<double>, 3> by_carrier;
   for (int q = 0; q < 3; ++q) {
     layout.scatter(sums.values(q), by_carrier[q]);
