@@ -3,6 +3,8 @@
 #include "core/run_settings.hpp"
 #include "verify/state_hash.hpp"
 
+#include <limits>
+
 namespace revsph::testing {
 
 namespace {
@@ -34,6 +36,15 @@ std::unique_ptr<Simulation> make_simulation_from_text(const std::string& text) {
 
 std::string hash_of(Simulation& simulation) {
   return state_hash(simulation.capture_state());
+}
+
+double named_value(const std::vector<EnergyTerm>& terms, const std::string& name) {
+  for (const EnergyTerm& term : terms) {
+    if (term.name == name) {
+      return term.value;
+    }
+  }
+  return std::numeric_limits<double>::quiet_NaN();
 }
 
 } // namespace revsph::testing

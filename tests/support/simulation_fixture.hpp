@@ -26,4 +26,8 @@ std::unique_ptr<Simulation> make_simulation_from_text(const std::string& text);
 
 std::string hash_of(Simulation& simulation);
 
+// The value of the energy term or diagnostic called `name`; NaN (which fails every comparison)
+// if there is none.
+double named_value(const std::vector<EnergyTerm>& terms, const std::string& name);
+
 } // namespace revsph::testing

@@ -14,22 +14,13 @@
 namespace {
 
 using revsph::testing::make_simulation;
+using revsph::testing::named_value;
 using revsph::testing::Override;
 
 std::vector<Override> non_adiabatic(const char* splitting = "strang") {
   return {{"physics.viscosity", "0.001"},
           {"physics.heat_conductivity", "0.1"},
           {"dissipation.splitting", splitting}};
-}
-
-double term(const std::vector<revsph::EnergyTerm>& terms, const std::string& name) {
-  for (const auto& t : terms) {
-    if (t.name == name) {
-      return t.value;
-    }
-  }
-  ADD_FAILURE() << "no term " << name;
-  return 0.0;
 }
 
 // The exact sum of the raw particle entropies.
@@ -54,7 +45,7 @@ TEST(EntropicDissipation, AnUpdateKeepsTheTotalEnergy) {
   const revsph::fixedpoint::int128 entropy_before = total_entropy(*simulation);
   simulation->apply_substep(0, 20 * simulation->info().dt); // a large update, to see it act
   const revsph::EnergyBudget after = simulation->energy();
-  EXPECT_LT(term(after.terms, "kinetic"), term(before.terms, "kinetic"));
+  EXPECT_LT(named_value(after.terms, "kinetic"), named_value(before.terms, "kinetic"));
   EXPECT_GT(total_entropy(*simulation), entropy_before);
   EXPECT_NEAR(after.total(), before.total(), 1e-11 * std::abs(before.total()));
 }
@@ -84,8 +75,8 @@ TEST(EntropicDissipation, ViscosityKeepsTheMomentumExactly) {
   auto simulation = make_simulation("expansion-small", overrides);
   simulation->advance(300);
   const auto diagnostics = simulation->diagnostics();
-  EXPECT_EQ(term(diagnostics, "momentum_x"), 0.0);
-  EXPECT_EQ(term(diagnostics, "momentum_y"), 0.0);
+  EXPECT_EQ(named_value(diagnostics, "momentum_x"), 0.0);
+  EXPECT_EQ(named_value(diagnostics, "momentum_y"), 0.0);
 }
 
 // The irreversible terms are declared where the sub-step and the hook are defined: the verifier

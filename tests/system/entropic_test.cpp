@@ -17,16 +17,7 @@ namespace {
 
 using revsph::VerifyOptions;
 using revsph::testing::make_simulation;
-
-double term(const std::vector<revsph::EnergyTerm>& terms, const std::string& name) {
-  for (const auto& t : terms) {
-    if (t.name == name) {
-      return t.value;
-    }
-  }
-  ADD_FAILURE() << "no term " << name;
-  return 0.0;
-}
+using revsph::testing::named_value;
 
 // Every particle volume but the implicit one (not yet built), 2000 steps each way. The entropic
 // volume needs S > 0 (V = S / s): at p = 30 the case's specific entropy is positive.
@@ -72,7 +63,7 @@ TEST(Entropic, ImplicitVolumeReturnsBitwiseAndSolvesItsSystem) {
     options.steps = 150;
     const auto report = revsph::verify_reversibility(*simulation, options);
     EXPECT_TRUE(report.identical()) << threads << " threads: " << report.comparison.verdict();
-    EXPECT_LT(term(simulation->diagnostics(), "implicit_volume_residual"), 1e-10);
+    EXPECT_LT(named_value(simulation->diagnostics(), "implicit_volume_residual"), 1e-10);
     revsph::set_thread_count(previous);
   }
   auto hash_with_cells = [](const char* factor) {
@@ -169,10 +160,10 @@ TEST(Entropic, InternalForcesConserveMomentumExactly) {
   auto simulation = make_simulation("expansion-small", {{"wall.energy_per_mass", "0"}});
   simulation->advance(300);
   const auto diagnostics = simulation->diagnostics();
-  EXPECT_EQ(term(diagnostics, "momentum_x"), 0.0);
-  EXPECT_EQ(term(diagnostics, "momentum_y"), 0.0);
+  EXPECT_EQ(named_value(diagnostics, "momentum_x"), 0.0);
+  EXPECT_EQ(named_value(diagnostics, "momentum_y"), 0.0);
   // And the gas did move: its kinetic energy is not zero.
-  EXPECT_GT(term(simulation->energy().terms, "kinetic"), 0.0);
+  EXPECT_GT(named_value(simulation->energy().terms, "kinetic"), 0.0);
 }
 
 // Velocity Verlet on a separable Hamiltonian: the largest energy error over a fixed time falls
