@@ -42,11 +42,15 @@ std::array<SummedQuantity, D> impulse_quantities(const fixedpoint::Scale& scale)
 }
 
 template <int D>
+std::array<SummedQuantity, D> flux_quantities(const fixedpoint::Scale& scale) {
+  std::array<SummedQuantity, D> quantities{};
+  quantities.fill({"entropy_flux", scale});
+  return quantities;
+}
+
+template <int D>
 double initial_temperature(const Parameters<D>& parameters) {
-  const double sigma = parameters.initial_specific_entropy();
-  return std::visit(
-      [&](const auto& law) { return state(law, parameters.initial_density, sigma).temperature; },
-      parameters.gas_law);
+  return parameters.initial_temperature();
 }
 
 // The heat flux q of eq. (54) reaches about lambda_F T^2 / h; resolved with 48 bits.
@@ -92,15 +96,26 @@ Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state)
       kernel_sums_(kernel_sum_quantities(parameters_)),
       heat_flux_sums_(heat_flux_quantities(parameters_)),
       dissipation_sums_(dissipation_quantities(parameters_)),
+      flux_sums_(flux_quantities<D>(parameters_.entropy_flux_scale)),
+      entropy_exchange_sums_({SummedQuantity{"entropy", state_.gas.entropy.info().scale}}),
       impulse_sums_(impulse_quantities<D>(parameters_.momentum_scale)) {}
 
 template <int D>
 std::span<const Substep<Model<D>>> Model<D>::palindrome() {
+  // The reversible core is kick-drift-kick around the exchange of the hyperbolic heat
+  // conduction (w, S, w: eq. 68); the irreversible relaxation (eq. 69) and dissipation sit at
+  // both ends as Strang half steps. Each sub-step does nothing where its physics is off.
   static constexpr Substep<Model> sequence[] = {
       {"dissipation", 0.5, &Model::dissipation_substep, &Model::strang_dissipation},
+      {"relaxation", 0.5, &Model::relaxation_substep, &Model::relaxation_description},
       {"kick", 0.5, &Model::kick_substep},
+      {"flux", 0.5, &Model::flux_substep},
+      {"entropy_exchange", 0.5, &Model::entropy_exchange_substep},
       {"drift", 1.0, &Model::drift_substep},
+      {"entropy_exchange", 0.5, &Model::entropy_exchange_substep},
+      {"flux", 0.5, &Model::flux_substep},
       {"kick", 0.5, &Model::kick_substep},
+      {"relaxation", 0.5, &Model::relaxation_substep, &Model::relaxation_description},
       {"dissipation", 0.5, &Model::dissipation_substep, &Model::strang_dissipation},
   };
   return sequence;
@@ -139,11 +154,17 @@ void Model<D>::update_geometry() {
   update_constants();
   // The dissipation changes the gas's entropies: read at every rebuild.
   entropy_ = CarrierField<FixedArithmetic>{&state_.gas.entropy, &state_.dummy.entropy}.reals();
-  layout_.build(CarrierField<FixedArithmetic>{&state_.gas.position, &state_.dummy.position},
-                parameters_.support_radius, Gathered<double>{mass_, &slot_mass_},
-                Gathered<double>{entropy_, &slot_entropy_},
-                Gathered<std::uint8_t>{is_gas_, &slot_is_gas_});
-  walls_.find_near(layout_, parameters_.wall.radius);
+  if (!parameters_.particles_move && layout_built_) {
+    // Particles at rest: the cells and pairs stand; only the entropies changed.
+    layout_.gather(std::span<const double>(entropy_), slot_entropy_);
+  } else {
+    layout_.build(CarrierField<FixedArithmetic>{&state_.gas.position, &state_.dummy.position},
+                  parameters_.support_radius, Gathered<double>{mass_, &slot_mass_},
+                  Gathered<double>{entropy_, &slot_entropy_},
+                  Gathered<std::uint8_t>{is_gas_, &slot_is_gas_});
+    walls_.find_near(layout_, parameters_.wall.radius);
+    layout_built_ = true;
+  }
   const std::size_t n = layout_.slot_count();
   for (std::vector<double>* values : {&density_, &entropy_density_, &volume_, &pressure_,
                                       &temperature_, &specific_energy_, &alpha_, &beta_}) {
@@ -252,14 +273,33 @@ void Model<D>::update_implicit_volume() {
   // definite), so conjugate gradients apply (§4.4). A fixed zero start and a relative residual of
   // 1e-12 make V and y functions of the positions alone; the tolerance enters the energy error
   // (the force is the exact gradient only for exact solves).
+  //
+  // The dummy particles keep the lattice volume m / rho_0 and only the gas's rows are solved:
+  // W_gg V_g = 1 - W_gd V_d. Solving the dummies' rows too would put a cut support on the
+  // outermost dummy layer, whose volumes then swing negative (measured: box-small fails at step
+  // 27); the paper fills its quadrature test with dummies for the same reason (Fig. 2). The
+  // energy then varies only through V_g, dV_g = -W_gg^-1 (dW_gg V_g + dW_gd V_d), so the force
+  // keeps the form of (45b) with y = W_gg^-1 p_g on the gas and y = 0 on the dummies:
+  // Phi_ab = y_a V_b + y_b V_a for every pair (models/entropic/derivations.md).
   fill_pair_matrix<D>(
       layout_, [this](double r) { return kernel_.value(r); }, kernel_matrix_);
+  const auto n = static_cast<Eigen::Index>(layout_.carrier_count());
+  const auto gas = static_cast<Eigen::Index>(gas_count());
+  const Eigen::Index dummies = n - gas;
+  gas_matrix_ = kernel_matrix_.topLeftCorner(gas, gas);
+  implicit_volume_.resize(n);
+  for (Eigen::Index d = 0; d < dummies; ++d) {
+    implicit_volume_[gas + d] =
+        mass_[static_cast<std::size_t>(gas + d)] / parameters_.initial_density;
+  }
+  const Eigen::VectorXd dummy_volume = implicit_volume_.tail(dummies);
+  const Eigen::VectorXd right_side =
+      Eigen::VectorXd::Ones(gas) - kernel_matrix_.topRightCorner(gas, dummies) * dummy_volume;
   Eigen::ConjugateGradient<PairMatrix, Eigen::Lower | Eigen::Upper> solver;
   solver.setTolerance(1e-12);
   solver.setMaxIterations(5000);
-  solver.compute(kernel_matrix_);
-  const auto n = static_cast<Eigen::Index>(layout_.carrier_count());
-  implicit_volume_ = solver.solve(Eigen::VectorXd::Ones(n));
+  solver.compute(gas_matrix_);
+  implicit_volume_.head(gas) = solver.solve(right_side);
   if (solver.info() != Eigen::Success) {
     throw SimulationFault({"gas", 0, "volume",
                            "the implicit volume's solve W V = 1 did not converge (residual " +
@@ -277,10 +317,12 @@ void Model<D>::update_implicit_volume() {
     }
   }
   faults.throw_if_any();
-  implicit_pressure_.resize(n);
+  implicit_pressure_.resize(gas);
   const std::span<const std::uint32_t> carrier = layout_.carrier_of_slot();
   for (std::size_t s = 0; s < slots; ++s) {
-    implicit_pressure_[carrier[s]] = pressure_[s];
+    if (carrier[s] < static_cast<std::uint32_t>(gas)) {
+      implicit_pressure_[carrier[s]] = pressure_[s];
+    }
   }
   implicit_y_ = solver.solve(implicit_pressure_); // (45): y = W^-1 p
   if (solver.info() != Eigen::Success) {
@@ -290,7 +332,7 @@ void Model<D>::update_implicit_volume() {
                           -1);
   }
   for (std::size_t s = 0; s < slots; ++s) {
-    alpha_[s] = implicit_y_[carrier[s]];
+    alpha_[s] = carrier[s] < static_cast<std::uint32_t>(gas) ? implicit_y_[carrier[s]] : 0.0;
   }
 }
 
@@ -412,10 +454,25 @@ EnergyBudget Model<D>::energy() {
   for (const std::uint32_t s : layout_.slots_of_set(gas_set)) {
     wall += wall_sums.value(0, s);
   }
-  return EnergyBudget{{{"kinetic", kinetic},
+  EnergyBudget budget{{{"kinetic", kinetic},
                        {"internal", internal},
                        {"gravitational", gravitational},
                        {"wall", wall}}};
+  if (parameters_.hyperbolic()) {
+    // c_w sum_a V_a |w_a|^2 (§5.5, Fig. 13).
+    const Field& flux = state_.gas.entropy_flux;
+    double flux_energy = 0.0;
+    for (std::size_t i = 0; i < gas_count(); ++i) {
+      double w_squared = 0.0;
+      for (int k = 0; k < D; ++k) {
+        const double w = fixedpoint::to_real(flux.at(k, i), flux.info().scale);
+        w_squared += w * w;
+      }
+      flux_energy += parameters_.flux_energy_coefficient * values.volume[i] * w_squared;
+    }
+    budget.terms.push_back({"entropy_flux", flux_energy});
+  }
+  return budget;
 }
 
 template <int D>
@@ -454,12 +511,20 @@ std::vector<EnergyTerm> Model<D>::diagnostics() {
     terms.push_back(
         {names[k], static_cast<double>(total) * fixedpoint::to_real(1, momentum.info().scale)});
   }
+  // The total entropy of the gas, summed exactly: the reversible part keeps it bit for bit, the
+  // dissipation and the relaxation raise it.
+  fixedpoint::int128 entropy = 0;
+  for (const std::int64_t raw : state_.gas.entropy.component(0)) {
+    entropy += raw;
+  }
+  terms.push_back({"entropy", static_cast<double>(entropy) *
+                                  fixedpoint::to_real(1, state_.gas.entropy.info().scale)});
   if (parameters_.volume == ParticleVolume::implicit) {
-    // How well the volumes solve eq. (26): max_a |sum_b W_ab V_b - 1|.
+    // How well the volumes solve eq. (26): max over the gas of |sum_b W_ab V_b - 1|.
     update_geometry();
+    const auto gas = static_cast<Eigen::Index>(gas_count());
     const Eigen::VectorXd residual =
-        kernel_matrix_ * implicit_volume_ -
-        Eigen::VectorXd::Ones(static_cast<Eigen::Index>(implicit_volume_.size()));
+        (kernel_matrix_ * implicit_volume_).head(gas) - Eigen::VectorXd::Ones(gas);
     terms.push_back({"implicit_volume_residual", residual.cwiseAbs().maxCoeff()});
   }
   return terms;

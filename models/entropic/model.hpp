@@ -51,6 +51,7 @@ public:
   void invalidate_derived() {
     constants_valid_ = false;
     geometry_valid_ = false;
+    layout_built_ = false;
   }
   void reverse_time();
 
@@ -62,6 +63,12 @@ public:
   // total energy is kept up to rounding. Irreversible.
   void dissipate(double tau);
   static std::span<const StepHook<Model>> step_hooks();
+  // The hyperbolic heat conduction (§5.5, hyperbolic_heat.cpp): the reversible exchange of
+  // eq. (68) as two shears, w from (S, x) and S from (w, x), and the relaxation of eq. (69),
+  // which turns the energy of w into heat (irreversible, energy kept up to rounding).
+  void exchange_flux(double dt);
+  void exchange_entropy(double dt);
+  void relax_flux(double dt);
 
   // Per gas particle, canonical order, at the current positions (for tests and outputs).
   struct Thermodynamics {
@@ -70,8 +77,20 @@ public:
   Thermodynamics thermodynamics();
 
 private:
-  static void kick_substep(Model& model, double dt) { model.kick(dt); }
-  static void drift_substep(Model& model, double dt) { model.drift(dt); }
+  static void kick_substep(Model& model, double dt) {
+    if (model.parameters_.particles_move) {
+      model.kick(dt);
+    }
+  }
+  static void drift_substep(Model& model, double dt) {
+    if (model.parameters_.particles_move) {
+      model.drift(dt);
+    }
+  }
+  static void flux_substep(Model& model, double dt);
+  static void entropy_exchange_substep(Model& model, double dt);
+  static void relaxation_substep(Model& model, double dt);
+  static std::string relaxation_description(const Model& model);
   // The dissipation as Strang half steps at the step's ends, or as one update after the step
   // (parameters.hpp); each does nothing in the other splitting or without dissipation.
   static void dissipation_substep(Model& model, double dt);
@@ -93,8 +112,9 @@ private:
   // Slot s's volume, densities, thermodynamic state and pair-force coefficients from its kernel
   // sums (the chosen particle volume, §3.2 and §4); false if they are not physical.
   bool update_slot(std::uint32_t s);
-  // The implicit volume (eqs. 26, 43-45): V from W V = 1, then every slot's thermodynamics, then
-  // y from W y = p, by conjugate gradients (canonical order: the same bits for any cell size).
+  // The implicit volume (eqs. 26, 43-45): the gas's V from W V = 1 (dummies at their lattice
+  // volume), then every slot's thermodynamics, then y from W y = p, by conjugate gradients
+  // (canonical order: the same bits for any cell size).
   void update_implicit_volume();
   // The exact impulse sums of a kick over dt (cached: the two half kicks around a step boundary
   // see the same positions).
@@ -110,7 +130,8 @@ private:
   std::vector<double> entropy_;      // carriers, canonical order
   std::vector<std::uint8_t> is_gas_; // carriers
   bool geometry_valid_ = false;
-  SlotLayout<D> layout_; // carriers: the gas and the dummy particles
+  bool layout_built_ = false; // once built, particles at rest keep their layout
+  SlotLayout<D> layout_;      // carriers: the gas and the dummy particles
   std::vector<std::uint8_t> slot_is_gas_;
   FixedTargets<D> walls_;
   std::vector<double> slot_mass_, slot_entropy_;
@@ -126,8 +147,12 @@ private:
   CoordinateArrays<D> slot_velocity_, slot_heat_flux_;
   PairSums<FixedArithmetic, D> heat_flux_sums_;
   PairSums<FixedArithmetic, D + 1> dissipation_sums_;
-  PairMatrix kernel_matrix_;                                         // implicit volume: W_ab
+  PairMatrix kernel_matrix_, gas_matrix_; // implicit volume: W_ab over all carriers, the gas's
   Eigen::VectorXd implicit_volume_, implicit_pressure_, implicit_y_; // carriers
+  // The hyperbolic heat conduction: w per slot, the w and S exchanges of a sub-step.
+  CoordinateArrays<D> slot_flux_;
+  PairSums<FixedArithmetic, D> flux_sums_;
+  PairSums<FixedArithmetic, 1> entropy_exchange_sums_;
   double impulse_dt_ = 0.0;
   bool impulses_valid_ = false;
   PairSums<FixedArithmetic, D> impulse_sums_;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -111,6 +112,13 @@ double Parameters<D>::initial_specific_entropy() const {
 }
 
 template <int D>
+double Parameters<D>::initial_temperature() const {
+  const double sigma = initial_specific_entropy();
+  return std::visit([&](const auto& law) { return state(law, initial_density, sigma).temperature; },
+                    gas_law);
+}
+
+template <int D>
 double Parameters<D>::initial_sound_speed() const {
   const double sigma = initial_specific_entropy();
   return std::sqrt(std::visit(
@@ -144,6 +152,32 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
                    "expected \"strang\" or \"first_order\", got \"" + splitting + "\"");
   }
 
+  p.particles_move = case_file.boolean_or("physics.particles_move", true);
+  p.flux_energy_coefficient = case_file.number_or("hyperbolic_heat.energy_coefficient", 0.0);
+  if (!(p.flux_energy_coefficient >= 0.0) || !std::isfinite(p.flux_energy_coefficient)) {
+    case_file.fail("hyperbolic_heat.energy_coefficient",
+                   "must be >= 0 and finite (got " +
+                       format_scientific(p.flux_energy_coefficient, 3) + ")");
+  }
+  p.relaxation_time = case_file.number_or("hyperbolic_heat.relaxation_time",
+                                          std::numeric_limits<double>::infinity());
+  if (!(p.relaxation_time > 0.0)) {
+    case_file.fail("hyperbolic_heat.relaxation_time",
+                   "must be > 0 (leave it out for no relaxation; got " +
+                       format_scientific(p.relaxation_time, 3) + ")");
+  }
+  if (p.hyperbolic() && p.particles_move) {
+    case_file.fail("hyperbolic_heat.energy_coefficient",
+                   "the hyperbolic heat conduction of paper 4 §5.5 is derived for particles at "
+                   "rest: set physics.particles_move = false");
+  }
+  if (p.hyperbolic() && p.volume != ParticleVolume::mass && p.volume != ParticleVolume::direct) {
+    case_file.fail("hyperbolic_heat.energy_coefficient",
+                   "needs a particle volume that does not depend on the entropies (the energy "
+                   "c_w V |w|^2 of Fig. 13 and T = dE/dS): physics.particle_volume = \"mass\" "
+                   "or \"direct\"");
+  }
+
   p.initial_density = case_file.positive_number("initial.density");
   p.initial_pressure = case_file.positive_number("initial.pressure");
   if (!specific_entropy_for_pressure(p.gas_law, p.initial_density, p.initial_pressure)) {
@@ -168,6 +202,16 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   }
   const double sound_speed = p.initial_sound_speed();
   require_positive_finite(case_file, "initial.pressure", "the initial sound speed c", sound_speed);
+  if (case_file.has("initial.temperature_gradient")) {
+    const std::vector<double> gradient = case_file.numbers("initial.temperature_gradient", D);
+    for (int k = 0; k < D; ++k) {
+      if (!std::isfinite(gradient[static_cast<std::size_t>(k)])) {
+        case_file.fail("initial.temperature_gradient", "must be finite");
+      }
+      p.initial_temperature_gradient[static_cast<std::size_t>(k)] =
+          gradient[static_cast<std::size_t>(k)];
+    }
+  }
 
   const ParticleDiscretisation discretisation =
       read_particle_discretisation(case_file, sound_speed);
@@ -190,6 +234,12 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.momentum_scale = scale_or(case_file, "fixed_point.momentum_exponent", mass * sound_speed, 50);
   p.entropy_scale = scale_or(case_file, "fixed_point.entropy_exponent", entropy_magnitude, 48);
   p.density_scale = scale_or(case_file, "fixed_point.density_exponent", p.initial_density, 48);
+  // |w| stays below sqrt(rho c_V T / c_w): its energy c_w V |w|^2 cannot exceed the heat m c_V T.
+  const double largest_flux = p.hyperbolic()
+                                  ? std::sqrt(p.initial_density * p.heat_capacity() *
+                                              p.initial_temperature() / p.flux_energy_coefficient)
+                                  : 1.0;
+  p.entropy_flux_scale = scale_or(case_file, "fixed_point.entropy_flux_exponent", largest_flux, 48);
   return p;
 }
 
@@ -220,14 +270,23 @@ const KeyTable& case_keys() {
            "-",
            "\"mass\"",
            "the particle volume of §3.2: mass V = m / rho (eq. 23), entropic V = S / s (eq. 24; "
-           "needs S > 0), direct V = 1 / sum W (eq. 25), implicit (eq. 26; not implemented yet) "
-           "or mixed (eq. 28)",
+           "needs S > 0), direct V = 1 / sum W (eq. 25), implicit (eq. 26: W V = 1 "
+           "over the gas, dummy particles at their lattice volume) or mixed (eq. 28)",
            {"mass", "entropic", "direct", "implicit", "mixed"}});
     t.add({"physics.viscosity", T::number, "Pa s", "0",
            "shear viscosity mu of the viscous dissipation, paper 4 eq. (60); >= 0 (0: off)"});
     t.add({"physics.heat_conductivity", T::number, "W/(m K^3)", "0",
            "lambda_F of the Fourier heat conduction lambda(T) = lambda_F T^2, paper 4 eq. (51); "
            ">= 0 (0: off)"});
+    t.add({"physics.particles_move", T::boolean, "-", "true",
+           "false holds every gas particle at its place (kick and drift do nothing): a heat "
+           "conducting solid, as the hyperbolic heat conduction of paper 4 §5.5 needs"});
+    t.add({"hyperbolic_heat.energy_coefficient", T::number, "1", "0",
+           "c_w of the entropy-flux energy c_w sum V |w|^2 of paper 4 §5.5 (Fig. 13: 0.05); > 0 "
+           "switches on the hyperbolic heat conduction, eqs. (68)-(69); 0: off"});
+    t.add({"hyperbolic_heat.relaxation_time", T::number, "s", "none: no relaxation",
+           "relaxation time tau of eq. (69), w' = -2 c_w V w / tau (irreversible); > 0. Without "
+           "it the exchange of eq. (68) is bitwise reversible"});
     t.add({"dissipation.splitting",
            T::string,
            "-",
@@ -246,6 +305,10 @@ const KeyTable& case_keys() {
     t.add({"initial.pressure", T::number, "Pa", "required",
            "pressure p of the gas at rest: with rho it gives every particle's entropy "
            "S = m sigma(rho, p); > 0"});
+    t.add({"initial.temperature_gradient", T::numbers, "K/m", "0 on every axis",
+           "dT/dx of the initial state: T = T0 + gradient . (x - centre of the gas) at the "
+           "initial density, T0 the temperature of (density, pressure); sets each gas "
+           "particle's entropy"});
     t.add(particle_discretisation_case_keys(
         "kernel support radius h in units of dr (the paper's h, §3.4: h = 3 dr)",
         "time step as a fraction of h / c: dt = courant_number * h / c, c the sound speed of "
@@ -266,6 +329,10 @@ const KeyTable& case_keys() {
     t.add({"fixed_point.density_exponent", T::integer, "-",
            "covers the initial density with 48 fraction bits",
            "scale of the density sums rho_a = sum_b m_b W_ab (eq. 32a)"});
+    t.add({"fixed_point.entropy_flux_exponent", T::integer, "-",
+           "covers sqrt(rho c_V T0 / c_w) with 48 fraction bits",
+           "the entropy-flux variable w of the hyperbolic heat conduction is stored as integers "
+           "times 2^exponent"});
     return t;
   }();
   return table;

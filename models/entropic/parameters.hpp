@@ -9,6 +9,9 @@
 #include "fixedpoint/scale.hpp"
 #include "models/entropic/equation_of_state.hpp"
 
+#include <array>
+#include <cmath>
+#include <limits>
 #include <variant>
 
 namespace revsph::entropic {
@@ -36,9 +39,21 @@ struct Parameters {
   double heat_conductivity = 0.0; // lambda_F
   DissipationSplitting splitting = DissipationSplitting::strang;
   bool dissipative() const { return viscosity > 0.0 || heat_conductivity > 0.0; }
+  // Particles held at their places (physics.particles_move = false): the kick and the drift do
+  // nothing. The hyperbolic heat conduction of §5.5 is derived for particles at rest.
+  bool particles_move = true;
+  // [hyperbolic_heat] (§5.5): the energy c_w sum_a V_a |w_a|^2 of the entropy-flux variable
+  // (Fig. 13: c_w = 0.05; 0: off) and the relaxation time tau of eq. (69) (infinite: none).
+  double flux_energy_coefficient = 0.0;
+  double relaxation_time = std::numeric_limits<double>::infinity();
+  bool hyperbolic() const { return flux_energy_coefficient > 0.0; }
+  bool relaxing() const { return hyperbolic() && std::isfinite(relaxation_time); }
   // [initial]: the gas at rest, uniform
   double initial_density = 0.0;  // rho (kg/m^3): the particle masses are rho dr^D
   double initial_pressure = 0.0; // p (Pa): with rho, the specific entropy S / m of every particle
+  // dT/dx (K/m): T = T0 + gradient . (x - centre of the gas) at the initial density, T0 the
+  // temperature of (density, pressure).
+  std::array<double, D> initial_temperature_gradient{};
   // [discretisation]
   double dr = 0.0;               // particle spacing (m)
   double support_radius = 0.0;   // kernel support radius h (m; the paper's h, §3.4)
@@ -49,9 +64,10 @@ struct Parameters {
   Box<D> domain;
   // [fixed_point]
   fixedpoint::Scale position_scale;
-  fixedpoint::Scale momentum_scale; // momenta, and the pair impulses of the kick
-  fixedpoint::Scale entropy_scale;  // particle entropies S
-  fixedpoint::Scale density_scale;  // the density sums (sum m W)
+  fixedpoint::Scale momentum_scale;     // momenta, and the pair impulses of the kick
+  fixedpoint::Scale entropy_scale;      // particle entropies S
+  fixedpoint::Scale density_scale;      // the density sums (sum m W)
+  fixedpoint::Scale entropy_flux_scale; // w of the hyperbolic heat conduction
 
   WallPotential wall_potential() const { return wall.potential(); }
   double heat_capacity() const {
@@ -61,6 +77,8 @@ struct Parameters {
   double initial_sound_speed() const;
   // The specific entropy S / m of the initial state (J/(kg K)).
   double initial_specific_entropy() const;
+  // T0 = T(initial density, initial specific entropy) (K).
+  double initial_temperature() const;
 };
 
 template <int D>

@@ -57,6 +57,41 @@ void fill_scalars(const CaseFile& case_file, const char* key, const std::vector<
   }
 }
 
+// initial.temperature_gradient: at the initial density T ∝ e^(sigma / c_V) for both gas laws
+// (equation_of_state.hpp), so T = T0 + g . (x - centre) is sigma = sigma0 + c_V ln(T / T0).
+template <int D>
+void apply_temperature_gradient(const CaseFile& case_file, const Parameters<D>& parameters,
+                                const std::vector<Vec<D>>& positions,
+                                const std::vector<double>& masses, std::vector<double>& entropies) {
+  const auto& gradient = parameters.initial_temperature_gradient;
+  if (std::all_of(gradient.begin(), gradient.end(), [](double g) { return g == 0.0; })) {
+    return;
+  }
+  Vec<D> lowest = positions.front();
+  Vec<D> highest = positions.front();
+  for (const Vec<D>& x : positions) {
+    for (int k = 0; k < D; ++k) {
+      lowest[k] = std::min(lowest[k], x[k]);
+      highest[k] = std::max(highest[k], x[k]);
+    }
+  }
+  const double t0 = parameters.initial_temperature();
+  const double sigma0 = parameters.initial_specific_entropy();
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    double t = t0;
+    for (int k = 0; k < D; ++k) {
+      t += gradient[static_cast<std::size_t>(k)] *
+           (positions[i][k] - 0.5 * (lowest[k] + highest[k]));
+    }
+    if (!(t > 0.0)) {
+      case_file.fail(
+          "initial.temperature_gradient",
+          "gives a temperature <= 0 K at a gas particle (T0 = " + format_scientific(t0, 3) + " K)");
+    }
+    entropies[i] = masses[i] * (sigma0 + parameters.heat_capacity() * std::log(t / t0));
+  }
+}
+
 std::string scientific(double value) {
   return format_scientific(value, 6);
 }
@@ -91,6 +126,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   if (gas_positions.empty()) {
     case_file.fail("particles", "the case has no gas particles");
   }
+  apply_temperature_gradient<D>(case_file, parameters, gas_positions, gas_masses, gas_entropies);
   double largest_mass = *std::max_element(gas_masses.begin(), gas_masses.end());
   for (const double m : dummy_masses) {
     largest_mass = std::max(largest_mass, m);
@@ -108,9 +144,11 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   state.gas.momentum.set_scale(parameters.momentum_scale);
   state.gas.entropy.set_scale(parameters.entropy_scale);
   state.gas.mass.set_scale(fixedpoint::Scale::covering(largest_mass, mass_fraction_bits));
+  state.gas.entropy_flux.set_scale(parameters.entropy_flux_scale);
   state.wall.position.set_scale(parameters.position_scale);
   fill_vectors<D>(case_file, gas_positions, state.gas.position, "position");
-  state.gas.momentum.resize(gas_positions.size()); // at rest
+  state.gas.momentum.resize(gas_positions.size());     // at rest
+  state.gas.entropy_flux.resize(gas_positions.size()); // w = 0
   fill_scalars(case_file, "fixed_point.entropy_exponent", gas_entropies, state.gas.entropy,
                "entropy");
   fill_scalars(case_file, "initial.density", gas_masses, state.gas.mass, "mass");

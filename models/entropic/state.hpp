@@ -25,7 +25,9 @@ template <int D>
 inline constexpr const char* entropy_unit = D == 1 ? "J/(K m^2)" : (D == 2 ? "J/(K m)" : "J/K");
 
 // The gas: positions and momenta M = m v evolve (eq. 11); the particle entropy S (extensive, eq.
-// 21) and the mass are constants of the reversible motion.
+// 21) and the mass are constants of the reversible motion, except that the hyperbolic heat
+// conduction (§5.5) exchanges S with the entropy-flux variable w (odd, eq. 66b; zero and
+// untouched without it).
 template <int D>
 struct Gas {
   static constexpr SetInfo set{.name = "gas", .motion = Motion::moving};
@@ -34,7 +36,10 @@ struct Gas {
       {.name = "momentum", .unit = momentum_unit<D>, .parity = Parity::odd, .components = D}};
   Field entropy{{.name = "entropy", .unit = entropy_unit<D>}};
   Field mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
-  auto fields() { return std::tie(position, momentum, entropy, mass); }
+  // w: its energy c_w V |w|^2 (Fig. 13) makes its unit the square root of a pressure.
+  Field entropy_flux{
+      {.name = "entropy_flux", .unit = "Pa^(1/2)", .parity = Parity::odd, .components = D}};
+  auto fields() { return std::tie(position, momentum, entropy, mass, entropy_flux); }
 };
 
 // Wall particles of the conservative wall (paper 1 §3.3, eq. 7): fixed, only their positions.

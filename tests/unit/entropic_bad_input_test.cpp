@@ -38,6 +38,14 @@ std::vector<Defect> defects() {
       {"unknown_equation_of_state", "physics.equation_of_state=van_der_waals",
        "physics.equation_of_state", "got \"van_der_waals\""},
       {"negative_pressure", "initial.pressure=-1", "initial.pressure", "must be > 0 (got -1)"},
+      {"hyperbolic_heat_on_moving_particles", "hyperbolic_heat.energy_coefficient=0.05",
+       "hyperbolic_heat.energy_coefficient", "set physics.particles_move = false"},
+      {"negative_flux_energy", "hyperbolic_heat.energy_coefficient=-1",
+       "hyperbolic_heat.energy_coefficient", "must be >= 0 and finite (got -1"},
+      {"zero_relaxation_time", "hyperbolic_heat.relaxation_time=0",
+       "hyperbolic_heat.relaxation_time", "must be > 0"},
+      {"gradient_below_absolute_zero", "initial.temperature_gradient=[1000.0, 0.0]",
+       "initial.temperature_gradient", "gives a temperature <= 0 K"},
   };
 }
 
