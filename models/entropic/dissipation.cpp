@@ -23,7 +23,8 @@ std::string Model<D>::dissipation_description() const {
   if (parameters_.heat_conductivity > 0.0) {
     names += (names.empty() ? "" : " and ") + std::string("heat conduction");
     details += (details.empty() ? "" : "; ") + std::string("lambda_F = ") +
-               format_scientific(parameters_.heat_conductivity, 3) + ", eqs. 51-56";
+               format_scientific(parameters_.heat_conductivity, 3) +
+               (parameters_.conduction == HeatConduction::two_pass ? ", eqs. 51-56" : ", pairwise");
   }
   return names + " (" + details + ")";
 }
@@ -69,9 +70,32 @@ void Model<D>::dissipate(double tau) {
   Field& entropy = state_.gas.entropy;
   const fixedpoint::Scale& m_scale = momentum.info().scale;
   const std::span<const double> gas_mass = of_gas(mass_);
+  const bool two_pass =
+      parameters_.heat_conductivity > 0.0 && parameters_.conduction == HeatConduction::two_pass;
   for (int k = 0; k < D; ++k) {
-    slot_velocity_[k].resize(n);
-    slot_heat_flux_[k].resize(parameters_.heat_conductivity > 0.0 ? n : 0);
+    slot_velocity_[k].assign(n, 0.0); // the walls are at rest
+    slot_heat_flux_[k].resize(two_pass ? n : 0);
+  }
+  // The temperature conduction sees: the gas's own; a thermal wall's held one, mirrored across
+  // the wall by the gas near it (dissipation_terms.hpp, WallTemperatureTerm).
+  conduction_temperature_.resize(n);
+  slot_thermal_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < n; ++s) {
+    conduction_temperature_[s] = slot_is_gas_[s] ? temperature_[s] : slot_held_temperature_[s];
+    slot_thermal_[s] = slot_conducts_[s] && !slot_is_gas_[s];
+  }
+  if (parameters_.heat_conductivity > 0.0 && state_.thermal.position.count() > 0) {
+    const auto mirror = [this](std::uint32_t s) {
+      const double weight = wall_temperature_sums_.value(1, s);
+      if (slot_thermal_[s] && weight > 0.0) {
+        conduction_temperature_[s] =
+            2.0 * slot_held_temperature_[s] - wall_temperature_sums_.value(0, s) / weight;
+      }
+    };
+    sum_pairs<FixedArithmetic>(
+        layout_, WallTemperatureTerm<D>{kernel_, temperature_, slot_is_gas_, slot_thermal_},
+        wall_temperature_sums_, {}, mirror);
   }
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < slots.size(); ++i) {
@@ -79,7 +103,7 @@ void Model<D>::dissipate(double tau) {
       slot_velocity_[k][slots[i]] = fixedpoint::to_real(momentum.at(k, i), m_scale) / gas_mass[i];
     }
   }
-  if (parameters_.heat_conductivity > 0.0) {
+  if (two_pass) {
     const auto keep = [this](std::uint32_t s) {
       for (int k = 0; k < D; ++k) {
         slot_heat_flux_[k][s] = heat_flux_sums_.value(k, s);
@@ -87,14 +111,16 @@ void Model<D>::dissipate(double tau) {
     };
     sum_pairs<FixedArithmetic>(layout_,
                                HeatFluxTerm<D>{kernel_, parameters_.heat_conductivity, volume_,
-                                               temperature_, slot_is_gas_},
+                                               conduction_temperature_, slot_conducts_},
                                heat_flux_sums_, {}, keep);
   }
   const double h = parameters_.support_radius;
   sum_pairs<FixedArithmetic>(layout_,
                              DissipationTerm<D>{kernel_, tau, parameters_.viscosity, 0.01 * h * h,
-                                                volume_, slot_velocity_, slot_heat_flux_,
-                                                slot_is_gas_},
+                                                parameters_.no_slip_walls, volume_, slot_velocity_,
+                                                slot_heat_flux_, slot_is_gas_, slot_conducts_,
+                                                two_pass ? 0.0 : parameters_.heat_conductivity,
+                                                conduction_temperature_},
                              dissipation_sums_);
   // Per particle: the exact impulse sum onto the momentum; then the heat, less the kinetic
   // energy the impulses themselves carry (sum_b tau P_ab / 2 - |J_a|^2 / (2 m_a): these add up
@@ -127,6 +153,19 @@ void Model<D>::dissipate(double tau) {
     }
   }
   faults.throw_if_any();
+  // The heat the thermal walls took in (a sum of exact per-particle totals, in slot order: the
+  // same for any thread count).
+  const double reference = parameters_.initial_temperature();
+  for (const std::uint32_t s : layout_.slots_of_set(thermal_set)) {
+    const double heat = dissipation_sums_.value(D, s);
+    wall_heat_ += heat;
+    wall_entropy_ += heat / slot_held_temperature_[s];
+    if (slot_held_temperature_[s] > reference) {
+      hot_wall_heat_out_ -= heat;
+    } else if (slot_held_temperature_[s] < reference) {
+      cold_wall_heat_in_ += heat;
+    }
+  }
   geometry_valid_ = false;
 }
 

@@ -87,7 +87,9 @@ Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state)
     : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
       kernel_(parameters_.support_radius),
       layout_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
-              {{"gas", state_.gas.position.count()}, {"dummy", state_.dummy.position.count()}}),
+              {{"gas", state_.gas.position.count()},
+               {"dummy", state_.dummy.position.count()},
+               {"thermal", state_.thermal.position.count()}}),
       walls_(parameters_.domain,
              std::max(parameters_.support_radius, parameters_.wall.radius) *
                  parameters_.cell_size_factor,
@@ -96,6 +98,13 @@ Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state)
       kernel_sums_(kernel_sum_quantities(parameters_)),
       heat_flux_sums_(heat_flux_quantities(parameters_)),
       dissipation_sums_(dissipation_quantities(parameters_)),
+      wall_temperature_sums_(
+          {SummedQuantity{"temperature_density",
+                          fixedpoint::Scale::covering(4.0 * initial_temperature(parameters_) *
+                                                          std::pow(parameters_.dr, -D),
+                                                      48)},
+           SummedQuantity{"number_density",
+                          fixedpoint::Scale::covering(std::pow(parameters_.dr, -D), 48)}}),
       flux_sums_(flux_quantities<D>(parameters_.entropy_flux_scale)),
       entropy_exchange_sums_({SummedQuantity{"entropy", state_.gas.entropy.info().scale}}),
       impulse_sums_(impulse_quantities<D>(parameters_.momentum_scale)) {}
@@ -139,10 +148,20 @@ void Model<D>::update_constants() {
     wall_position[k] = CarrierField<FixedArithmetic>{&state_.wall.position}.reals(k);
   }
   walls_.place(std::move(wall_position));
-  mass_ = CarrierField<FixedArithmetic>{&state_.gas.mass, &state_.dummy.mass}.reals();
+  mass_ = CarrierField<FixedArithmetic>{&state_.gas.mass, &state_.dummy.mass, &state_.thermal.mass}
+              .reals();
   is_gas_.assign(mass_.size(), 0);
   const std::span<std::uint8_t> gas = layout_.part_of_set(std::span(is_gas_), gas_set);
   std::fill(gas.begin(), gas.end(), 1);
+  // Who conducts heat: the gas and the thermal walls (at their held temperatures).
+  conducts_ = is_gas_;
+  const std::span<std::uint8_t> thermal = layout_.part_of_set(std::span(conducts_), thermal_set);
+  std::fill(thermal.begin(), thermal.end(), 1);
+  held_temperature_.assign(mass_.size(), 0.0);
+  const std::vector<double> held =
+      CarrierField<FixedArithmetic>{&state_.thermal.temperature}.reals();
+  std::copy(held.begin(), held.end(),
+            layout_.part_of_set(std::span(held_temperature_), thermal_set).begin());
   constants_valid_ = true;
 }
 
@@ -153,15 +172,20 @@ void Model<D>::update_geometry() {
   }
   update_constants();
   // The dissipation changes the gas's entropies: read at every rebuild.
-  entropy_ = CarrierField<FixedArithmetic>{&state_.gas.entropy, &state_.dummy.entropy}.reals();
+  entropy_ = CarrierField<FixedArithmetic>{&state_.gas.entropy, &state_.dummy.entropy,
+                                           &state_.thermal.entropy}
+                 .reals();
   if (!parameters_.particles_move && layout_built_) {
     // Particles at rest: the cells and pairs stand; only the entropies changed.
     layout_.gather(std::span<const double>(entropy_), slot_entropy_);
   } else {
-    layout_.build(CarrierField<FixedArithmetic>{&state_.gas.position, &state_.dummy.position},
+    layout_.build(CarrierField<FixedArithmetic>{&state_.gas.position, &state_.dummy.position,
+                                                &state_.thermal.position},
                   parameters_.support_radius, Gathered<double>{mass_, &slot_mass_},
                   Gathered<double>{entropy_, &slot_entropy_},
-                  Gathered<std::uint8_t>{is_gas_, &slot_is_gas_});
+                  Gathered<std::uint8_t>{is_gas_, &slot_is_gas_},
+                  Gathered<std::uint8_t>{conducts_, &slot_conducts_},
+                  Gathered<double>{held_temperature_, &slot_held_temperature_});
     walls_.find_near(layout_, parameters_.wall.radius);
     layout_built_ = true;
   }
@@ -442,9 +466,12 @@ EnergyBudget Model<D>::energy() {
     gravitational +=
         gas_mass[i] * parameters_.gravity * (height - parameters_.gravity_reference_height);
   }
-  // Dummy particles store internal energy too: their density follows the gas around them.
-  for (const std::uint32_t s : layout_.slots_of_set(dummy_set)) {
-    internal += slot_mass_[s] * specific_energy_[s];
+  // Dummy and thermal particles store internal energy too: their density follows the gas around
+  // them.
+  for (const std::size_t set : {dummy_set, thermal_set}) {
+    for (const std::uint32_t s : layout_.slots_of_set(set)) {
+      internal += slot_mass_[s] * specific_energy_[s];
+    }
   }
   PairSums<FloatArithmetic, 1> wall_sums(SummedQuantity{"wall_energy", fixedpoint::Scale()});
   sum_cross_pairs<FloatArithmetic>(
@@ -458,6 +485,10 @@ EnergyBudget Model<D>::energy() {
                        {"internal", internal},
                        {"gravitational", gravitational},
                        {"wall", wall}}};
+  if (state_.thermal.position.count() > 0) {
+    // The heat the thermal walls took in: with it the total is kept.
+    budget.terms.push_back({"thermal_walls", wall_heat_});
+  }
   if (parameters_.hyperbolic()) {
     // c_w sum_a V_a |w_a|^2 (§5.5, Fig. 13).
     const Field& flux = state_.gas.entropy_flux;
@@ -519,6 +550,13 @@ std::vector<EnergyTerm> Model<D>::diagnostics() {
   }
   terms.push_back({"entropy", static_cast<double>(entropy) *
                                   fixedpoint::to_real(1, state_.gas.entropy.info().scale)});
+  if (state_.thermal.position.count() > 0) {
+    // Since the run (or its restart) began: the entropy the walls gained, sum Q / T_w (with the
+    // gas's, it never decreases), and the heat the hot walls gave and the cold walls took.
+    terms.push_back({"thermal_wall_entropy", wall_entropy_});
+    terms.push_back({"heat_out_of_hot_walls", hot_wall_heat_out_});
+    terms.push_back({"heat_into_cold_walls", cold_wall_heat_in_});
+  }
   if (parameters_.volume == ParticleVolume::implicit) {
     // How well the volumes solve eq. (26): max over the gas of |sum_b W_ab V_b - 1|.
     update_geometry();

@@ -98,9 +98,10 @@ private:
   static std::string strang_dissipation(const Model& model);
   static std::string first_order_dissipation(const Model& model);
   std::string dissipation_description() const;
-  // The layout's sets: the gas, then the dummy particles.
+  // The layout's sets: the gas, the dummy particles, the thermal walls.
   static constexpr std::size_t gas_set = 0;
   static constexpr std::size_t dummy_set = 1;
+  static constexpr std::size_t thermal_set = 2;
   // The gas's part of a per-carrier array.
   std::span<const double> of_gas(const std::vector<double>& by_carrier) const {
     return layout_.part_of_set(std::span<const double>(by_carrier), gas_set);
@@ -126,13 +127,16 @@ private:
   WendlandQuintic<D> kernel_;
 
   bool constants_valid_ = false;
-  std::vector<double> mass_;         // carriers (gas, then dummies), canonical order
-  std::vector<double> entropy_;      // carriers, canonical order
-  std::vector<std::uint8_t> is_gas_; // carriers
+  std::vector<double> mass_;             // carriers (gas, then dummies), canonical order
+  std::vector<double> entropy_;          // carriers, canonical order
+  std::vector<std::uint8_t> is_gas_;     // carriers
+  std::vector<std::uint8_t> conducts_;   // carriers: the gas and the thermal walls
+  std::vector<double> held_temperature_; // carriers: a thermal wall's temperature, else 0
   bool geometry_valid_ = false;
   bool layout_built_ = false; // once built, particles at rest keep their layout
-  SlotLayout<D> layout_;      // carriers: the gas and the dummy particles
-  std::vector<std::uint8_t> slot_is_gas_;
+  SlotLayout<D> layout_;      // carriers: the gas, the dummy and the thermal particles
+  std::vector<std::uint8_t> slot_is_gas_, slot_conducts_;
+  std::vector<double> slot_held_temperature_;
   FixedTargets<D> walls_;
   std::vector<double> slot_mass_, slot_entropy_;
   PairSums<FixedArithmetic, 1> density_sums_; // sum_b m_b W_ab (eq. 32a): the mass volume
@@ -147,6 +151,13 @@ private:
   CoordinateArrays<D> slot_velocity_, slot_heat_flux_;
   PairSums<FixedArithmetic, D> heat_flux_sums_;
   PairSums<FixedArithmetic, D + 1> dissipation_sums_;
+  std::vector<double> conduction_temperature_; // by slot: T of the gas, mirrored T of the walls
+  std::vector<std::uint8_t> slot_thermal_;
+  PairSums<FixedArithmetic, 2> wall_temperature_sums_; // sum T W, sum W from the gas
+  // The heat the thermal walls took in since the run (or restart) began, in total, as the entropy
+  // they gained (sum Q / T_w), and split into what walls hotter than the initial gas gave out and
+  // colder ones took in (for Nusselt numbers).
+  double wall_heat_ = 0.0, wall_entropy_ = 0.0, hot_wall_heat_out_ = 0.0, cold_wall_heat_in_ = 0.0;
   PairMatrix kernel_matrix_, gas_matrix_; // implicit volume: W_ab over all carriers, the gas's
   Eigen::VectorXd implicit_volume_, implicit_pressure_, implicit_y_; // carriers
   // The hyperbolic heat conduction: w per slot, the w and S exchanges of a sub-step.

@@ -144,6 +144,19 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
                                                     format_scientific(p.heat_conductivity, 3) +
                                                     ")");
   }
+  const std::string conduction = case_file.string_or("physics.heat_conduction", "two_pass");
+  if (conduction == "pairwise") {
+    p.conduction = HeatConduction::pairwise;
+  } else if (conduction != "two_pass") {
+    case_file.fail("physics.heat_conduction",
+                   "expected \"two_pass\" or \"pairwise\", got \"" + conduction + "\"");
+  }
+  const std::string slip = case_file.string_or("physics.wall_slip", "free");
+  if (slip == "no_slip") {
+    p.no_slip_walls = true;
+  } else if (slip != "free") {
+    case_file.fail("physics.wall_slip", "expected \"free\" or \"no_slip\", got \"" + slip + "\"");
+  }
   const std::string splitting = case_file.string_or("dissipation.splitting", "strang");
   if (splitting == "first_order") {
     p.splitting = DissipationSplitting::first_order;
@@ -278,6 +291,25 @@ const KeyTable& case_keys() {
     t.add({"physics.heat_conductivity", T::number, "W/(m K^3)", "0",
            "lambda_F of the Fourier heat conduction lambda(T) = lambda_F T^2, paper 4 eq. (51); "
            ">= 0 (0: off)"});
+    t.add({"physics.heat_conduction",
+           T::string,
+           "-",
+           "\"two_pass\"",
+           "the discretisation of the heat conduction: \"two_pass\", the paper's q = lambda "
+           "G(1/T) and its divergence (eqs. 54-56); \"pairwise\", one pass, Q_ab = 2 lambda_F "
+           "V_a V_b (W'/r) (T_a - T_b), which makes entropy pair by pair and holds a wall's "
+           "temperature at its surface",
+           {"two_pass", "pairwise"}});
+    t.add({"physics.wall_slip",
+           T::string,
+           "-",
+           "\"free\"",
+           "\"no_slip\": the viscosity of eq. (60) also acts between the gas and the dummy and "
+           "thermal particles, which are at rest; \"free\": it does not",
+           {"free", "no_slip"}});
+    t.add({"particles[].temperature", T::number, "K", "required for kind = \"thermal\"",
+           "the temperature a thermal wall (heater, cooler) is held at; > 0. Its particles conduct "
+           "heat to the gas (eqs. 51-56) and take part in the kernel sums like dummies"});
     t.add({"physics.particles_move", T::boolean, "-", "true",
            "false holds every gas particle at its place (kick and drift do nothing): a heat "
            "conducting solid, as the hyperbolic heat conduction of paper 4 §5.5 needs"});
@@ -315,7 +347,7 @@ const KeyTable& case_keys() {
         "the initial state"));
     t.add(wall_case_keys("paper 1 eq. 7"));
     t.add(domain_case_keys());
-    t.add(particle_block_case_keys({"gas", "wall", "dummy"}));
+    t.add(particle_block_case_keys({"gas", "wall", "dummy", "thermal"}));
     t.add({"fixed_point.position_exponent", T::integer, "-",
            "covers the domain with 52 fraction bits",
            "positions are stored as integers times 2^exponent"});

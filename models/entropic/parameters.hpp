@@ -26,6 +26,11 @@ enum class ParticleVolume { mass, entropic, direct, implicit, mixed };
 // paper's first-order explicit update, kept for comparison).
 enum class DissipationSplitting { strang, first_order };
 
+// The discretisation of Fourier's heat conduction: the paper's two passes, q = lambda G(1/T) then
+// its divergence (eqs. 54-56), or one pass over pairs (dissipation_terms.hpp), whose wider-stencil
+// error at a wall held at a temperature is smaller (README).
+enum class HeatConduction { two_pass, pairwise };
+
 template <int D>
 struct Parameters {
   // [physics]
@@ -37,7 +42,11 @@ struct Parameters {
   // lambda(T) = lambda_F T^2 of eq. (51); 0: off.
   double viscosity = 0.0;
   double heat_conductivity = 0.0; // lambda_F
+  HeatConduction conduction = HeatConduction::two_pass;
   DissipationSplitting splitting = DissipationSplitting::strang;
+  // Whether the viscosity acts between the gas and the dummy and thermal particles (at rest):
+  // no-slip walls. Otherwise the walls are free-slip.
+  bool no_slip_walls = false;
   bool dissipative() const { return viscosity > 0.0 || heat_conductivity > 0.0; }
   // Particles held at their places (physics.particles_move = false): the kick and the drift do
   // nothing. The hyperbolic heat conduction of §5.5 is derived for particles at rest.

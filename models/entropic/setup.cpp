@@ -17,7 +17,7 @@ namespace revsph::entropic {
 
 namespace {
 
-constexpr std::string_view particle_kinds[] = {"gas", "wall", "dummy"};
+constexpr std::string_view particle_kinds[] = {"gas", "wall", "dummy", "thermal"};
 // Memory per particle, generously: state (~(2 D + 2) * 8 B), slot copies, a dozen per-slot
 // arrays (density, volume, thermodynamic state, force coefficients), the kernel and impulse sums
 // and the cell list ~400 B, plus 4 B per neighbour in the lists and as much again while they are
@@ -107,11 +107,31 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   // and the entropy S = m sigma of the initial state (eq. 21 with uniform sigma).
   const double specific_entropy = parameters.initial_specific_entropy();
   // Dummy particles get the same mass and entropy per lattice cell.
-  std::vector<Vec<D>> gas_positions, wall_positions, dummy_positions;
+  // Thermal particles get the gas's entropy, like dummies: their pressure, which holds the gas
+  // off the wall, is then the gas's. (The entropy of their held temperature would give the
+  // stiffened gas of the cavity cases a pressure of -47 at a cooler: it sucked the gas in.) Only
+  // the conduction sees their held temperature.
+  std::vector<Vec<D>> gas_positions, wall_positions, dummy_positions, thermal_positions;
   std::vector<double> gas_masses, gas_entropies, dummy_masses, dummy_entropies;
+  std::vector<double> thermal_masses, thermal_entropies, thermal_temperatures;
   for (const auto& block : blocks) {
+    const std::string temperature_key = block.key + ".temperature";
+    if (block.kind != "thermal" && case_file.has(temperature_key)) {
+      case_file.fail(temperature_key, "only for kind = \"thermal\" (a wall held at a temperature)");
+    }
     if (block.kind == "wall") {
       wall_positions.insert(wall_positions.end(), block.positions.begin(), block.positions.end());
+      continue;
+    }
+    if (block.kind == "thermal") {
+      const double held = case_file.positive_number(temperature_key);
+      const double mass = parameters.initial_density * block.volume_per_particle;
+      thermal_positions.insert(thermal_positions.end(), block.positions.begin(),
+                               block.positions.end());
+      thermal_masses.insert(thermal_masses.end(), block.positions.size(), mass);
+      thermal_entropies.insert(thermal_entropies.end(), block.positions.size(),
+                               mass * specific_entropy);
+      thermal_temperatures.insert(thermal_temperatures.end(), block.positions.size(), held);
       continue;
     }
     const bool dummy = block.kind == "dummy";
@@ -129,6 +149,9 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   apply_temperature_gradient<D>(case_file, parameters, gas_positions, gas_masses, gas_entropies);
   double largest_mass = *std::max_element(gas_masses.begin(), gas_masses.end());
   for (const double m : dummy_masses) {
+    largest_mass = std::max(largest_mass, m);
+  }
+  for (const double m : thermal_masses) {
     largest_mass = std::max(largest_mass, m);
   }
   // initial.density * lattice cell volume can overflow or underflow even when both are valid.
@@ -160,6 +183,21 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   fill_scalars(case_file, "fixed_point.entropy_exponent", dummy_entropies, state.dummy.entropy,
                "entropy");
   fill_scalars(case_file, "initial.density", dummy_masses, state.dummy.mass, "mass");
+  state.thermal.position.set_scale(parameters.position_scale);
+  state.thermal.entropy.set_scale(parameters.entropy_scale);
+  state.thermal.mass.set_scale(state.gas.mass.info().scale);
+  state.thermal.temperature.set_scale(fixedpoint::Scale::covering(
+      std::max(parameters.initial_temperature(),
+               thermal_temperatures.empty()
+                   ? 0.0
+                   : *std::max_element(thermal_temperatures.begin(), thermal_temperatures.end())),
+      52));
+  fill_vectors<D>(case_file, thermal_positions, state.thermal.position, "position");
+  fill_scalars(case_file, "fixed_point.entropy_exponent", thermal_entropies, state.thermal.entropy,
+               "entropy");
+  fill_scalars(case_file, "initial.density", thermal_masses, state.thermal.mass, "mass");
+  fill_scalars(case_file, "particles", thermal_temperatures, state.thermal.temperature,
+               "temperature");
 
   SimulationInfo info;
   info.case_name = case_name(case_file);

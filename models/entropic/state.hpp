@@ -53,7 +53,7 @@ struct Wall {
 // Dummy particles (as paper 1 App. A): fixed, they take part in the kernel sums and the pair
 // forces like gas particles (the paper's "dummy particles outside", §3.4), with their own mass
 // and entropy, so that the sums near a wall are not cut. They do not move, and the dissipation
-// leaves them out (adiabatic, free-slip).
+// leaves them out (adiabatic; free-slip unless physics.wall_slip = "no_slip").
 template <int D>
 struct Dummy {
   static constexpr SetInfo set{.name = "dummy", .motion = Motion::fixed};
@@ -63,14 +63,29 @@ struct Dummy {
   auto fields() { return std::tie(position, entropy, mass); }
 };
 
+// Thermal wall particles (a heater or a cooler): dummy particles held at their own temperature
+// that also conduct heat to and from the gas (§5.1 conduction with T_b fixed). Their entropy,
+// the initial gas's, gives their pressure in the kernel sums, as for a dummy; the held
+// temperature is what the conduction sees.
+template <int D>
+struct Thermal {
+  static constexpr SetInfo set{.name = "thermal", .motion = Motion::fixed};
+  Field position{{.name = "position", .unit = "m", .components = D, .evolved = false}};
+  Field entropy{{.name = "entropy", .unit = entropy_unit<D>, .evolved = false}};
+  Field mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
+  Field temperature{{.name = "temperature", .unit = "K", .evolved = false}};
+  auto fields() { return std::tie(position, entropy, mass, temperature); }
+};
+
 template <int D>
 struct State {
   Gas<D> gas;
   Wall<D> wall;
   Dummy<D> dummy;
+  Thermal<D> thermal;
 
   State() { declare_state(*this); }
-  auto sets() { return std::tie(gas, wall, dummy); }
+  auto sets() { return std::tie(gas, wall, dummy, thermal); }
 };
 
 } // namespace revsph::entropic

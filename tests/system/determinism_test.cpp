@@ -59,7 +59,8 @@ INSTANTIATE_TEST_SUITE_P(BothModels, Determinism,
                                            DeterminismCase{"twisting-column-small", 8},
                                            DeterminismCase{"expansion-small", 300},
                                            DeterminismCase{"box-small", 200},
-                                           DeterminismCase{"hyperbolic-small", 300}),
+                                           DeterminismCase{"hyperbolic-small", 300},
+                                           DeterminismCase{"cavity-small", 200}),
                          [](const ::testing::TestParamInfo<DeterminismCase>& param_info) {
                            std::string name = param_info.param.name;
                            std::replace(name.begin(), name.end(), '-', '_');

@@ -44,6 +44,12 @@ std::vector<Defect> defects() {
        "hyperbolic_heat.energy_coefficient", "must be >= 0 and finite (got -1"},
       {"zero_relaxation_time", "hyperbolic_heat.relaxation_time=0",
        "hyperbolic_heat.relaxation_time", "must be > 0"},
+      {"temperature_on_a_gas_block", "particles[0].temperature=1.0", "particles[0].temperature",
+       "only for kind = \"thermal\""},
+      {"thermal_block_without_temperature", "particles[0].kind=thermal", "particles[0].temperature",
+       "missing required key"},
+      {"unknown_wall_slip", "physics.wall_slip=sticky", "physics.wall_slip",
+       "expected \"free\" or \"no_slip\", got \"sticky\""},
       {"gradient_below_absolute_zero", "initial.temperature_gradient=[1000.0, 0.0]",
        "initial.temperature_gradient", "gives a temperature <= 0 K"},
   };

@@ -1,0 +1,139 @@
+#!/usr/bin/python3
+"""Natural convection in a side-heated square cavity with entropic SPH against the benchmark of
+de Vahl Davis (1983): the mean Nusselt number over time, and the flow at the end.
+
+Usage: /usr/bin/python3 tools/plots/entropic_cavity.py [--make-runs] [--runs DIR] [--out DIR]
+           [--revsph PATH] [--threads N] [--only NAME ...]
+
+--make-runs runs the cases models/entropic/cases/cavity-*.toml into RUNS/NAME (default RUNS =
+out/entropic; Ra = 1e4 takes about 3 minutes on 2 threads, Ra = 1e5 about 40, the conduction
+check 1). Writes into --out (default docs/figures):
+  entropic_cavity.png  the Nusselt numbers of the hot and the cold wall over time against the
+                       benchmark, and the temperature field with the velocities at the end.
+  entropic_cavity.csv  run, time, Nu of the hot wall, Nu of the cold wall.
+  entropic_cavity.md   the measured and reference numbers (also printed).
+
+The Nusselt number of a wall is the heat it passes per unit time over that of pure conduction
+across the cavity, lambda dT H / L (2D, per unit depth): Nu = Qdot L / (lambda dT H). The model
+reports the heat the hot walls gave out and the cold walls took in since the start
+(diagnostics.csv); Qdot is its slope over windows of 1/30 of the run. The mean Nu is the mean
+of the two walls over the last quarter of the run. The conduction check (gravity off) must give
+Nu = 1 at its end: what it gives instead is the discretisation's own bias at the walls.
+"""
+
+import sys
+from pathlib import Path
+
+import h5py
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from revsph_runs import (  # noqa: E402
+    REPO,
+    case_of,
+    figure_parser,
+    figure_script_main,
+    read_csv,
+    save_figure,
+    snapshots,
+)
+
+CASES = REPO / "models" / "entropic" / "cases"
+RUNS = {
+    "cavity-conduction": ["run", str(CASES / "cavity-ra1e4.toml"), "--set", "physics.gravity=0",
+                          "--set", "physics.heat_conductivity=474.7120999711",
+                          "--set", "run.t_end=6"],
+    "cavity-ra1e4": ["run", str(CASES / "cavity-ra1e4.toml")],
+    "cavity-ra1e5": ["run", str(CASES / "cavity-ra1e5.toml")],
+}
+# de Vahl Davis (1983), Int. J. Numer. Methods Fluids 3, 249-264: mean Nusselt numbers of the
+# benchmark solution (Pr = 0.71).
+REFERENCE = {"cavity-ra1e4": 2.243, "cavity-ra1e5": 4.519, "cavity-conduction": 1.0}
+
+
+def nusselt_series(run):
+    case = case_of(run)
+    diagnostics = read_csv(run / "diagnostics.csv")
+    held = [block["temperature"] for block in case["particles"] if block["kind"] == "thermal"]
+    gas = next(block for block in case["particles"] if block["kind"] == "gas")
+    width = gas["max"][0] - gas["min"][0]
+    height = gas["max"][1] - gas["min"][1]
+    conduction = case["physics"]["heat_conductivity"] * (max(held) - min(held)) * height / width
+    t = diagnostics["time"]
+    window = max(1, len(t) // 30)
+    mid = 0.5 * (t[window:] + t[:-window])
+    dt = t[window:] - t[:-window]
+    hot = (diagnostics["heat_out_of_hot_walls"][window:]
+           - diagnostics["heat_out_of_hot_walls"][:-window]) / dt / conduction
+    cold = (diagnostics["heat_into_cold_walls"][window:]
+            - diagnostics["heat_into_cold_walls"][:-window]) / dt / conduction
+    last = t >= 0.75 * t[-1]
+    mean_hot = (np.interp(t[-1], t, diagnostics["heat_out_of_hot_walls"])
+                - np.interp(t[last][0], t, diagnostics["heat_out_of_hot_walls"]))
+    mean_cold = (np.interp(t[-1], t, diagnostics["heat_into_cold_walls"])
+                 - np.interp(t[last][0], t, diagnostics["heat_into_cold_walls"]))
+    span = t[-1] - t[last][0]
+    return mid, hot, cold, mean_hot / span / conduction, mean_cold / span / conduction
+
+
+def make_figures(runs, out, report, names):
+    fig, axes = plt.subplots(1, 1 + len(names), figsize=(5.2 * (1 + len(names)), 4.6))
+    rows = []
+    for index, name in enumerate(names):
+        run = runs / name
+        mid, hot, cold, mean_hot, mean_cold = nusselt_series(run)
+        colour = f"C{index}"
+        axes[0].plot(mid, hot, "-", color=colour, label=f"{name}: hot wall")
+        axes[0].plot(mid, cold, "--", color=colour, label=f"{name}: cold wall")
+        axes[0].axhline(REFERENCE[name], color=colour, linestyle=":", linewidth=1)
+        rows += [(name, t, h, c) for t, h, c in zip(mid, hot, cold)]
+        mean = 0.5 * (mean_hot + mean_cold)
+        report += [
+            (f"{name}: mean Nu over the last quarter (hot, cold)",
+             f"{mean:.4f} ({mean_hot:.4f}, {mean_cold:.4f})"),
+            (f"{name}: reference (de Vahl Davis 1983; conduction: 1)", f"{REFERENCE[name]}"),
+            (f"{name}: relative difference", f"{mean / REFERENCE[name] - 1:+.2%}"),
+        ]
+        with h5py.File(snapshots(run)[-1]) as f:
+            gas = f["particles/gas"]
+            x, v, temperature = gas["position"][:], gas["velocity"][:], gas["temperature"][:]
+            time = float(f.attrs["time"])
+        ax = axes[1 + index]
+        picture = ax.scatter(x[:, 0], x[:, 1], c=temperature, s=6, cmap="coolwarm")
+        every = max(1, len(x) // 400)
+        ax.quiver(x[::every, 0], x[::every, 1], v[::every, 0], v[::every, 1], width=0.003)
+        ax.set_aspect("equal")
+        ax.set_title(f"{name}, t = {time:.1f} s")
+        fig.colorbar(picture, ax=ax, label="T (K)", shrink=0.8)
+    axes[0].set_xlabel("t (s)")
+    axes[0].set_ylabel("Nu")
+    axes[0].set_ylim(0, None)
+    axes[0].grid(True, alpha=0.3)
+    axes[0].legend(fontsize=7)
+    axes[0].set_title("Nusselt numbers (dotted: de Vahl Davis)")
+    save_figure(fig, out / "entropic_cavity.png")
+    with open(out / "entropic_cavity.csv", "w") as f:
+        f.write("run,time,nusselt_hot,nusselt_cold\n")
+        for name, t, h, c in rows:
+            f.write(f"{name},{t:.6g},{h:.6g},{c:.6g}\n")
+
+
+def main():
+    parser = figure_parser(__doc__)
+    parser.set_defaults(runs="out/entropic", out=str(REPO / "docs" / "figures"))
+    parser.add_argument("--only", nargs="*", default=list(RUNS))
+    args = parser.parse_args()
+    names = [n for n in RUNS if n in args.only]
+    table = {n: RUNS[n] for n in names}
+    return figure_script_main(
+        args, table,
+        [(names, lambda runs, out, report: make_figures(runs, out, report, names))],
+        "entropic_cavity.md")
+
+
+if __name__ == "__main__":
+    sys.exit(main())
