@@ -48,6 +48,16 @@ std::array<SummedQuantity, D> flux_quantities(const fixedpoint::Scale& scale) {
   return quantities;
 }
 
+// The scale of the thermal walls' temperatures: the hottest wall (1 K without walls).
+template <int D>
+double largest_held_temperature(const State<D>& state) {
+  double largest = 1.0;
+  for (const std::int64_t raw : state.thermal.temperature.component(0)) {
+    largest = std::max(largest, fixedpoint::to_real(raw, state.thermal.temperature.info().scale));
+  }
+  return largest;
+}
+
 template <int D>
 double initial_temperature(const Parameters<D>& parameters) {
   return parameters.initial_temperature();
@@ -100,7 +110,7 @@ Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state)
       dissipation_sums_(dissipation_quantities(parameters_)),
       wall_temperature_sums_(
           {SummedQuantity{"temperature_density",
-                          fixedpoint::Scale::covering(4.0 * initial_temperature(parameters_) *
+                          fixedpoint::Scale::covering(4.0 * largest_held_temperature(state_) *
                                                           std::pow(parameters_.dr, -D),
                                                       48)},
            SummedQuantity{"number_density",

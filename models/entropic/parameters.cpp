@@ -252,7 +252,16 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
                                   ? std::sqrt(p.initial_density * p.heat_capacity() *
                                               p.initial_temperature() / p.flux_energy_coefficient)
                                   : 1.0;
+  require_positive_finite(case_file, "hyperbolic_heat.energy_coefficient",
+                          "sqrt(rho c_V T0 / c_w), the scale of the entropy flux w", largest_flux);
   p.entropy_flux_scale = scale_or(case_file, "fixed_point.entropy_flux_exponent", largest_flux, 48);
+  // The heat flux q of eq. (54) reaches about lambda_F T0^2 / h (model.cpp).
+  if (p.heat_conductivity > 0.0) {
+    const double t0 = p.initial_temperature();
+    require_positive_finite(case_file, "physics.heat_conductivity",
+                            "lambda_F T0^2 / h, the scale of the heat flux",
+                            p.heat_conductivity * t0 * t0 / p.support_radius);
+  }
   return p;
 }
 

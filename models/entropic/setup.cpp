@@ -187,10 +187,9 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   state.thermal.entropy.set_scale(parameters.entropy_scale);
   state.thermal.mass.set_scale(state.gas.mass.info().scale);
   state.thermal.temperature.set_scale(fixedpoint::Scale::covering(
-      std::max(parameters.initial_temperature(),
-               thermal_temperatures.empty()
-                   ? 0.0
-                   : *std::max_element(thermal_temperatures.begin(), thermal_temperatures.end())),
+      thermal_temperatures.empty()
+          ? 1.0
+          : *std::max_element(thermal_temperatures.begin(), thermal_temperatures.end()),
       52));
   fill_vectors<D>(case_file, thermal_positions, state.thermal.position, "position");
   fill_scalars(case_file, "fixed_point.entropy_exponent", thermal_entropies, state.thermal.entropy,

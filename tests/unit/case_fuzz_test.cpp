@@ -787,6 +787,18 @@ TEST(CaseFuzz, MutantsOfExpansionSmall) {
   fuzz({"expansion-small", "dr = 0.05", "dr = 0.1", 8000, 2, false});
 }
 
+TEST(CaseFuzz, MutantsOfCavitySmall) {
+  // The entropic model's walls: thermal blocks and their temperatures, no-slip, the pairwise
+  // conduction, gravity; dr 0.1: 100 gas and about 130 wall particles.
+  fuzz({"cavity-small", "dr = 0.05", "dr = 0.1", 8000, 3, false});
+}
+
+TEST(CaseFuzz, MutantsOfHyperbolicSmall) {
+  // The entropic model's hyperbolic heat conduction: particles at rest, the flux energy, the
+  // temperature gradient, the stiffened gas; dr 0.1: 50 gas particles.
+  fuzz({"hyperbolic-small", "dr = 0.05", "dr = 0.1", 8000, 4, false});
+}
+
 TEST(CaseFuzz, MutantsOfDambreakSmall3D) {
   // dr 0.125: 16 fluid and about 300 wall particles.
   fuzz({"dambreak-3d-small", "dr = 0.025", "dr = 0.125", 8000, 1});
