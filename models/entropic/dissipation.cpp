@@ -73,11 +73,18 @@ void Model<D>::dissipate(double tau) {
   const bool two_pass =
       parameters_.heat_conductivity > 0.0 && parameters_.conduction == HeatConduction::two_pass;
   for (int k = 0; k < D; ++k) {
-    slot_velocity_[k].assign(n, 0.0); // the walls are at rest
+    slot_velocity_[k].assign(n, 0.0); // the walls: at rest, or mirrored below
     slot_heat_flux_[k].resize(two_pass ? n : 0);
   }
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < slots.size(); ++i) {
+    for (int k = 0; k < D; ++k) {
+      slot_velocity_[k][slots[i]] = fixedpoint::to_real(momentum.at(k, i), m_scale) / gas_mass[i];
+    }
+  }
   // The temperature conduction sees: the gas's own; a thermal wall's held one, mirrored across
-  // the wall by the gas near it (dissipation_terms.hpp, WallTemperatureTerm).
+  // the wall by the gas near it; and with no-slip walls the walls' velocities, mirrored too
+  // (dissipation_terms.hpp, WallMirrorTerm).
   conduction_temperature_.resize(n);
   slot_thermal_.resize(n);
 #pragma omp parallel for schedule(static)
@@ -85,23 +92,29 @@ void Model<D>::dissipate(double tau) {
     conduction_temperature_[s] = slot_is_gas_[s] ? temperature_[s] : slot_held_temperature_[s];
     slot_thermal_[s] = slot_conducts_[s] && !slot_is_gas_[s];
   }
-  if (parameters_.heat_conductivity > 0.0 && state_.thermal.position.count() > 0) {
-    const auto mirror = [this](std::uint32_t s) {
-      const double weight = wall_temperature_sums_.value(1, s);
-      if (slot_thermal_[s] && weight > 0.0) {
+  const bool mirror_temperature =
+      parameters_.heat_conductivity > 0.0 && state_.thermal.position.count() > 0;
+  const bool mirror_velocity = parameters_.no_slip_walls && parameters_.viscosity > 0.0;
+  if (mirror_temperature || mirror_velocity) {
+    // Each wall slot's own entries only: the pass reads the gas's temperatures and velocities.
+    const auto mirror = [&](std::uint32_t s) {
+      const double weight = wall_mirror_sums_.value(D + 1, s);
+      if (slot_is_gas_[s] || !(weight > 0.0)) {
+        return;
+      }
+      if (mirror_temperature && slot_thermal_[s]) {
         conduction_temperature_[s] =
-            2.0 * slot_held_temperature_[s] - wall_temperature_sums_.value(0, s) / weight;
+            2.0 * slot_held_temperature_[s] - wall_mirror_sums_.value(0, s) / weight;
+      }
+      if (mirror_velocity) {
+        for (int k = 0; k < D; ++k) {
+          slot_velocity_[k][s] = -wall_mirror_sums_.value(1 + k, s) / weight;
+        }
       }
     };
     sum_pairs<FixedArithmetic>(
-        layout_, WallTemperatureTerm<D>{kernel_, temperature_, slot_is_gas_, slot_thermal_},
-        wall_temperature_sums_, {}, mirror);
-  }
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < slots.size(); ++i) {
-    for (int k = 0; k < D; ++k) {
-      slot_velocity_[k][slots[i]] = fixedpoint::to_real(momentum.at(k, i), m_scale) / gas_mass[i];
-    }
+        layout_, WallMirrorTerm<D>{kernel_, temperature_, slot_velocity_, slot_is_gas_},
+        wall_mirror_sums_, {}, mirror);
   }
   if (two_pass) {
     const auto keep = [this](std::uint32_t s) {

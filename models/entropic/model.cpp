@@ -108,16 +108,28 @@ Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state)
       kernel_sums_(kernel_sum_quantities(parameters_)),
       heat_flux_sums_(heat_flux_quantities(parameters_)),
       dissipation_sums_(dissipation_quantities(parameters_)),
-      wall_temperature_sums_(
-          {SummedQuantity{"temperature_density",
-                          fixedpoint::Scale::covering(4.0 * largest_held_temperature(state_) *
-                                                          std::pow(parameters_.dr, -D),
-                                                      48)},
-           SummedQuantity{"number_density",
-                          fixedpoint::Scale::covering(std::pow(parameters_.dr, -D), 48)}}),
+      wall_mirror_sums_(wall_mirror_quantities(parameters_, state_)),
       flux_sums_(flux_quantities<D>(parameters_.entropy_flux_scale)),
       entropy_exchange_sums_({SummedQuantity{"entropy", state_.gas.entropy.info().scale}}),
       impulse_sums_(impulse_quantities<D>(parameters_.momentum_scale)) {}
+
+// sum W T: 4 times the hottest wall over dr^D; sum W v: 4 times the sound speed over dr^D;
+// sum W: the number density; each with 48 bits.
+template <int D>
+std::array<SummedQuantity, D + 2> Model<D>::wall_mirror_quantities(const Parameters<D>& parameters,
+                                                                   const State<D>& state) {
+  const double density = std::pow(parameters.dr, -D);
+  std::array<SummedQuantity, D + 2> quantities{};
+  quantities[0] = {"temperature_density", fixedpoint::Scale::covering(
+                                              4.0 * largest_held_temperature(state) * density, 48)};
+  for (int k = 0; k < D; ++k) {
+    quantities[1 + k] = {
+        "velocity_density",
+        fixedpoint::Scale::covering(4.0 * parameters.initial_sound_speed() * density, 48)};
+  }
+  quantities[D + 1] = {"number_density", fixedpoint::Scale::covering(density, 48)};
+  return quantities;
+}
 
 template <int D>
 std::span<const Substep<Model<D>>> Model<D>::palindrome() {

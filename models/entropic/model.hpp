@@ -153,7 +153,10 @@ private:
   PairSums<FixedArithmetic, D + 1> dissipation_sums_;
   std::vector<double> conduction_temperature_; // by slot: T of the gas, mirrored T of the walls
   std::vector<std::uint8_t> slot_thermal_;
-  PairSums<FixedArithmetic, 2> wall_temperature_sums_; // sum T W, sum W from the gas
+  // The scales of the wall mirror sums.
+  static std::array<SummedQuantity, D + 2> wall_mirror_quantities(const Parameters<D>& parameters,
+                                                                  const State<D>& state);
+  PairSums<FixedArithmetic, D + 2> wall_mirror_sums_; // sum W T, sum W v, sum W from the gas
   // The heat the thermal walls took in since the run (or restart) began, in total, as the entropy
   // they gained (sum Q / T_w), and split into what walls hotter than the initial gas gave out and
   // colder ones took in (for Nusselt numbers).
