@@ -60,7 +60,8 @@ INSTANTIATE_TEST_SUITE_P(BothModels, Determinism,
                                            DeterminismCase{"expansion-small", 300},
                                            DeterminismCase{"box-small", 200},
                                            DeterminismCase{"hyperbolic-small", 300},
-                                           DeterminismCase{"cavity-small", 200}),
+                                           DeterminismCase{"cavity-small", 200},
+                                           DeterminismCase{"tube-1d", 300}),
                          [](const ::testing::TestParamInfo<DeterminismCase>& param_info) {
                            std::string name = param_info.param.name;
                            std::replace(name.begin(), name.end(), '-', '_');
