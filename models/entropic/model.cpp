@@ -48,10 +48,11 @@ std::array<SummedQuantity, D> flux_quantities(const fixedpoint::Scale& scale) {
   return quantities;
 }
 
-// The scale of the thermal walls' temperatures: the hottest wall (1 K without walls).
+// The largest temperature the gas near a thermal wall should reach: the hottest wall or the
+// initial gas temperature, whichever is larger.
 template <int D>
-double largest_held_temperature(const State<D>& state) {
-  double largest = 1.0;
+double largest_held_temperature(const State<D>& state, double initial_gas_temperature) {
+  double largest = initial_gas_temperature;
   for (const std::int64_t raw : state.thermal.temperature.component(0)) {
     largest = std::max(largest, fixedpoint::to_real(raw, state.thermal.temperature.info().scale));
   }
@@ -120,8 +121,10 @@ std::array<SummedQuantity, D + 2> Model<D>::wall_mirror_quantities(const Paramet
                                                                    const State<D>& state) {
   const double density = std::pow(parameters.dr, -D);
   std::array<SummedQuantity, D + 2> quantities{};
-  quantities[0] = {"temperature_density", fixedpoint::Scale::covering(
-                                              4.0 * largest_held_temperature(state) * density, 48)};
+  quantities[0] = {
+      "temperature_density",
+      fixedpoint::Scale::covering(
+          4.0 * largest_held_temperature(state, parameters.initial_temperature()) * density, 48)};
   for (int k = 0; k < D; ++k) {
     quantities[1 + k] = {
         "velocity_density",
