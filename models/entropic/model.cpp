@@ -49,9 +49,12 @@ std::array<SummedQuantity, D> flux_quantities(const fixedpoint::Scale& scale) {
 }
 
 // The largest temperature the gas near a thermal wall should reach: the hottest wall or the
-// initial gas temperature, whichever is larger.
+// initial gas temperature, whichever is larger (1 K without thermal walls: the sums are unused).
 template <int D>
 double largest_held_temperature(const State<D>& state, double initial_gas_temperature) {
+  if (state.thermal.temperature.count() == 0) {
+    return 1.0;
+  }
   double largest = initial_gas_temperature;
   for (const std::int64_t raw : state.thermal.temperature.component(0)) {
     largest = std::max(largest, fixedpoint::to_real(raw, state.thermal.temperature.info().scale));

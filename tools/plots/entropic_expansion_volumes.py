@@ -1,0 +1,120 @@
+#!/usr/bin/python3
+"""Paper 4 §4.6 (Figs. 8-9): the adiabatic expansion with the mass, entropic, direct and mixed
+particle volumes, their temperature profiles along the vessel compared.
+
+Usage: /usr/bin/python3 tools/plots/entropic_expansion_volumes.py [--make-runs] [--runs DIR]
+           [--out DIR] [--revsph PATH] [--threads N] [--times T ...]
+
+--make-runs runs `expansion-small` refined to dr = 0.025 (1 560 gas particles, Courant number
+0.01, t = 15) once per volume into RUNS/mass, RUNS/entropic, RUNS/direct, RUNS/mixed (default
+RUNS = out/entropic-volumes; about 1 minute each on 1 thread). The entropic volume needs positive
+particle entropies, so all four start at initial.pressure = 30 (sigma = c_V ln(30 / 10^1.4) =
+0.18 > 0; at the case's p = 10 sigma is negative). For each of --times (default 1.5, 7.5, 15 s;
+the nearest snapshot) the gas is cut into 20 slices along x and the mass-weighted mean
+temperature of each slice compared. Writes into --out (default docs/figures):
+  entropic_expansion_volumes.png  the profiles, one panel per time;
+  entropic_expansion_volumes.csv  time, slice centre, mean T per volume;
+  entropic_expansion_volumes.md   the largest difference from the mass volume, per volume and
+                                  time, relative to the mean temperature (also printed).
+"""
+
+import sys
+from pathlib import Path
+
+import h5py
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from revsph_runs import (  # noqa: E402
+    REPO,
+    figure_parser,
+    figure_script_main,
+    save_figure,
+    snapshots,
+)
+
+VOLUMES = ["mass", "entropic", "direct", "mixed"]
+SLICES = np.linspace(0.0, 2.0, 21)
+# expansion-small at dr = 0.025: the gas block and the slit wall move with dr (README,
+# "Expansion at lower resolution").
+REFINED = ["--set", "discretisation.dr=0.025", "--set", "particles[0].max=[0.975, 1.0]",
+           "--set", "particles[2].min=[0.975, 0.0]", "--set", "particles[2].max=[1.025, 0.4]",
+           "--set", "particles[3].min=[0.975, 0.6]", "--set", "particles[3].max=[1.025, 1.0]",
+           "--set", "initial.pressure=30.0", "--set", "output.snapshot_every=1000",
+           "--t-end", "15"]
+RUNS = {v: ["run", "expansion-small", *REFINED, "--set", f"physics.particle_volume={v}"]
+        for v in VOLUMES}
+
+
+def profile(path):
+    with h5py.File(path) as f:
+        gas = f["particles/gas"]
+        x = gas["position"][:, 0]
+        temperature = gas["temperature"][:]
+        mass = gas["density"][:] * gas["volume"][:]
+        time = float(f.attrs["time"])
+    which = np.digitize(x, SLICES) - 1
+    means = np.full(len(SLICES) - 1, np.nan)
+    for k in range(len(means)):
+        inside = which == k
+        if inside.any():
+            means[k] = np.sum(mass[inside] * temperature[inside]) / np.sum(mass[inside])
+    return time, means
+
+
+def nearest(run, time):
+    best = None
+    for path in snapshots(run):
+        with h5py.File(path) as f:
+            t = float(f.attrs["time"])
+        if best is None or abs(t - time) < abs(best[0] - time):
+            best = (t, path)
+    return best[1]
+
+
+def make_figures(runs, out, report, times):
+    centres = 0.5 * (SLICES[1:] + SLICES[:-1])
+    fig, axes = plt.subplots(1, len(times), figsize=(5.2 * len(times), 4.2), sharey=True)
+    rows = []
+    for ax, wanted in zip(np.atleast_1d(axes), times):
+        profiles = {v: profile(nearest(runs / v, wanted)) for v in VOLUMES}
+        time = profiles["mass"][0]
+        for volume in VOLUMES:
+            ax.plot(centres, profiles[volume][1], ".-", label=volume)
+        ax.set_title(f"t = {time:.2f} s")
+        ax.set_xlabel("x (m)")
+        ax.grid(True, alpha=0.3)
+        reference = profiles["mass"][1]
+        scale = np.nanmean(reference)
+        for volume in VOLUMES[1:]:
+            difference = np.nanmax(np.abs(profiles[volume][1] - reference)) / scale
+            report.append((f"t = {time:.2f} s: max |T_{volume} - T_mass| / mean T",
+                           f"{difference:.3g}"))
+        for k, c in enumerate(centres):
+            rows.append([time, c] + [profiles[v][1][k] for v in VOLUMES])
+    np.atleast_1d(axes)[0].set_ylabel("mass-weighted mean T of the slice (K)")
+    np.atleast_1d(axes)[0].legend()
+    save_figure(fig, out / "entropic_expansion_volumes.png")
+    with open(out / "entropic_expansion_volumes.csv", "w") as f:
+        f.write("time,x," + ",".join(f"temperature_{v}" for v in VOLUMES) + "\n")
+        for row in rows:
+            f.write(",".join(f"{v:.8g}" for v in row) + "\n")
+
+
+def main():
+    parser = figure_parser(__doc__)
+    parser.set_defaults(runs="out/entropic-volumes", out=str(REPO / "docs" / "figures"))
+    parser.add_argument("--times", type=float, nargs="*", default=[1.5, 7.5, 15.0])
+    args = parser.parse_args()
+    return figure_script_main(
+        args, RUNS,
+        [(VOLUMES, lambda runs, out, report: make_figures(runs, out, report, args.times))],
+        "entropic_expansion_volumes.md")
+
+
+if __name__ == "__main__":
+    sys.exit(main())
