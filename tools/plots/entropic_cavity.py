@@ -89,7 +89,9 @@ def nusselt_series(run):
 
 
 def make_figures(runs, out, report, names):
-    fig, axes = plt.subplots(1, 1 + len(names), figsize=(5.2 * (1 + len(names)), 4.6))
+    fig, axes = plt.subplots(1, 1 + len(names), figsize=(5.2 * (1 + len(names)), 4.6),
+                             squeeze=False)
+    axes = axes[0]
     rows = []
     for index, name in enumerate(names):
         run = runs / name
@@ -138,6 +140,9 @@ def main():
     parser.add_argument("--only", nargs="*", default=list(RUNS))
     args = parser.parse_args()
     names = [n for n in RUNS if n in args.only]
+    unknown = [n for n in args.only if n not in RUNS]
+    if unknown:
+        parser.error(f"--only: unknown run {', '.join(unknown)} (known: {', '.join(RUNS)})")
     table = {n: RUNS[n] for n in names}
     return figure_script_main(
         args, table,
