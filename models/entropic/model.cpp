@@ -48,14 +48,10 @@ std::array<SummedQuantity, D> flux_quantities(const fixedpoint::Scale& scale) {
   return quantities;
 }
 
-// The largest temperature the gas near a thermal wall should reach: the hottest wall or the
-// initial gas temperature, whichever is larger (1 K without thermal walls: the sums are unused).
+// The hottest thermal wall (0 K without thermal walls).
 template <int D>
-double largest_held_temperature(const State<D>& state, double initial_gas_temperature) {
-  if (state.thermal.temperature.count() == 0) {
-    return 1.0;
-  }
-  double largest = initial_gas_temperature;
+double hottest_wall(const State<D>& state) {
+  double largest = 0.0;
   for (const std::int64_t raw : state.thermal.temperature.component(0)) {
     largest = std::max(largest, fixedpoint::to_real(raw, state.thermal.temperature.info().scale));
   }
@@ -124,10 +120,13 @@ std::array<SummedQuantity, D + 2> Model<D>::wall_mirror_quantities(const Paramet
                                                                    const State<D>& state) {
   const double density = std::pow(parameters.dr, -D);
   std::array<SummedQuantity, D + 2> quantities{};
-  quantities[0] = {
-      "temperature_density",
-      fixedpoint::Scale::covering(
-          4.0 * largest_held_temperature(state, parameters.initial_temperature()) * density, 48)};
+  // Without thermal walls the sums are unused: any finite scale will do.
+  const double temperature_magnitude =
+      state.thermal.temperature.count() == 0
+          ? 4.0 * density
+          : wall_temperature_sum_magnitude<D>(hottest_wall(state), parameters.initial_temperature(),
+                                              parameters.dr);
+  quantities[0] = {"temperature_density", fixedpoint::Scale::covering(temperature_magnitude, 48)};
   for (int k = 0; k < D; ++k) {
     quantities[1 + k] = {
         "velocity_density",

@@ -22,13 +22,23 @@
 #include "models/entropic/parameters.hpp"
 #include "models/entropic/state.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
 
 namespace revsph::entropic {
+
+// The magnitude the wall-mirror sum sum_b W_ab T_b must cover (model.cpp): 4 times the hotter of
+// the hottest thermal wall and the initial gas temperature, over dr^D. Setup checks it is finite.
+template <int D>
+double wall_temperature_sum_magnitude(double hottest_wall, double initial_gas_temperature,
+                                      double dr) {
+  return 4.0 * std::max(hottest_wall, initial_gas_temperature) * std::pow(dr, -D);
+}
 
 template <int D>
 class Model {

@@ -125,11 +125,10 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
     }
     if (block.kind == "thermal") {
       const double held = case_file.positive_number(temperature_key);
-      // The wall-mirror sums (model.cpp) are scaled by 4 max(T_w, T0) / dr^D.
-      require_positive_finite(case_file, temperature_key.c_str(),
-                              "4 max(T_w, T0) / dr^D, the scale of the wall temperature sums",
-                              4.0 * std::max(held, parameters.initial_temperature()) *
-                                  std::pow(parameters.dr, -D));
+      require_positive_finite(
+          case_file, temperature_key.c_str(),
+          "4 max(T_w, T0) / dr^D, the scale of the wall temperature sums",
+          wall_temperature_sum_magnitude<D>(held, parameters.initial_temperature(), parameters.dr));
       const double mass = parameters.initial_density * block.volume_per_particle;
       thermal_positions.insert(thermal_positions.end(), block.positions.begin(),
                                block.positions.end());

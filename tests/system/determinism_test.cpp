@@ -50,23 +50,21 @@ TEST_P(Determinism, HashIsTheSameForThreadCountsAndCellSizes) {
 
 // Both models, 1D, 2D and 3D: wcsph (fluid, walls), SHTC's elastic plate, its driven cavity (moving
 // walls and relaxation) and its twisting column (3D).
-INSTANTIATE_TEST_SUITE_P(BothModels, Determinism,
-                         ::testing::Values(DeterminismCase{"column-1d", 400},
-                                           DeterminismCase{"dambreak-small", 100},
-                                           DeterminismCase{"dambreak-3d-small", 15},
-                                           DeterminismCase{"beryllium-plate-small", 40},
-                                           DeterminismCase{"cavity-re100-small", 25},
-                                           DeterminismCase{"twisting-column-small", 8},
-                                           DeterminismCase{"expansion-small", 300},
-                                           DeterminismCase{"box-small", 200},
-                                           DeterminismCase{"hyperbolic-small", 300},
-                                           DeterminismCase{"cavity-small", 200},
-                                           DeterminismCase{"tube-1d", 300}),
-                         [](const ::testing::TestParamInfo<DeterminismCase>& param_info) {
-                           std::string name = param_info.param.name;
-                           std::replace(name.begin(), name.end(), '-', '_');
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    BothModels, Determinism,
+    ::testing::Values(DeterminismCase{"column-1d", 400}, DeterminismCase{"dambreak-small", 100},
+                      DeterminismCase{"dambreak-3d-small", 15},
+                      DeterminismCase{"beryllium-plate-small", 40},
+                      DeterminismCase{"cavity-re100-small", 25},
+                      DeterminismCase{"twisting-column-small", 8},
+                      DeterminismCase{"expansion-small", 300}, DeterminismCase{"box-small", 200},
+                      DeterminismCase{"hyperbolic-small", 300},
+                      DeterminismCase{"cavity-small", 200}, DeterminismCase{"tube-1d", 300}),
+    [](const ::testing::TestParamInfo<DeterminismCase>& param_info) {
+      std::string name = param_info.param.name;
+      std::replace(name.begin(), name.end(), '-', '_');
+      return name;
+    });
 
 // Golden hashes: the state after N steps of built-in cases, computed by this engine and stored
 // here. They must change only on purpose (a change of physics, scales or the case). To
