@@ -71,6 +71,11 @@ def read_gas(path):
         }
 
 
+def snapshot_attribute(path, name):
+    with h5py.File(path) as f:
+        return float(f.attrs[name])
+
+
 def relative_error(run):
     energy = read_csv(run / "energy.csv")
     return energy["time"], energy["relative_error"]
@@ -90,7 +95,7 @@ def make_figures(runs, out, report, t_compare):
     # Fig. 8: the temperature field at four times
     fig = plt.figure(figsize=(15, 8.4))
     wanted = [0.5, 2.0, 5.0, 15.0]
-    times = np.array([h5py.File(p).attrs["time"] for p in paths])
+    times = np.array([snapshot_attribute(p, "time") for p in paths])
     for index, t in enumerate(wanted):
         gas = read_gas(paths[int(np.argmin(abs(times - t)))])
         ax = fig.add_subplot(3, 4, 1 + index)
@@ -110,8 +115,9 @@ def make_figures(runs, out, report, t_compare):
         if not (runs / name / "energy.csv").is_file():
             continue
         t, error = relative_error(runs / name)
+        dt = snapshot_attribute(snapshots(runs / name)[0], "dt")
         ax.semilogy(t[1:], np.maximum(np.abs(error[1:]), 1e-12), lw=0.8,
-                    label=f"Courant {courant} (dt = {courant / 0.001 * 1.27e-5:.3g} s)")
+                    label=f"Courant {courant} (dt = {dt:.3g} s)")
         energy_columns[name] = (t, error)
         compare[name] = np.max(np.abs(error[t <= t_compare + 1e-9]))
     ax.axhline(3e-6, color="k", ls=":", lw=1, label="issue target 3e-6")
