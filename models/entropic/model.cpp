@@ -202,8 +202,9 @@ void Model<D>::update_geometry() {
   entropy_ = CarrierField<FixedArithmetic>{&state_.gas.entropy, &state_.dummy.entropy,
                                            &state_.thermal.entropy}
                  .reals();
-  if (!parameters_.particles_move && layout_built_) {
-    // Particles at rest: the cells and pairs stand; only the entropies changed.
+  const bool positions_unchanged = layout_current_;
+  if (positions_unchanged) {
+    // The positions did not change since the build: only the entropies did.
     layout_.gather(std::span<const double>(entropy_), slot_entropy_);
   } else {
     layout_.build(CarrierField<FixedArithmetic>{&state_.gas.position, &state_.dummy.position,
@@ -214,7 +215,7 @@ void Model<D>::update_geometry() {
                   Gathered<std::uint8_t>{conducts_, &slot_conducts_},
                   Gathered<double>{held_temperature_, &slot_held_temperature_});
     walls_.find_near(layout_, parameters_.wall.radius);
-    layout_built_ = true;
+    layout_current_ = true;
   }
   const std::size_t n = layout_.slot_count();
   for (std::vector<double>* values : {&density_, &entropy_density_, &volume_, &pressure_,
@@ -234,6 +235,12 @@ void Model<D>::update_geometry() {
   };
   if (parameters_.volume == ParticleVolume::implicit) {
     update_implicit_volume();
+  } else if (parameters_.volume == ParticleVolume::mass && positions_unchanged) {
+    // sum_b m_b W_ab depends on the positions alone: the sums of the last update stand.
+#pragma omp parallel for schedule(static)
+    for (std::size_t s = 0; s < n; ++s) {
+      per_slot(static_cast<std::uint32_t>(s));
+    }
   } else if (parameters_.volume == ParticleVolume::mass) {
     sum_pairs<FixedArithmetic>(layout_, DensityTerm<D>{kernel_, slot_mass_}, density_sums_, {},
                                per_slot);
@@ -448,6 +455,7 @@ void Model<D>::drift(double dt) {
   }
   faults.throw_if_any();
   geometry_valid_ = false;
+  layout_current_ = false;
 }
 
 template <int D>

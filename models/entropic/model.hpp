@@ -61,7 +61,7 @@ public:
   void invalidate_derived() {
     constants_valid_ = false;
     geometry_valid_ = false;
-    layout_built_ = false;
+    layout_current_ = false;
   }
   void reverse_time();
 
@@ -143,8 +143,11 @@ private:
   std::vector<std::uint8_t> conducts_;   // carriers: the gas and the thermal walls
   std::vector<double> held_temperature_; // carriers: a thermal wall's temperature, else 0
   bool geometry_valid_ = false;
-  bool layout_built_ = false; // once built, particles at rest keep their layout
-  SlotLayout<D> layout_;      // carriers: the gas, the dummy and the thermal particles
+  // The cells and pairs were built at the current positions: the dissipation and the entropy
+  // exchange change entropies only, and then the layout stands (a rebuild from the same positions
+  // gives the same layout, so the results do not depend on this shortcut).
+  bool layout_current_ = false;
+  SlotLayout<D> layout_; // carriers: the gas, the dummy and the thermal particles
   std::vector<std::uint8_t> slot_is_gas_, slot_conducts_;
   std::vector<double> slot_held_temperature_;
   FixedTargets<D> walls_;
