@@ -147,7 +147,7 @@ std::span<const Substep<Model<D>>> Model<D>::palindrome() {
       {"kick", 0.5, &Model::kick_substep},
       {"flux", 0.5, &Model::flux_substep},
       {"entropy_exchange", 0.5, &Model::entropy_exchange_substep},
-      {"drift", 1.0, &Model::drift_substep},
+      {"drift", 1.0, &Model::drift_substep, &Model::midpoint_dissipation},
       {"entropy_exchange", 0.5, &Model::entropy_exchange_substep},
       {"flux", 0.5, &Model::flux_substep},
       {"kick", 0.5, &Model::kick_substep},

@@ -160,9 +160,12 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   const std::string splitting = case_file.string_or("dissipation.splitting", "strang");
   if (splitting == "first_order") {
     p.splitting = DissipationSplitting::first_order;
+  } else if (splitting == "midpoint") {
+    p.splitting = DissipationSplitting::midpoint;
   } else if (splitting != "strang") {
     case_file.fail("dissipation.splitting",
-                   "expected \"strang\" or \"first_order\", got \"" + splitting + "\"");
+                   "expected \"strang\", \"midpoint\" or \"first_order\", got \"" + splitting +
+                       "\"");
   }
 
   p.particles_move = case_file.boolean_or("physics.particles_move", true);
@@ -333,9 +336,10 @@ const KeyTable& case_keys() {
            "-",
            "\"strang\"",
            "where the dissipative update goes: \"strang\", half steps at both ends of the "
-           "reversible step (second order); \"first_order\", one full step after it (the "
-           "paper's)",
-           {"strang", "first_order"}});
+           "reversible step (second order); \"midpoint\", one full update between two half "
+           "drifts (second order, about 1.5 times cheaper); \"first_order\", one full step "
+           "after it (the paper's)",
+           {"strang", "midpoint", "first_order"}});
     t.add({"physics.gravity", T::number, "m/s^2", "0",
            "gravitational acceleration g, along minus the last axis"});
     t.add({"physics.gravity_reference_height", T::number, "m", "0",

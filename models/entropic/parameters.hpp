@@ -22,9 +22,12 @@ using GasLaw = std::variant<IdealGas, StiffenedGas>;
 enum class ParticleVolume { mass, entropic, direct, implicit, mixed };
 
 // Where the dissipative update of §5.1-5.2 goes in the step: half steps at both ends of the
-// reversible palindrome (Strang splitting, second order), or one full update after it (the
-// paper's first-order explicit update, kept for comparison).
-enum class DissipationSplitting { strang, first_order };
+// reversible palindrome (Strang splitting, second order); one full update in the middle of the
+// drift (Strang splitting the other way round, second order too: kick, half drift, dissipation,
+// half drift, kick; both kicks of a step boundary then see the same state, so a step costs one
+// force pass and one dissipative update instead of two of each, and one more neighbour search);
+// or one full update after it (the paper's first-order explicit update, kept for comparison).
+enum class DissipationSplitting { strang, midpoint, first_order };
 
 // The discretisation of Fourier's heat conduction: the paper's two passes, q = lambda G(1/T) then
 // its divergence (eqs. 54-56), or one pass over pairs (dissipation_terms.hpp), whose wider-stencil
