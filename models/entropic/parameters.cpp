@@ -229,6 +229,11 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
     }
   }
 
+  p.initial_temperature_perturbation = case_file.number_or("initial.temperature_perturbation", 0.0);
+  if (!std::isfinite(p.initial_temperature_perturbation)) {
+    case_file.fail("initial.temperature_perturbation", "must be finite");
+  }
+
   const ParticleDiscretisation discretisation =
       read_particle_discretisation(case_file, sound_speed);
   p.dr = discretisation.dr;
@@ -354,6 +359,10 @@ const KeyTable& case_keys() {
            "dT/dx of the initial state: T = T0 + gradient . (x - centre of the gas) at the "
            "initial density, T0 the temperature of (density, pressure); sets each gas "
            "particle's entropy"});
+    t.add({"initial.temperature_perturbation", T::number, "K", "0",
+           "amplitude A of one convection roll added to the initial temperature, A cos(pi xi_1) "
+           "sin(pi xi_D), xi the position scaled to [0, 1] across the gas (first and last axis): "
+           "a seed that breaks the lattice's symmetry (Rayleigh-Benard)"});
     t.add(particle_discretisation_case_keys(
         "kernel support radius h in units of dr (the paper's h, §3.4: h = 3 dr)",
         "time step as a fraction of h / c: dt = courant_number * h / c, c the sound speed of "

@@ -66,6 +66,9 @@ struct Parameters {
   // dT/dx (K/m): T = T0 + gradient . (x - centre of the gas) at the initial density, T0 the
   // temperature of (density, pressure).
   std::array<double, D> initial_temperature_gradient{};
+  // A (K): one convection roll's worth of temperature on top, A cos(pi xi_1) sin(pi xi_D) with
+  // xi the position scaled to [0, 1] across the gas (a seed for Rayleigh-Benard convection).
+  double initial_temperature_perturbation = 0.0;
   // [discretisation]
   double dr = 0.0;               // particle spacing (m)
   double support_radius = 0.0;   // kernel support radius h (m; the paper's h, §3.4)

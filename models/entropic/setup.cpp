@@ -57,14 +57,17 @@ void fill_scalars(const CaseFile& case_file, const char* key, const std::vector<
   }
 }
 
-// initial.temperature_gradient: at the initial density T ∝ e^(sigma / c_V) for both gas laws
-// (equation_of_state.hpp), so T = T0 + g . (x - centre) is sigma = sigma0 + c_V ln(T / T0).
+// initial.temperature_gradient and initial.temperature_perturbation: at the initial density
+// T ∝ e^(sigma / c_V) for both gas laws (equation_of_state.hpp), so a temperature T is
+// sigma = sigma0 + c_V ln(T / T0).
 template <int D>
-void apply_temperature_gradient(const CaseFile& case_file, const Parameters<D>& parameters,
-                                const std::vector<Vec<D>>& positions,
-                                const std::vector<double>& masses, std::vector<double>& entropies) {
+void apply_initial_temperature(const CaseFile& case_file, const Parameters<D>& parameters,
+                               const std::vector<Vec<D>>& positions,
+                               const std::vector<double>& masses, std::vector<double>& entropies) {
   const auto& gradient = parameters.initial_temperature_gradient;
-  if (std::all_of(gradient.begin(), gradient.end(), [](double g) { return g == 0.0; })) {
+  const double perturbation = parameters.initial_temperature_perturbation;
+  if (perturbation == 0.0 &&
+      std::all_of(gradient.begin(), gradient.end(), [](double g) { return g == 0.0; })) {
     return;
   }
   Vec<D> lowest = positions.front();
@@ -83,9 +86,17 @@ void apply_temperature_gradient(const CaseFile& case_file, const Parameters<D>& 
       t += gradient[static_cast<std::size_t>(k)] *
            (positions[i][k] - 0.5 * (lowest[k] + highest[k]));
     }
+    if (perturbation != 0.0) {
+      const auto scaled = [&](int k) {
+        const double width = highest[k] - lowest[k];
+        return width > 0.0 ? (positions[i][k] - lowest[k]) / width : 0.5;
+      };
+      t += perturbation * std::cos(std::numbers::pi * scaled(0)) *
+           std::sin(std::numbers::pi * scaled(D - 1));
+    }
     if (!(t > 0.0)) {
       case_file.fail(
-          "initial.temperature_gradient",
+          perturbation != 0.0 ? "initial.temperature_perturbation" : "initial.temperature_gradient",
           "gives a temperature <= 0 K at a gas particle (T0 = " + format_scientific(t0, 3) + " K)");
     }
     entropies[i] = masses[i] * (sigma0 + parameters.heat_capacity() * std::log(t / t0));
@@ -150,7 +161,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   if (gas_positions.empty()) {
     case_file.fail("particles", "the case has no gas particles");
   }
-  apply_temperature_gradient<D>(case_file, parameters, gas_positions, gas_masses, gas_entropies);
+  apply_initial_temperature<D>(case_file, parameters, gas_positions, gas_masses, gas_entropies);
   double largest_mass = *std::max_element(gas_masses.begin(), gas_masses.end());
   for (const double m : dummy_masses) {
     largest_mass = std::max(largest_mass, m);

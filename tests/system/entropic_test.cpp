@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <string>
@@ -216,6 +217,47 @@ TEST(Entropic, EnergyErrorIsSecondOrderInTheTimeStep) {
   // fixed-point rounding floor and the wall's stiff potential.
   EXPECT_GT(coarse / fine, 2.8) << coarse << " vs " << fine;
   EXPECT_LT(coarse / fine, 5.7) << coarse << " vs " << fine;
+}
+
+} // namespace
+
+namespace {
+
+// initial.temperature_perturbation (the Rayleigh-Benard seed): at the initial density a gas
+// particle's entropy is S = m (sigma0 + c_V ln(T / T0)), so against the unseeded case each
+// particle's entropy differs by m c_V ln(1 + A cos(pi xi_1) sin(pi xi_2) / T0), xi its position
+// scaled to [0, 1] across the gas. cavity-small: T0 = 1, c_V = 2857.142857142857.
+TEST(Entropic, TemperaturePerturbationIsOneRoll) {
+  const double amplitude = 0.02;
+  const double heat_capacity = 2857.142857142857;
+  auto plain = make_simulation("cavity-small");
+  auto seeded = make_simulation("cavity-small", {{"initial.temperature_perturbation", "0.02"}});
+  const revsph::StateSnapshot a = plain->capture_state();
+  const revsph::StateSnapshot b = seeded->capture_state();
+  const revsph::FieldSnapshot& position = *b.find("gas", "position");
+  const revsph::FieldSnapshot& mass = *b.find("gas", "mass");
+  const revsph::FieldSnapshot& entropy = *b.find("gas", "entropy");
+  const revsph::FieldSnapshot& unseeded = *a.find("gas", "entropy");
+  std::array<double, 2> lowest{1e300, 1e300};
+  std::array<double, 2> highest{-1e300, -1e300};
+  for (std::size_t i = 0; i < position.count; ++i) {
+    for (int k = 0; k < 2; ++k) {
+      lowest[k] = std::min(lowest[k], position.real(k, i));
+      highest[k] = std::max(highest[k], position.real(k, i));
+    }
+  }
+  double largest = 0.0;
+  for (std::size_t i = 0; i < position.count; ++i) {
+    const double xi = (position.real(0, i) - lowest[0]) / (highest[0] - lowest[0]);
+    const double eta = (position.real(1, i) - lowest[1]) / (highest[1] - lowest[1]);
+    const double temperature = 1.0 + amplitude * std::cos(M_PI * xi) * std::sin(M_PI * eta);
+    const double expected = mass.real(0, i) * heat_capacity * std::log(temperature);
+    const double change = entropy.real(0, i) - unseeded.real(0, i);
+    // Entropy quanta and the log's rounding: far below 1e-9 of the largest change (m c_V A).
+    EXPECT_NEAR(change, expected, 1e-9 * mass.real(0, i) * heat_capacity * amplitude) << i;
+    largest = std::max(largest, std::abs(change));
+  }
+  EXPECT_GT(largest, 0.9 * mass.real(0, 0) * heat_capacity * amplitude) << "the roll's crest";
 }
 
 } // namespace

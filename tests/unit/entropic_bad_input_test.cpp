@@ -52,6 +52,10 @@ std::vector<Defect> defects() {
        "expected \"free\" or \"no_slip\", got \"sticky\""},
       {"gradient_below_absolute_zero", "initial.temperature_gradient=[1000.0, 0.0]",
        "initial.temperature_gradient", "gives a temperature <= 0 K"},
+      {"perturbation_below_absolute_zero", "initial.temperature_perturbation=-1000",
+       "initial.temperature_perturbation", "gives a temperature <= 0 K"},
+      {"unknown_splitting", "dissipation.splitting=leapfrog", "dissipation.splitting",
+       "expected \"strang\", \"midpoint\" or \"first_order\", got \"leapfrog\""},
   };
 }
 
