@@ -30,33 +30,37 @@ std::string Model<D>::dissipation_description() const {
 }
 
 template <int D>
+bool Model<D>::dissipates_in(DissipationSplitting splitting) const {
+  return parameters_.dissipative() && parameters_.splitting == splitting;
+}
+
+template <int D>
+std::string Model<D>::dissipation_in(DissipationSplitting splitting,
+                                     const std::string& placement) const {
+  return dissipates_in(splitting) ? dissipation_description() + ", " + placement : "";
+}
+
+template <int D>
 std::string Model<D>::strang_dissipation(const Model& model) {
-  const Parameters<D>& p = model.parameters_;
-  return p.dissipative() && p.splitting == DissipationSplitting::strang
-             ? model.dissipation_description() + ", half steps at the step's ends"
-             : "";
+  return model.dissipation_in(DissipationSplitting::strang, "half steps at the step's ends");
 }
 
 template <int D>
 std::string Model<D>::first_order_dissipation(const Model& model) {
-  const Parameters<D>& p = model.parameters_;
-  return p.dissipative() && p.splitting == DissipationSplitting::first_order
-             ? model.dissipation_description() + ", one update after each step (first order)"
-             : "";
+  return model.dissipation_in(DissipationSplitting::first_order,
+                              "one update after each step (first order)");
 }
 
 template <int D>
 std::string Model<D>::midpoint_dissipation(const Model& model) {
-  const Parameters<D>& p = model.parameters_;
-  return p.dissipative() && p.splitting == DissipationSplitting::midpoint
-             ? model.dissipation_description() + ", one update in the middle of the drift"
-             : "";
+  return model.dissipation_in(DissipationSplitting::midpoint,
+                              "one update in the middle of the drift");
 }
 
 template <int D>
 void Model<D>::drift_substep(Model& model, double dt) {
   const Parameters<D>& p = model.parameters_;
-  if (!(p.dissipative() && p.splitting == DissipationSplitting::midpoint)) {
+  if (!model.dissipates_in(DissipationSplitting::midpoint)) {
     if (p.particles_move) {
       model.drift(dt);
     }
@@ -75,17 +79,15 @@ void Model<D>::drift_substep(Model& model, double dt) {
 
 template <int D>
 void Model<D>::dissipation_substep(Model& model, double dt) {
-  const Parameters<D>& p = model.parameters_;
-  if (p.dissipative() && p.splitting == DissipationSplitting::strang) {
+  if (model.dissipates_in(DissipationSplitting::strang)) {
     model.dissipate(dt);
   }
 }
 
 template <int D>
 void Model<D>::dissipation_hook(Model& model, std::int64_t) {
-  const Parameters<D>& p = model.parameters_;
-  if (p.dissipative() && p.splitting == DissipationSplitting::first_order) {
-    model.dissipate(p.dt);
+  if (model.dissipates_in(DissipationSplitting::first_order)) {
+    model.dissipate(model.parameters_.dt);
   }
 }
 
@@ -212,6 +214,8 @@ void Model<D>::dissipate(double tau) {
 
 #define REVSPH_ENTROPIC_DISSIPATION(D)                                                             \
   template std::string Model<D>::dissipation_description() const;                                  \
+  template bool Model<D>::dissipates_in(DissipationSplitting) const;                               \
+  template std::string Model<D>::dissipation_in(DissipationSplitting, const std::string&) const;   \
   template std::string Model<D>::strang_dissipation(const Model&);                                 \
   template std::string Model<D>::first_order_dissipation(const Model&);                            \
   template std::string Model<D>::midpoint_dissipation(const Model&);                               \

@@ -106,6 +106,9 @@ private:
   static std::string first_order_dissipation(const Model& model);
   static std::string midpoint_dissipation(const Model& model);
   std::string dissipation_description() const;
+  // Whether the dissipation acts in this splitting; what it does there ("" where it does not).
+  bool dissipates_in(DissipationSplitting splitting) const;
+  std::string dissipation_in(DissipationSplitting splitting, const std::string& placement) const;
   // The layout's sets: the gas, the dummy particles, the thermal walls.
   static constexpr std::size_t gas_set = 0;
   static constexpr std::size_t dummy_set = 1;
