@@ -408,7 +408,10 @@ void Model<D>::update_impulses(double dt) {
                             gamma_,
                             delta_,
                             parameters_.wall_potential(),
-                            parameters_.gravity};
+                            parameters_.gravity,
+                            parameters_.boussinesq ? std::span<const double>(temperature_)
+                                                   : std::span<const double>(),
+                            parameters_.initial_temperature()};
   sum_pairs<FixedArithmetic>(layout_, term, impulse_sums_, walls_.cross_pairs());
   impulse_dt_ = dt;
   impulses_valid_ = true;
@@ -498,8 +501,10 @@ EnergyBudget Model<D>::energy() {
     kinetic += 0.5 * m_squared / gas_mass[i];
     internal += gas_mass[i] * values.specific_energy[i]; // V_a eps_a = m_a u_a, eq. (20)
     const double height = fixedpoint::to_real(position.at(D - 1, i), position.info().scale);
-    gravitational +=
-        gas_mass[i] * parameters_.gravity * (height - parameters_.gravity_reference_height);
+    if (!parameters_.boussinesq) { // the Boussinesq body force has no potential
+      gravitational +=
+          gas_mass[i] * parameters_.gravity * (height - parameters_.gravity_reference_height);
+    }
   }
   // Dummy and thermal particles store internal energy too: their density follows the gas around
   // them.

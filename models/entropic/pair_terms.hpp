@@ -78,6 +78,10 @@ struct ImpulseTerm {
   std::span<const double> gamma, delta; // empty but for the mixed volume
   WallPotential wall;
   double gravity;
+  // The Boussinesq body force m g (T - T0) / T0 instead of m g downwards (physics.buoyancy):
+  // by slot, empty for "density".
+  std::span<const double> temperature;
+  double reference_temperature = 0.0;
 
   void pair(const PairGeometry<D>& p, std::array<double, D>& to_a,
             std::array<double, D>& to_b) const {
@@ -101,8 +105,14 @@ struct ImpulseTerm {
   }
   template <class Add>
   void self(std::uint32_t s, Add& add) const {
-    if (gravity != 0.0) {
+    if (gravity == 0.0) {
+      return;
+    }
+    if (temperature.empty()) {
       add(D - 1, -dt * mass[s] * gravity);
+    } else {
+      add(D - 1, dt * mass[s] * gravity * (temperature[s] - reference_temperature) /
+                     reference_temperature);
     }
   }
 };

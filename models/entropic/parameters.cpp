@@ -133,6 +133,13 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.volume = read_volume(case_file);
   p.gravity = case_file.number_or("physics.gravity", 0.0);
   p.gravity_reference_height = case_file.number_or("physics.gravity_reference_height", 0.0);
+  const std::string buoyancy = case_file.string_or("physics.buoyancy", "density");
+  if (buoyancy == "boussinesq") {
+    p.boussinesq = true;
+  } else if (buoyancy != "density") {
+    case_file.fail("physics.buoyancy",
+                   "expected \"density\" or \"boussinesq\", got \"" + buoyancy + "\"");
+  }
   p.viscosity = case_file.number_or("physics.viscosity", 0.0);
   if (!(p.viscosity >= 0.0) || !std::isfinite(p.viscosity)) {
     case_file.fail("physics.viscosity",
@@ -347,6 +354,14 @@ const KeyTable& case_keys() {
            {"strang", "midpoint", "first_order"}});
     t.add({"physics.gravity", T::number, "m/s^2", "0",
            "gravitational acceleration g, along minus the last axis"});
+    t.add({"physics.buoyancy",
+           T::string,
+           "-",
+           "\"density\"",
+           "how gravity acts: \"density\", m g downwards on every gas particle (the buoyancy "
+           "comes from the gas's density); \"boussinesq\", the body force m g (T - T0) / T0 "
+           "upwards instead (a diagnostic: no potential, the energy budget does not close)",
+           {"density", "boussinesq"}});
     t.add({"physics.gravity_reference_height", T::number, "m", "0",
            "height of zero gravitational potential (shifts the reported energy only)"});
     t.add({"initial.density", T::number, "kg/m^3", "required",

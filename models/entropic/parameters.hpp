@@ -41,6 +41,10 @@ struct Parameters {
   ParticleVolume volume = ParticleVolume::mass;
   double gravity = 0.0;                  // g (m/s^2), along -axis D-1
   double gravity_reference_height = 0.0; // height of zero gravitational potential (m)
+  // physics.buoyancy = "boussinesq": gravity acts as the body force m g (T - T0) / T0 upwards
+  // instead of m g downwards (a diagnostic: buoyancy without the compressible gas's density
+  // differences; no potential, so the energy budget does not close). "density": m g downwards.
+  bool boussinesq = false;
   // Dissipation (§5.1-5.2): shear viscosity mu of eq. (60) and the Fourier conductivity
   // lambda(T) = lambda_F T^2 of eq. (51); 0: off.
   double viscosity = 0.0;

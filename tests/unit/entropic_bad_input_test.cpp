@@ -54,6 +54,8 @@ std::vector<Defect> defects() {
        "initial.temperature_gradient", "gives a temperature <= 0 K"},
       {"perturbation_below_absolute_zero", "initial.temperature_perturbation=-1000",
        "initial.temperature_perturbation", "gives a temperature <= 0 K"},
+      {"unknown_buoyancy", "physics.buoyancy=boussinesque", "physics.buoyancy",
+       "expected \"density\" or \"boussinesq\", got \"boussinesque\""},
       {"unknown_splitting", "dissipation.splitting=leapfrog", "dissipation.splitting",
        "expected \"strang\", \"midpoint\" or \"first_order\", got \"leapfrog\""},
   };
