@@ -7,8 +7,8 @@ Usage: /usr/bin/python3 tools/plots/entropic_cavity.py [--make-runs] [--runs DIR
            [--revsph PATH] [--threads N] [--only NAME ...]
 
 --make-runs runs the cases models/entropic/cases/cavity-*.toml into RUNS/NAME (default RUNS =
-out/entropic; Ra = 1e4 takes about 3 minutes on 2 threads, Ra = 1e5 about 20, the conduction
-check 1, Rayleigh-Benard about 20). Writes into --out (default docs/figures):
+out/entropic; Ra = 1e4 takes about 3 minutes on 2 threads, Ra = 1e5 about 20, their Boussinesq
+variants 1 and 3, the conduction check 1, Rayleigh-Benard about 40). Writes into --out (default docs/figures):
   entropic_cavity.png  the Nusselt numbers of the hot and the cold wall over time against the
                        benchmark, and the temperature field with the velocities at the end.
   entropic_cavity.csv  run, time, Nu of the hot wall, Nu of the cold wall.
@@ -50,11 +50,15 @@ RUNS = {
                           "--set", "run.t_end=6"],
     "cavity-ra1e4": ["run", str(CASES / "cavity-ra1e4.toml")],
     "cavity-ra1e5": ["run", str(CASES / "cavity-ra1e5.toml")],
+    "cavity-ra1e4-boussinesq": ["run", str(CASES / "cavity-ra1e4-boussinesq.toml")],
+    "cavity-ra1e5-boussinesq": ["run", str(CASES / "cavity-ra1e5-boussinesq.toml")],
     "rayleigh-benard": ["run", str(CASES / "rayleigh-benard.toml")],
+    "rayleigh-benard-boussinesq": ["run", str(CASES / "rayleigh-benard-boussinesq.toml")],
 }
 # de Vahl Davis (1983), Int. J. Numer. Methods Fluids 3, 249-264: mean Nusselt numbers of the
 # benchmark solution (Pr = 0.71).
-REFERENCE = {"cavity-ra1e4": 2.243, "cavity-ra1e5": 4.519, "cavity-conduction": 1.0}
+REFERENCE = {"cavity-ra1e4": 2.243, "cavity-ra1e5": 4.519, "cavity-conduction": 1.0,
+             "cavity-ra1e4-boussinesq": 2.243, "cavity-ra1e5-boussinesq": 4.519}
 # The Rayleigh-Benard case (paper 4 Fig. 12) has no reference number: its Nu is reported only.
 
 
