@@ -405,9 +405,20 @@ double estimated_particles(const BlockSpec<D>& spec) {
   return (volume_of<D>(padded) - hollow) / lattice_cell_volume<D>(spec.lattice, spec.spacing);
 }
 
-void require_memory(const CaseFile& case_file, double particles, const ParticleBudget& budget) {
+} // namespace
+
+double neighbours_within(int dimension, double radius_over_spacing) {
+  const double r = radius_over_spacing;
+  return dimension == 1   ? 2.0 * r
+         : dimension == 2 ? std::numbers::pi * r * r
+                          : 4.0 / 3.0 * std::numbers::pi * r * r * r;
+}
+
+namespace {
+
+void require_memory(const CaseFile& case_file, double particles, double needed,
+                    const ParticleBudget& budget) {
   constexpr double index_limit = 4294967295.0; // particle indices are 32-bit
-  const double needed = particles * budget.bytes_per_particle;
   const std::size_t available =
       budget.memory_bytes > 0 ? budget.memory_bytes : available_memory_bytes();
   char estimate[64];
@@ -470,11 +481,17 @@ read_particle_blocks(const CaseFile& case_file, double default_spacing, const Bo
   }
   std::vector<BlockSpec<D>> specs;
   double particles = 0.0;
+  double needed = 0.0;
   for (std::size_t b = 0; b < count; ++b) {
     specs.push_back(read_block<D>(case_file, b, default_spacing, kinds));
-    particles += estimated_particles<D>(specs.back());
+    const double block = estimated_particles<D>(specs.back());
+    // A block denser than dr: its particles' neighbour lists grow as (dr / spacing)^D.
+    const double denser = std::max(1.0, std::pow(default_spacing / specs.back().spacing, D));
+    particles += block;
+    needed +=
+        block * (budget.bytes_per_particle + budget.neighbour_bytes_per_particle * (denser - 1.0));
   }
-  require_memory(case_file, particles, budget);
+  require_memory(case_file, particles, needed, budget);
   std::vector<ParticleBlock<D>> blocks;
   for (const BlockSpec<D>& spec : specs) {
     blocks.push_back(generate_block<D>(case_file, spec, domain));

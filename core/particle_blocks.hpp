@@ -52,9 +52,21 @@ double lattice_cell_volume(Lattice lattice, double spacing);
 // What the particles of a case may cost: a model's memory per particle (state, neighbour lists,
 // derived arrays) and the memory available (0: what the machine has free now).
 struct ParticleBudget {
-  double bytes_per_particle = 0.0;
+  double bytes_per_particle = 0.0; // at the case's dr
   std::size_t memory_bytes = 0;
+  // The part of bytes_per_particle that pays for neighbours: a block packed at a spacing s below
+  // the case's dr gives each of its particles (dr / s)^D times as many within the kernel's reach.
+  double neighbour_bytes_per_particle = 0.0;
 };
+
+// How many particles of a lattice at `spacing` lie within `radius` of one (the kernel's reach):
+// the memory a model's neighbour lists need per particle scales with it.
+double neighbours_within(int dimension, double radius_over_spacing);
+// What a particle's neighbours cost in the pair loop's lists: 4 B per neighbour in the half list
+// and as much again while it is built.
+inline double neighbour_list_bytes(int dimension, double radius_over_spacing) {
+  return 8.0 * neighbours_within(dimension, radius_over_spacing);
+}
 
 // Reads every [[particles]] block. Each generated particle must lie inside `domain`. Before any
 // particle is generated, the count is estimated from the block volumes; a case that would not

@@ -23,11 +23,7 @@ constexpr std::string_view particle_kinds[] = {"gas", "wall", "dummy", "thermal"
 // and the cell list ~400 B, plus 4 B per neighbour in the lists and as much again while they are
 // built (as models/wcsph/setup.cpp).
 double bytes_per_particle(int dimension, double support_radius_over_dr) {
-  const double r = support_radius_over_dr;
-  const double neighbours = dimension == 1   ? 2.0 * r
-                            : dimension == 2 ? std::numbers::pi * r * r
-                                             : 4.0 / 3.0 * std::numbers::pi * r * r * r;
-  return 400.0 + 8.0 * neighbours;
+  return 400.0 + neighbour_list_bytes(dimension, support_radius_over_dr);
 }
 // Masses are constants of the setup; 52 bits keep their double view exact.
 constexpr int mass_fraction_bits = 52;
@@ -110,10 +106,10 @@ std::string scientific(double value) {
 template <int D>
 std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const SimulationOptions& options) {
   const Parameters<D> parameters = read_parameters<D>(case_file);
-  const auto blocks =
-      read_particle_blocks<D>(case_file, parameters.dr, parameters.domain, particle_kinds,
-                              {bytes_per_particle(D, parameters.support_radius / parameters.dr),
-                               options.memory_budget_bytes});
+  const double reach = parameters.support_radius / parameters.dr; // support radius over dr
+  const auto blocks = read_particle_blocks<D>(
+      case_file, parameters.dr, parameters.domain, particle_kinds,
+      {bytes_per_particle(D, reach), options.memory_budget_bytes, neighbour_list_bytes(D, reach)});
   // Gas particles in block order, at rest, each with the mass rho times its lattice cell volume
   // and the entropy S = m sigma of the initial state (eq. 21 with uniform sigma).
   const double specific_entropy = parameters.initial_specific_entropy();

@@ -21,10 +21,8 @@ constexpr std::string_view particle_kinds[] = {"material", "boundary"};
 // H^-1, stress, L and its sum (5 D^2 doubles), cell list, plus 4 B per neighbour in the half list
 // and as much again while it is built.
 double bytes_per_particle(int dimension, double support_radius_over_dr) {
-  const double r = support_radius_over_dr;
-  const double neighbours =
-      dimension == 2 ? std::numbers::pi * r * r : 4.0 / 3.0 * std::numbers::pi * r * r * r;
-  return 300.0 + 56.0 * dimension * dimension + 8.0 * neighbours;
+  return 300.0 + 56.0 * dimension * dimension +
+         neighbour_list_bytes(dimension, support_radius_over_dr);
 }
 
 // Paper 2 eqs. (55) and (60).
@@ -133,10 +131,10 @@ std::string scientific(double value) {
 template <int D>
 std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const SimulationOptions& options) {
   const Parameters<D> parameters = read_parameters<D>(case_file);
-  const auto blocks =
-      read_particle_blocks<D>(case_file, parameters.dr, parameters.domain, particle_kinds,
-                              {bytes_per_particle(D, parameters.support_radius() / parameters.dr),
-                               options.memory_budget_bytes});
+  const double reach = parameters.support_radius() / parameters.dr; // support radius over dr
+  const auto blocks = read_particle_blocks<D>(
+      case_file, parameters.dr, parameters.domain, particle_kinds,
+      {bytes_per_particle(D, reach), options.memory_budget_bytes, neighbour_list_bytes(D, reach)});
   std::vector<Vec<D>> material_positions, boundary_positions, boundary_velocities;
   for (const auto& block : blocks) {
     auto& positions = block.kind == "material" ? material_positions : boundary_positions;

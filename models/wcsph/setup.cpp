@@ -21,11 +21,7 @@ constexpr std::string_view particle_kinds[] = {"fluid", "wall", "dummy"};
 // 4 B per neighbour in the lists and as much again while they are built. Measured about 220 B per
 // particle in 2D at h = 3 dr (~28 neighbours; tools/bench/results).
 double bytes_per_particle(int dimension, double support_radius_over_dr) {
-  const double r = support_radius_over_dr;
-  const double neighbours = dimension == 1   ? 2.0 * r
-                            : dimension == 2 ? std::numbers::pi * r * r
-                                             : 4.0 / 3.0 * std::numbers::pi * r * r * r;
-  return 250.0 + 8.0 * neighbours;
+  return 250.0 + neighbour_list_bytes(dimension, support_radius_over_dr);
 }
 // Masses are constants of the setup; 52 bits keep their double view exact.
 constexpr int mass_fraction_bits = 52;
@@ -167,10 +163,10 @@ template <int D, class Arith>
 std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const SimulationOptions& options) {
   using Raw = typename Arith::Raw;
   const Parameters<D> parameters = read_parameters<D>(case_file);
-  const auto blocks =
-      read_particle_blocks<D>(case_file, parameters.dr, parameters.domain, particle_kinds,
-                              {bytes_per_particle(D, parameters.support_radius / parameters.dr),
-                               options.memory_budget_bytes});
+  const double reach = parameters.support_radius / parameters.dr; // support radius over dr
+  const auto blocks = read_particle_blocks<D>(
+      case_file, parameters.dr, parameters.domain, particle_kinds,
+      {bytes_per_particle(D, reach), options.memory_budget_bytes, neighbour_list_bytes(D, reach)});
   // Particles of each set in block order; masses are rho0 times the lattice cell volume.
   std::vector<Vec<D>> fluid_positions, wall_positions, dummy_positions;
   std::vector<double> fluid_masses, dummy_masses;

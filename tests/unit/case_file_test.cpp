@@ -637,6 +637,29 @@ TEST(ParticleBlocksTest, BlockInsideDomainIsRead) {
   EXPECT_NO_THROW(case_file.require_no_unknown_keys());
 }
 
+// A block packed far below dr gives each of its particles (dr / spacing)^D times the neighbours
+// the budget's per-particle figure assumed at dr (here 2 kB of the 2.4 kB). 625 x 625 particles at
+// spacing dr / 62.5 fit a 1 GB budget by their count alone (0.94 GB) but would need about 3 TB
+// with their neighbours: refused. 250 x 250 at dr / 25 (the fuzz test's hang: a dummy block at
+// spacing 4e-3 with dr = 0.1): 150 MB by count, 78 GB with neighbours.
+TEST(ParticleBlocksTest, DenseBlockIsRefusedForItsNeighbours) {
+  const ParticleBudget budget{2400.0, std::size_t{1} << 30, 2000.0};
+  const auto read = [&](const CaseFile& case_file) {
+    read_particle_blocks<2>(case_file, 0.1, read_domain<2>(case_file), test_kinds, budget);
+  };
+  expect_block_error(
+      "[[particles]]\nkind = \"fluid\"\nmin = [0.0, 0.0]\nmax = [1.0, 1.0]\nspacing = 0.0016\n",
+      "particles", "of memory", read);
+  const CaseFile wide = CaseFile::parse(
+      minimal_blocks_case(
+          "[[particles]]\nkind = \"fluid\"\nmin = [0.0, 0.0]\nmax = [1.0, 1.0]\nspacing = 0.004\n"),
+      "blocks.toml");
+  const ParticleBudget no_neighbours{2400.0, std::size_t{1} << 30};
+  EXPECT_NO_THROW(
+      read_particle_blocks<2>(wide, 0.1, read_domain<2>(wide), test_kinds, no_neighbours));
+  EXPECT_THROW(read(wide), CaseError);
+}
+
 TEST(ParticleBlocksTest, BlockOutsideDomainNamesTheBlock) {
   expect_block_error("[[particles]]\nkind = \"fluid\"\nmin = [0.0, 0.0]\nmax = [0.5, 0.5]\n"
                      "[[particles]]\nkind = \"wall\"\nmin = [0.5, 0.5]\nmax = [1.5, 1.0]\n",
