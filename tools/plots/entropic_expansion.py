@@ -76,6 +76,31 @@ def snapshot_attribute(path, name):
         return float(f.attrs[name])
 
 
+def temperature_fields(fig, paths, wanted, t0):
+    """Figs. 8 and 10: the particles coloured by temperature at the snapshots nearest the wanted
+    times, in the top row of a 3 x 4 grid."""
+    times = np.array([snapshot_attribute(p, "time") for p in paths])
+    for index, t in enumerate(wanted):
+        gas = read_gas(paths[int(np.argmin(abs(times - t)))])
+        ax = fig.add_subplot(3, 4, 1 + index)
+        picture = ax.scatter(gas["x"][:, 0], gas["x"][:, 1], c=gas["T"], s=0.2, cmap="inferno",
+                             vmin=0.5 * t0, vmax=t0 * 1.05)
+        ax.set_aspect("equal")
+        ax.set_xlim(0, 2)
+        ax.set_ylim(0, 1)
+        ax.set_title(f"t = {gas['time']:.2f} s")
+        fig.colorbar(picture, ax=ax, shrink=0.7, label="T (K)")
+
+
+def slice_temperatures(gas, slices=40):
+    """The mass-mean temperature of slices across the vessel (0 <= x <= 2): centres, values."""
+    edges = np.linspace(0.0, 2.0, slices + 1)
+    which = np.digitize(gas["x"][:, 0], edges) - 1
+    profile = [np.sum((gas["m"] * gas["T"])[which == k]) / np.sum(gas["m"][which == k])
+               if np.any(which == k) else np.nan for k in range(slices)]
+    return 0.5 * (edges[1:] + edges[:-1]), profile
+
+
 def relative_error(run):
     energy = read_csv(run / "energy.csv")
     return energy["time"], energy["relative_error"]
@@ -94,18 +119,7 @@ def make_figures(runs, out, report, t_compare):
 
     # Fig. 8: the temperature field at four times
     fig = plt.figure(figsize=(15, 8.4))
-    wanted = [0.5, 2.0, 5.0, 15.0]
-    times = np.array([snapshot_attribute(p, "time") for p in paths])
-    for index, t in enumerate(wanted):
-        gas = read_gas(paths[int(np.argmin(abs(times - t)))])
-        ax = fig.add_subplot(3, 4, 1 + index)
-        picture = ax.scatter(gas["x"][:, 0], gas["x"][:, 1], c=gas["T"], s=0.2, cmap="inferno",
-                             vmin=0.5 * t0, vmax=t0 * 1.05)
-        ax.set_aspect("equal")
-        ax.set_xlim(0, 2)
-        ax.set_ylim(0, 1)
-        ax.set_title(f"t = {gas['time']:.2f} s")
-        fig.colorbar(picture, ax=ax, shrink=0.7, label="T (K)")
+    temperature_fields(fig, paths, [0.5, 2.0, 5.0, 15.0], t0)
 
     # Fig. 9 (left): energy error against time for the three time steps
     ax = fig.add_subplot(3, 2, 3)
@@ -163,11 +177,7 @@ def make_figures(runs, out, report, t_compare):
     # the temperature along x at the end, against the uniform fill
     ax = fig.add_subplot(3, 2, 5)
     last = read_gas(paths[-1])
-    edges = np.linspace(0.0, 2.0, 41)
-    which = np.digitize(last["x"][:, 0], edges) - 1
-    profile = [np.sum((last["m"] * last["T"])[which == k]) / np.sum(last["m"][which == k])
-               if np.any(which == k) else np.nan for k in range(40)]
-    ax.plot(0.5 * (edges[1:] + edges[:-1]), profile, ".-", label=f"t = {last['time']:.2f} s")
+    ax.plot(*slice_temperatures(last), ".-", label=f"t = {last['time']:.2f} s")
     ax.axhline(adiabatic, color="k", ls=":", label="T0 2^-(gamma-1)")
     ax.set_xlabel("x (m)")
     ax.set_ylabel("mass-mean T of the slice (K)")

@@ -38,7 +38,12 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from entropic_expansion import read_gas, snapshot_attribute  # noqa: E402
+from entropic_expansion import (  # noqa: E402
+    read_gas,
+    slice_temperatures,
+    snapshot_attribute,
+    temperature_fields,
+)
 from revsph_runs import (  # noqa: E402
     REPO,
     case_of,
@@ -71,18 +76,9 @@ def make_figures(runs, out, report):
 
     fig = plt.figure(figsize=(15, 8.4))
     # Fig. 10: the temperature field at four times (or as far as the run has come)
-    times = np.array([snapshot_attribute(p, "time") for p in paths])
-    wanted = [t for t in (0.5, 2.0, 5.0, 15.0) if t <= times[-1] + 0.5] or [times[-1]]
-    for index, t in enumerate(wanted):
-        gas = read_gas(paths[int(np.argmin(abs(times - t)))])
-        ax = fig.add_subplot(3, 4, 1 + index)
-        picture = ax.scatter(gas["x"][:, 0], gas["x"][:, 1], c=gas["T"], s=0.2, cmap="inferno",
-                             vmin=0.5 * t0, vmax=1.05 * t0)
-        ax.set_aspect("equal")
-        ax.set_xlim(0, 2)
-        ax.set_ylim(0, 1)
-        ax.set_title(f"t = {gas['time']:.2f} s")
-        fig.colorbar(picture, ax=ax, shrink=0.7, label="T (K)")
+    end = snapshot_attribute(paths[-1], "time")
+    temperature_fields(fig, paths, [t for t in (0.5, 2.0, 5.0, 15.0) if t <= end + 0.5] or [end],
+                       t0)
 
     # Fig. 11 (left): the relative energy error over time
     ax = fig.add_subplot(3, 2, 3)
@@ -125,11 +121,7 @@ def make_figures(runs, out, report):
     ax.grid(True, alpha=0.3)
     ax = fig.add_subplot(3, 2, 6)
     last = read_gas(paths[-1])
-    edges = np.linspace(0.0, 2.0, 41)
-    which = np.digitize(last["x"][:, 0], edges) - 1
-    profile = [np.sum((last["m"] * last["T"])[which == k]) / np.sum(last["m"][which == k])
-               if np.any(which == k) else np.nan for k in range(40)]
-    ax.plot(0.5 * (edges[1:] + edges[:-1]), profile, ".-", label=f"t = {last['time']:.2f} s")
+    ax.plot(*slice_temperatures(last), ".-", label=f"t = {last['time']:.2f} s")
     ax.axhline(t0, color="grey", ls="--", lw=1, label="T0")
     ax.set_xlabel("x (m)")
     ax.set_ylabel("mass-mean T of the slice (K)")
