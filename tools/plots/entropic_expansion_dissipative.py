@@ -9,8 +9,9 @@ Usage: /usr/bin/python3 tools/plots/entropic_expansion_dissipative.py [--make-ru
 (39 600 gas + 3 056 wall particles, dt = 1.27e-5, t = 15, 1 183 216 steps: about 5.5 h on 2
 threads, so in practice segments chained with `revsph run --from`, docs/runs/
 entropic-expansion-paper.md) into RUNS/expansion-nonadiabatic (default RUNS = out/entropic).
-A run that has not reached t = 15 yet is plotted as far as it goes. Writes into --out (default
-docs/figures):
+A run that has not reached t = 15 yet is plotted as far as it goes; segments that continue it
+(`revsph run --from SNAPSHOT --out RUNS/expansion-nonadiabatic-2`, then -3, ...) are read in
+order. Writes into --out (default docs/figures):
   entropic_expansion_dissipative.png      Fig. 10: the temperature of the particles at four
                                           times; Fig. 11: the relative energy error and the
                                           mass-mean temperature over time; the entropy gained
@@ -60,18 +61,46 @@ RUNS = {NAME: ["run", "expansion", "--set", "physics.viscosity=0.001", "--set",
                "physics.heat_conductivity=0.1", "--set", "dissipation.splitting=midpoint"]}
 
 
+def segments(runs):
+    """The run and the segments that continue it (`revsph run --from ... --out NAME-2`, NAME-3,
+    ...), in order."""
+    found = [runs / NAME]
+    while (runs / f"{NAME}-{len(found) + 1}").is_dir():
+        found.append(runs / f"{NAME}-{len(found) + 1}")
+    return found
+
+
+def chained_csv(dirs, name):
+    """A CSV of the segments in time order: each segment's rows after the last time before it."""
+    columns = None
+    for run in dirs:
+        table = read_csv(run / name)
+        if columns is None:
+            columns = table
+            continue
+        later = table["time"] > columns["time"][-1]
+        columns = {k: np.concatenate([columns[k], table[k][later]]) for k in columns}
+    return columns
+
+
 def make_figures(runs, out, report):
-    run = runs / NAME
-    case = case_of(run)
+    dirs = segments(runs)
+    case = case_of(dirs[0])
     gamma = case["physics"]["gamma"]
     c_v = case["physics"]["heat_capacity"]
-    paths = snapshots(run)
+    paths = []
+    for path in (p for run in dirs for p in snapshots(run)):
+        # a segment starts with the snapshot the previous one ended with
+        if not paths or snapshot_attribute(path, "time") > snapshot_attribute(paths[-1], "time"):
+            paths.append(path)
     first = read_gas(paths[0])
     mass = np.sum(first["m"])
     t0 = np.sum(first["m"] * first["T"]) / mass
     joule = mass * c_v * (gamma - 1.0) * np.log(2.0)
-    energy = read_csv(run / "energy.csv")
-    diagnostics = read_csv(run / "diagnostics.csv")
+    energy = chained_csv(dirs, "energy.csv")
+    # against the first segment's initial energy (a continued run measures from its own start)
+    energy["relative_error"] = (energy["total"] - energy["total"][0]) / energy["total"][0]
+    diagnostics = chained_csv(dirs, "diagnostics.csv")
     entropy0 = diagnostics["entropy"][0]
 
     fig = plt.figure(figsize=(15, 8.4))
@@ -134,7 +163,7 @@ def make_figures(runs, out, report):
     equalisation = np.sum(last["m"] * c_v * np.log(final_t / last["T"]))
     left = last["x"][:, 0] < 1.0
     report += [
-        ("run reached t", f"{end[0]:.4g} s (of 15)"),
+        ("run reached t", f"{end[0]:.4g} s (of 15), in {len(dirs)} segment(s)"),
         ("max |E - E0| / E0 so far", f"{np.max(np.abs(error)):.3g} (paper: 6e-5 at t = 15)"),
         ("E - E0 over E0 at the end", f"{error[-1]:.3g}"),
         ("T0 (mass mean at t = 0)", f"{t0:.6g}"),
