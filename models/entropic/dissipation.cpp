@@ -59,21 +59,20 @@ std::string Model<D>::midpoint_dissipation(const Model& model) {
 
 template <int D>
 void Model<D>::drift_substep(Model& model, double dt) {
-  const Parameters<D>& p = model.parameters_;
-  if (!model.dissipates_in(DissipationSplitting::midpoint)) {
-    if (p.particles_move) {
-      model.drift(dt);
+  // With the midpoint splitting, Strang the other way round: the drift is split in halves and
+  // the dissipation acts over the whole step between them, so the kicks at a step boundary see
+  // one state.
+  const bool midpoint = model.dissipates_in(DissipationSplitting::midpoint);
+  const bool moving = model.parameters_.particles_move;
+  const double drift = midpoint ? 0.5 * dt : dt;
+  if (moving) {
+    model.drift(drift);
+  }
+  if (midpoint) {
+    model.dissipate(dt);
+    if (moving) {
+      model.drift(drift);
     }
-    return;
-  }
-  // Strang the other way round: the reversible step is split at the middle of its drift, where
-  // the dissipation acts over the whole step. The kicks at a step boundary then see one state.
-  if (p.particles_move) {
-    model.drift(0.5 * dt);
-  }
-  model.dissipate(dt);
-  if (p.particles_move) {
-    model.drift(0.5 * dt);
   }
 }
 
