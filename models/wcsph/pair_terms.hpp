@@ -12,6 +12,7 @@
 
 #include "core/kernel_wendland.hpp"
 #include "core/pair_sum.hpp"
+#include "core/summation_density.hpp"
 #include "models/wcsph/equations.hpp"
 
 #include <array>
@@ -22,24 +23,7 @@ namespace revsph::wcsph {
 
 // Paper 1 eq. (5): rho_a = sum_b m_b w(r_ab) + C_a over carriers b, the sum including b = a.
 template <int D, class Arith>
-struct DensityTerm {
-  static constexpr int width = 1;
-  const WendlandQuintic<D>& kernel;
-  std::span<const double> mass;
-  std::span<const typename Arith::Raw> density_constant;
-
-  void pair(const PairGeometry<D>& p, std::array<double, 1>& to_a,
-            std::array<double, 1>& to_b) const {
-    const double w = kernel.value(p.r);
-    to_a[0] = mass[p.b] * w;
-    to_b[0] = mass[p.a] * w;
-  }
-  template <class Add>
-  void self(std::uint32_t s, Add& add) const {
-    add(0, mass[s] * kernel.value(0.0));
-    add.raw(0, density_constant[s]);
-  }
-};
+using DensityTerm = SummationDensityTerm<D, Arith>;
 
 // Paper 1 eq. (1b), with the sign that makes it -grad of eq. (3), over carrier neighbours b:
 //   a_a = -sum_b m_b (p_a / rho_a^2 + p_b / rho_b^2) w'(r_ab) (x_a - x_b) / r_ab

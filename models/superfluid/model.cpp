@@ -1,0 +1,252 @@
+#include "models/superfluid/model.hpp"
+
+#include "core/summation_density.hpp"
+#include "core/verlet.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace revsph::superfluid {
+
+namespace {
+
+template <int D>
+std::array<SummedQuantity, 2 * D + 1> rate_quantities(const fixedpoint::Scale& acceleration,
+                                                      const fixedpoint::Scale& entropy_rate) {
+  std::array<SummedQuantity, 2 * D + 1> quantities{};
+  for (int k = 0; k < D; ++k) {
+    quantities[k] = {"acceleration", acceleration};
+    quantities[D + k] = {"superflow_acceleration", acceleration};
+  }
+  quantities[2 * D] = {"entropy_rate", entropy_rate};
+  return quantities;
+}
+
+} // namespace
+
+template <int D, class Arith>
+Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, Raw> state)
+    : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
+      kernel_(parameters_.support_radius),
+      layout_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
+              {{"fluid", state_.fluid.position.count()}, {"dummy", state_.dummy.position.count()}}),
+      density_sums_(SummedQuantity{"density", parameters_.density_scale}),
+      rate_sums_(
+          rate_quantities<D>(parameters_.acceleration_scale, parameters_.entropy_rate_scale)) {}
+
+template <int D, class Arith>
+void Model<D, Arith>::initialise_density_constants() {
+  for (StateField<Raw>* field : {&state_.fluid.density_constant, &state_.dummy.density_constant}) {
+    std::fill(field->all().begin(), field->all().end(), Raw{});
+  }
+  invalidate_derived();
+  update_density();
+  for (const auto& [set, field] : {std::pair{fluid_set, &state_.fluid.density_constant},
+                                   std::pair{dummy_set, &state_.dummy.density_constant}}) {
+    const std::span<const std::uint32_t> slots = layout_.slots_of_set(set);
+    for (std::size_t i = 0; i < slots.size(); ++i) {
+      const double sum = density_sums_.value(0, slots[i]);
+      if (!Arith::try_from_real(parameters_.helium.rest_density - sum, field->info().scale,
+                                field->at(0, i))) {
+        throw SimulationFault(
+            {field->info().particle_set, i, "density_constant", "does not fit its scale"}, 0);
+      }
+    }
+  }
+  invalidate_derived();
+}
+
+template <int D, class Arith>
+std::span<const Substep<Model<D, Arith>>> Model<D, Arith>::palindrome() {
+  static constexpr Substep<Model> sequence[] = {
+      {"drift", 0.5, &Model::drift_substep},       {"copy_one", 0.5, &Model::copy_one_substep},
+      {"copy_two", 1.0, &Model::copy_two_substep}, {"copy_one", 0.5, &Model::copy_one_substep},
+      {"drift", 0.5, &Model::drift_substep},
+  };
+  return sequence;
+}
+
+template <int D, class Arith>
+typename Model<D, Arith>::Copy Model<D, Arith>::copy(int which) {
+  auto& f = state_.fluid;
+  if (which == 0) {
+    return {&f.velocity, &f.superflow_velocity, &f.entropy};
+  }
+  return {&f.velocity_copy, &f.superflow_velocity_copy, &f.entropy_copy};
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::drift(double dt) {
+  // x += dt (v + v') / 2: odd in the velocities bit for bit ((-a) + (-b) = -(a + b) in IEEE).
+  auto& position = state_.fluid.position;
+  const auto& v1 = state_.fluid.velocity;
+  const auto& v2 = state_.fluid.velocity_copy;
+  const auto& x_scale = position.info().scale;
+  const auto& v_scale = v1.info().scale;
+  FaultRecorder faults;
+  const std::size_t n = fluid_count();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int k = 0; k < D; ++k) {
+      const double mean =
+          0.5 * (Arith::real(v1.at(k, i), v_scale) + Arith::real(v2.at(k, i), v_scale));
+      if (!Arith::try_increment(position.at(k, i), dt * mean, x_scale)) {
+        faults.record(i, "fluid", "position", "overflow or non-finite value in a drift");
+      }
+    }
+  }
+  faults.throw_if_any();
+  density_valid_ = false;
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::update_copy(int to, double dt) {
+  sum_rates(1 - to);
+  const Copy target = copy(to);
+  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  FaultRecorder faults;
+  add_rate<Arith>(
+      *target.velocity, [&](int k, std::size_t i) { return rate_sums_.value(k, fluid[i]); }, dt,
+      faults);
+  add_rate<Arith>(
+      *target.superflow_velocity,
+      [&](int k, std::size_t i) { return rate_sums_.value(D + k, fluid[i]); }, dt, faults);
+  add_rate<Arith>(
+      *target.entropy, [&](int, std::size_t i) { return rate_sums_.value(2 * D, fluid[i]); }, dt,
+      faults);
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::reverse_time() {
+  apply_time_reversal<Arith>(state_);
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::update_constants() {
+  if (constants_valid_) {
+    return;
+  }
+  mass_ = CarrierField<Arith>{&state_.fluid.mass, &state_.dummy.mass}.reals();
+  density_constant_ =
+      CarrierField<Arith>{&state_.fluid.density_constant, &state_.dummy.density_constant}.raws();
+  is_fluid_.assign(mass_.size(), 0);
+  const std::span<std::uint8_t> fluid = layout_.part_of_set(std::span(is_fluid_), fluid_set);
+  std::fill(fluid.begin(), fluid.end(), 1);
+  constants_valid_ = true;
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::update_density() {
+  if (density_valid_) {
+    return;
+  }
+  update_constants();
+  layout_.build(carrier_position(), parameters_.support_radius,
+                Gathered<double>{mass_, &slot_mass_},
+                Gathered<Raw>{density_constant_, &slot_density_constant_},
+                Gathered<std::uint8_t>{is_fluid_, &slot_is_fluid_});
+  const std::size_t carriers = layout_.slot_count();
+  inputs_.pressure_over_density_squared.resize(carriers);
+  inputs_.inverse_density.resize(carriers);
+  FaultRecorder faults;
+  const Helium& he = parameters_.helium;
+  const auto pressure_term = [&](std::uint32_t s) {
+    const double rho = density_sums_.value(0, s);
+    if (!(rho > 0.0)) {
+      layout_.record_fault(faults, s, "density", "density not positive");
+    }
+    inputs_.pressure_over_density_squared[s] = he.pressure(rho) / (rho * rho); // eq. (12)
+    inputs_.inverse_density[s] = 1.0 / rho;
+  };
+  sum_pairs<Arith>(layout_,
+                   SummationDensityTerm<D, Arith>{kernel_, slot_mass_, slot_density_constant_},
+                   density_sums_, {}, pressure_term);
+  faults.throw_if_any();
+  density_valid_ = true;
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::fill_rate_inputs(int from) {
+  update_density();
+  const std::size_t carriers = layout_.slot_count();
+  RateInputs<D>& in = inputs_;
+  in.flux_factor.resize(carriers);
+  in.entropy_over_density.resize(carriers);
+  in.temperature.resize(carriers);
+  for (int k = 0; k < D; ++k) {
+    in.relative[k].resize(carriers);
+    in.entropy_flux[k].resize(carriers);
+    in.normal_velocity[k].resize(carriers);
+  }
+  const Helium& he = parameters_.helium;
+  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  const Copy one = copy(0);
+  const Copy two = copy(1);
+  const auto& v_scale = one.velocity->info().scale;
+  const auto& s_scale = one.entropy->info().scale;
+  // The value of a field of copy `from`, or the mean of both copies (from = -1).
+  auto value = [&](StateField<Raw>* first, StateField<Raw>* second, int k, std::size_t i,
+                   const fixedpoint::Scale& scale) {
+    if (from == 0) {
+      return Arith::real(first->at(k, i), scale);
+    }
+    if (from == 1) {
+      return Arith::real(second->at(k, i), scale);
+    }
+    return 0.5 * (Arith::real(first->at(k, i), scale) + Arith::real(second->at(k, i), scale));
+  };
+  FaultRecorder faults;
+  const std::size_t n = fluid.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t slot = fluid[i];
+    const double s = value(one.entropy, two.entropy, 0, i, s_scale);
+    const double chi_n = he.chi_n(s); // eq. (8)
+    if (!(chi_n > 0.0 && chi_n <= 1.0)) {
+      faults.record(i, "fluid", "entropy", "the normal fraction chi_n (eq. 8) left (0, 1]");
+    }
+    const double ratio = (1.0 - chi_n) / chi_n; // chi_s / chi_n
+    const double inverse_density = in.inverse_density[slot];
+    double relative_squared = 0.0;
+    for (int k = 0; k < D; ++k) {
+      const double v = value(one.velocity, two.velocity, k, i, v_scale);
+      const double v_s = value(one.superflow_velocity, two.superflow_velocity, k, i, v_scale);
+      const double u = v - v_s; // chi_n v_ns (eq. 22)
+      in.relative[k][slot] = u;
+      in.entropy_flux[k][slot] = s * ratio * inverse_density * u; // j / rho^2 (eq. 21)
+      in.normal_velocity[k][slot] = v + ratio * u;                // eq. (22)
+      relative_squared += u * u;
+    }
+    in.flux_factor[slot] = ratio * inverse_density;
+    in.entropy_over_density[slot] = s * inverse_density;
+    in.temperature[slot] = he.temperature(s, relative_squared / (chi_n * chi_n));
+  }
+  faults.throw_if_any();
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::sum_rates(int from) {
+  fill_rate_inputs(from);
+  sum_pairs<Arith>(layout_, RateTerm<D>{kernel_, slot_mass_, slot_is_fluid_, inputs_}, rate_sums_);
+}
+
+template <int D, class Arith>
+std::vector<double> Model<D, Arith>::rates(int from) {
+  sum_rates(from);
+  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  std::vector<double> out;
+  out.reserve((2 * D + 1) * fluid.size());
+  for (int q = 0; q < 2 * D + 1; ++q) {
+    for (const std::uint32_t slot : fluid) {
+      out.push_back(rate_sums_.value(q, slot));
+    }
+  }
+  return out;
+}
+
+template class Model<2, FixedArithmetic>;
+template class Model<3, FixedArithmetic>;
+template class Model<2, FloatArithmetic>;
+template class Model<3, FloatArithmetic>;
+
+} // namespace revsph::superfluid

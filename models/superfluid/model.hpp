@@ -1,0 +1,117 @@
+#pragma once
+// The superfluid helium-4 model of paper 3 (Kincl, Schmoranzer, Pavelka, Phys. Fluids 35 (2023)
+// 047124): one particle with two velocities, the reversible part of eq. (19), bitwise reversible
+// through two copies of (v, v_s, s) (state.hpp; README "The reversible step"):
+//   drift(dt/2)  copy_one(dt/2)  copy_two(dt)  copy_one(dt/2)  drift(dt/2)
+// drift:    x += tau (v + v') / 2                      (mean of the two copies' velocities)
+// copy_one: (v, v_s, s) += tau f(x, v', v_s', s')      (eq. 19 evaluated on copy 2)
+// copy_two: (v', v_s', s') += tau f(x, v, v_s, s)      (eq. 19 evaluated on copy 1)
+// Each is a shear (its increment does not depend on the group it changes), so each is undone by
+// subtracting the same increment, and the palindrome is bitwise reversible under
+// (v, v_s, v', v_s') -> -(...).
+
+#include "core/carrier_field.hpp"
+#include "core/energy.hpp"
+#include "core/kernel_wendland.hpp"
+#include "core/pair_sum.hpp"
+#include "core/particle_view.hpp"
+#include "core/simulation.hpp"
+#include "core/slot_layout.hpp"
+#include "core/step_composition.hpp"
+#include "models/superfluid/pair_terms.hpp"
+#include "models/superfluid/parameters.hpp"
+#include "models/superfluid/state.hpp"
+
+#include <span>
+#include <vector>
+
+namespace revsph::superfluid {
+
+template <int D, class Arith>
+class Model {
+public:
+  using Raw = typename Arith::Raw;
+
+  Model(Parameters<D> parameters, SimulationInfo info, State<D, Raw> state);
+
+  // Eq. (24): C_a = rho0 - sum_b m_b w_ab for every fluid then dummy particle (rho(0) = rho0).
+  void initialise_density_constants();
+
+  static std::span<const Substep<Model>> palindrome();
+
+  State<D, Raw>& state() { return state_; }
+  const SimulationInfo& info() const { return info_; }
+  const Parameters<D>& parameters() const { return parameters_; }
+  // Eq. (15) summed over the fluid, on the mean of the two copies.
+  EnergyBudget energy();
+  void derived_views(const ViewSink& sink);
+  // The largest differences between the copies, and the total entropies sum m s of each copy.
+  std::vector<EnergyTerm> diagnostics();
+  void invalidate_derived() {
+    density_valid_ = false;
+    constants_valid_ = false;
+  }
+  void reverse_time();
+
+  void drift(double dt);
+  // Adds dt * f(copy `from`) to copy `to` (0: the fields without suffix, 1: the *_copy ones).
+  void update_copy(int to, double dt);
+
+  // Per fluid particle, canonical order: the rates of eq. (19) from copy `from`
+  // (dv/dt then dv_s/dt component-major, then ds/dt).
+  std::vector<double> rates(int from);
+
+private:
+  static void drift_substep(Model& model, double dt) { model.drift(dt); }
+  static void copy_one_substep(Model& model, double dt) { model.update_copy(0, dt); }
+  static void copy_two_substep(Model& model, double dt) { model.update_copy(1, dt); }
+
+  struct Copy {
+    StateField<Raw>* velocity;
+    StateField<Raw>* superflow_velocity;
+    StateField<Raw>* entropy;
+  };
+  Copy copy(int which);
+  std::size_t fluid_count() const { return state_.fluid.position.count(); }
+  CarrierField<Arith> carrier_position() const {
+    return {&state_.fluid.position, &state_.dummy.position};
+  }
+  void update_constants();
+  void update_density();
+  // The rate inputs from copy `from` (or the mean of both, from = -1) at the current positions.
+  void fill_rate_inputs(int from);
+  void sum_rates(int from);
+  // The mean of the copies, per fluid particle in canonical order.
+  struct MeanState {
+    std::array<std::vector<double>, D> velocity, superflow_velocity;
+    std::vector<double> entropy;
+  };
+  MeanState mean_state() const;
+
+  Parameters<D> parameters_;
+  SimulationInfo info_;
+  State<D, Raw> state_;
+  WendlandQuintic<D> kernel_;
+
+  bool constants_valid_ = false;
+  std::vector<double> mass_;
+  std::vector<Raw> density_constant_;
+  std::vector<std::uint8_t> is_fluid_;
+  bool density_valid_ = false;
+  SlotLayout<D> layout_;
+  static constexpr std::size_t fluid_set = 0;
+  static constexpr std::size_t dummy_set = 1;
+  std::vector<double> slot_mass_;
+  std::vector<Raw> slot_density_constant_;
+  std::vector<std::uint8_t> slot_is_fluid_;
+  PairSums<Arith, 1> density_sums_;
+  RateInputs<D> inputs_;
+  PairSums<Arith, 2 * D + 1> rate_sums_;
+};
+
+extern template class Model<2, FixedArithmetic>;
+extern template class Model<3, FixedArithmetic>;
+extern template class Model<2, FloatArithmetic>;
+extern template class Model<3, FloatArithmetic>;
+
+} // namespace revsph::superfluid

@@ -1,0 +1,151 @@
+// What the superfluid model reports: energy (eq. 15), per-particle views, copy diagnostics.
+#include "models/superfluid/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace revsph::superfluid {
+
+template <int D, class Arith>
+typename Model<D, Arith>::MeanState Model<D, Arith>::mean_state() const {
+  const auto& f = state_.fluid;
+  const auto& v_scale = f.velocity.info().scale;
+  const auto& s_scale = f.entropy.info().scale;
+  const std::size_t n = fluid_count();
+  MeanState mean;
+  mean.entropy.resize(n);
+  for (int k = 0; k < D; ++k) {
+    mean.velocity[k].resize(n);
+    mean.superflow_velocity[k].resize(n);
+    for (std::size_t a = 0; a < n; ++a) {
+      mean.velocity[k][a] = 0.5 * (Arith::real(f.velocity.at(k, a), v_scale) +
+                                   Arith::real(f.velocity_copy.at(k, a), v_scale));
+      mean.superflow_velocity[k][a] =
+          0.5 * (Arith::real(f.superflow_velocity.at(k, a), v_scale) +
+                 Arith::real(f.superflow_velocity_copy.at(k, a), v_scale));
+    }
+  }
+  for (std::size_t a = 0; a < n; ++a) {
+    mean.entropy[a] = 0.5 * (Arith::real(f.entropy.at(0, a), s_scale) +
+                             Arith::real(f.entropy_copy.at(0, a), s_scale));
+  }
+  return mean;
+}
+
+template <int D, class Arith>
+EnergyBudget Model<D, Arith>::energy() {
+  update_density();
+  const Helium& he = parameters_.helium;
+  const MeanState mean = mean_state();
+  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  const std::span<const std::uint32_t> dummy = layout_.slots_of_set(dummy_set);
+  const std::span<const double> mass =
+      layout_.part_of_set(std::span<const double>(mass_), fluid_set);
+  const std::span<const double> dummy_mass =
+      layout_.part_of_set(std::span<const double>(mass_), dummy_set);
+  // Serial sums in particle order: the same value for any thread count.
+  double kinetic = 0.0, counterflow = 0.0, compressional = 0.0, thermal = 0.0;
+  for (std::size_t a = 0; a < fluid.size(); ++a) {
+    double v_squared = 0.0, relative_squared = 0.0;
+    for (int k = 0; k < D; ++k) {
+      const double v = mean.velocity[k][a];
+      const double u = v - mean.superflow_velocity[k][a];
+      v_squared += v * v;
+      relative_squared += u * u;
+    }
+    const double s = mean.entropy[a];
+    kinetic += mass[a] * 0.5 * v_squared;
+    counterflow += mass[a] * he.counterflow_energy(s, relative_squared);
+    compressional += mass[a] * he.compressional_energy(density_sums_.value(0, fluid[a]));
+    thermal += mass[a] * he.thermal_energy(s);
+  }
+  for (std::size_t d = 0; d < dummy.size(); ++d) {
+    compressional += dummy_mass[d] * he.compressional_energy(density_sums_.value(0, dummy[d]));
+  }
+  return EnergyBudget{{{"kinetic", kinetic},
+                       {"counterflow", counterflow},
+                       {"compressional", compressional},
+                       {"thermal", thermal}}};
+}
+
+template <int D, class Arith>
+std::vector<EnergyTerm> Model<D, Arith>::diagnostics() {
+  const auto& f = state_.fluid;
+  const auto& v_scale = f.velocity.info().scale;
+  const auto& s_scale = f.entropy.info().scale;
+  update_constants();
+  const std::span<const double> mass =
+      layout_.part_of_set(std::span<const double>(mass_), fluid_set);
+  double dv = 0.0, dvs = 0.0, ds = 0.0, entropy_one = 0.0, entropy_two = 0.0;
+  for (std::size_t a = 0; a < fluid_count(); ++a) {
+    for (int k = 0; k < D; ++k) {
+      dv = std::max(dv, std::abs(Arith::real(f.velocity.at(k, a), v_scale) -
+                                 Arith::real(f.velocity_copy.at(k, a), v_scale)));
+      dvs = std::max(dvs, std::abs(Arith::real(f.superflow_velocity.at(k, a), v_scale) -
+                                   Arith::real(f.superflow_velocity_copy.at(k, a), v_scale)));
+    }
+    const double s1 = Arith::real(f.entropy.at(0, a), s_scale);
+    const double s2 = Arith::real(f.entropy_copy.at(0, a), s_scale);
+    ds = std::max(ds, std::abs(s1 - s2));
+    entropy_one += mass[a] * s1;
+    entropy_two += mass[a] * s2;
+  }
+  return {{"copy_velocity_difference", dv},
+          {"copy_superflow_difference", dvs},
+          {"copy_entropy_difference", ds},
+          {"total_entropy", entropy_one},
+          {"total_entropy_copy", entropy_two}};
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::derived_views(const ViewSink& sink) {
+  update_density();
+  const Helium& he = parameters_.helium;
+  const MeanState mean = mean_state();
+  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  const std::size_t n = fluid.size();
+  std::vector<double> density(n), pressure(n), temperature(n), normal_fraction(n);
+  std::vector<double> counterflow(D * n), normal_velocity(D * n);
+  for (std::size_t a = 0; a < n; ++a) {
+    const double rho = density_sums_.value(0, fluid[a]);
+    const double s = mean.entropy[a];
+    const double chi_n = he.chi_n(s);
+    double w_squared = 0.0;
+    for (int k = 0; k < D; ++k) {
+      const double u = mean.velocity[k][a] - mean.superflow_velocity[k][a];
+      counterflow[k * n + a] = u / chi_n;                                           // v_ns
+      normal_velocity[k * n + a] = mean.velocity[k][a] + (1.0 - chi_n) / chi_n * u; // v_n
+      w_squared += u * u / (chi_n * chi_n);
+    }
+    density[a] = rho;
+    pressure[a] = he.pressure(rho);
+    temperature[a] = he.temperature(s, w_squared);
+    normal_fraction[a] = chi_n;
+  }
+  auto component_major = [n](const std::array<std::vector<double>, D>& vectors) {
+    std::vector<double> values;
+    values.reserve(D * n);
+    for (int k = 0; k < D; ++k) {
+      values.insert(values.end(), vectors[k].begin(), vectors[k].end());
+    }
+    return values;
+  };
+  sink(ParticleView{"fluid", "density", "kg/m^3", 1, std::move(density)});
+  sink(ParticleView{"fluid", "pressure", "Pa", 1, std::move(pressure)});
+  sink(ParticleView{"fluid", "temperature", "K", 1, std::move(temperature)});
+  sink(ParticleView{"fluid", "normal_fraction", "1", 1, std::move(normal_fraction)});
+  sink(ParticleView{"fluid", "mean_velocity", "m/s", D, component_major(mean.velocity)});
+  sink(ParticleView{"fluid", "mean_superflow_velocity", "m/s", D,
+                    component_major(mean.superflow_velocity)});
+  sink(ParticleView{"fluid", "mean_entropy", "J/(kg K)", 1, std::vector<double>(mean.entropy)});
+  sink(ParticleView{"fluid", "counterflow_velocity", "m/s", D, std::move(counterflow)});
+  sink(ParticleView{"fluid", "normal_velocity", "m/s", D, std::move(normal_velocity)});
+}
+
+template class Model<2, FixedArithmetic>;
+template class Model<3, FixedArithmetic>;
+template class Model<2, FloatArithmetic>;
+template class Model<3, FloatArithmetic>;
+
+} // namespace revsph::superfluid

@@ -1,0 +1,163 @@
+#include "models/superfluid/parameters.hpp"
+
+#include "core/case_values.hpp"
+#include "core/particle_blocks.hpp"
+#include "core/particle_discretisation.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace revsph::superfluid {
+
+namespace {
+
+Helium read_helium(const CaseFile& case_file) {
+  Helium he;
+  he.rest_density = case_file.positive_number("physics.rest_density");
+  he.first_sound_speed = case_file.positive_number("physics.first_sound_speed");
+  he.reference_temperature = case_file.positive_number("physics.reference_temperature");
+  he.reference_entropy = case_file.positive_number("physics.reference_entropy");
+  he.normal_fraction = case_file.number("physics.normal_fraction");
+  if (!(he.normal_fraction > 0.0 && he.normal_fraction <= 1.0)) {
+    case_file.fail("physics.normal_fraction", "chi_n0 must be in (0, 1]");
+  }
+  he.normal_fraction_slope = case_file.number_or("physics.normal_fraction_slope", 0.0);
+  // Eq. (14) ties C to u2: a case gives one of them.
+  const bool has_capacity = case_file.has("physics.heat_capacity");
+  const bool has_speed = case_file.has("physics.second_sound_speed");
+  if (has_capacity == has_speed) {
+    case_file.fail(has_capacity ? "physics.second_sound_speed" : "physics.heat_capacity",
+                   "give exactly one of heat_capacity and second_sound_speed (eq. 14 relates "
+                   "them)");
+  }
+  if (has_capacity) {
+    he.heat_capacity = case_file.positive_number("physics.heat_capacity");
+  } else {
+    const double u2 = case_file.positive_number("physics.second_sound_speed");
+    if (he.normal_fraction >= 1.0) {
+      case_file.fail("physics.second_sound_speed",
+                     "no second sound without a superfluid fraction (normal_fraction = 1): give "
+                     "heat_capacity");
+    }
+    he.heat_capacity = (1.0 - he.normal_fraction) * he.reference_temperature *
+                       he.reference_entropy * he.reference_entropy / (he.normal_fraction * u2 * u2);
+    require_positive_finite(case_file, "physics.second_sound_speed", "the heat capacity C",
+                            he.heat_capacity);
+  }
+  return he;
+}
+
+InitialFields read_initial(const CaseFile& case_file) {
+  InitialFields f;
+  f.wave_amplitude = case_file.number_or("initial.entropy_wave_amplitude", 0.0);
+  if (f.wave_amplitude != 0.0) {
+    f.wave_length = case_file.positive_number("initial.entropy_wave_length");
+  }
+  f.random_velocity = case_file.number_or("initial.random_velocity", 0.0);
+  f.random_counterflow = case_file.number_or("initial.random_counterflow", 0.0);
+  f.random_entropy = case_file.number_or("initial.random_entropy", 0.0);
+  for (const auto& [key, value] : {std::pair{"initial.random_velocity", f.random_velocity},
+                                   std::pair{"initial.random_counterflow", f.random_counterflow},
+                                   std::pair{"initial.random_entropy", f.random_entropy}}) {
+    if (!(value >= 0.0 && std::isfinite(value))) {
+      case_file.fail(key, "must be a finite number >= 0");
+    }
+  }
+  const std::int64_t seed = case_file.integer_or("initial.seed", 1);
+  if (seed < 0) {
+    case_file.fail("initial.seed", "must be >= 0");
+  }
+  f.seed = static_cast<std::uint64_t>(seed);
+  return f;
+}
+
+} // namespace
+
+template <int D>
+Parameters<D> read_parameters(const CaseFile& case_file) {
+  Parameters<D> p;
+  p.helium = read_helium(case_file);
+  const ParticleDiscretisation discretisation =
+      read_particle_discretisation(case_file, p.helium.first_sound_speed);
+  p.dr = discretisation.dr;
+  p.support_radius = discretisation.support_radius;
+  p.dt = discretisation.dt;
+  p.cell_size_factor = discretisation.cell_size_factor;
+  p.initial = read_initial(case_file);
+  p.domain = read_domain<D>(case_file);
+
+  const Helium& he = p.helium;
+  // Default scales: positions keep 52 fraction bits below the domain size; velocities resolve
+  // u1 * 2^-50; entropies s0 * 2^-50 (room for 2^13 s0); density sums rho0 * 2^-48; rate sums
+  // u1^2 / h_support * 2^-48 and s0 u1 / h_support * 2^-48.
+  p.position_scale =
+      scale_or(case_file, "fixed_point.position_exponent", p.domain.max_abs_coordinate(), 52);
+  p.velocity_scale = scale_or(case_file, "fixed_point.velocity_exponent", he.first_sound_speed, 50);
+  p.entropy_scale = scale_or(case_file, "fixed_point.entropy_exponent", he.reference_entropy, 50);
+  p.density_scale = scale_or(case_file, "fixed_point.density_exponent", he.rest_density, 48);
+  p.acceleration_scale =
+      scale_or(case_file, "fixed_point.acceleration_exponent",
+               he.first_sound_speed * he.first_sound_speed / p.support_radius, 48);
+  p.entropy_rate_scale =
+      scale_or(case_file, "fixed_point.entropy_rate_exponent",
+               he.reference_entropy * he.first_sound_speed / p.support_radius, 48);
+  return p;
+}
+
+const KeyTable& case_keys() {
+  static const KeyTable table = [] {
+    using T = KeyType;
+    KeyTable t("superfluid");
+    t.add({"dimension", T::integer, "-", "required", "2 or 3"});
+    t.add({"physics.rest_density", T::number, "kg/m^3", "required", "rho0 of eq. (12); > 0"});
+    t.add({"physics.first_sound_speed", T::number, "m/s", "required",
+           "u1 of eq. (12) (first sound); > 0"});
+    t.add({"physics.reference_temperature", T::number, "K", "required", "T0 of eq. (13); > 0"});
+    t.add({"physics.reference_entropy", T::number, "J/(kg K)", "required",
+           "s0 of eqs. (8, 13); > 0"});
+    t.add({"physics.normal_fraction", T::number, "1", "required",
+           "chi_n0 of eq. (8), in (0, 1] (1: a classical fluid)"});
+    t.add({"physics.normal_fraction_slope", T::number, "kg K/J", "0", "chi' of eq. (8)"});
+    t.add({"physics.heat_capacity", T::number, "J/(kg K)", "from second_sound_speed",
+           "C of eq. (13); > 0; give this or second_sound_speed"});
+    t.add({"physics.second_sound_speed", T::number, "m/s", "from heat_capacity",
+           "u2 of eq. (14), which then gives C; > 0; give this or heat_capacity"});
+    t.add(particle_discretisation_case_keys(
+        "kernel support radius in units of dr: twice the paper's h (eq. 17; h = 3 dr is 6)",
+        "time step as a fraction of support / u1: dt = courant_number * support / u1 (the "
+        "paper's dt = h / (M u1) is courant_number = 1 / (2 M))"));
+    t.add({"initial.entropy_wave_amplitude", T::number, "1", "0",
+           "A of eq. (26): s = s0 (1 + A sin(pi x / L) sin(pi y / L)) [sin(pi z / L) in 3D]"});
+    t.add({"initial.entropy_wave_length", T::number, "m", "required with an amplitude",
+           "L of eq. (26); > 0"});
+    t.add({"initial.random_velocity", T::number, "m/s", "0",
+           "each component of v uniform in [-value, value]; >= 0"});
+    t.add({"initial.random_counterflow", T::number, "m/s", "0",
+           "each component of v - v_s uniform in [-value, value]; >= 0"});
+    t.add({"initial.random_entropy", T::number, "1", "0",
+           "s / s0 - 1 uniform in [-value, value] (added to the wave); >= 0"});
+    t.add({"initial.seed", T::integer, "-", "1", "seed of the random fields; >= 0"});
+    t.add(domain_case_keys());
+    t.add(particle_block_case_keys({"fluid", "dummy"}));
+    t.add({"fixed_point.position_exponent", T::integer, "-",
+           "covers the domain with 52 fraction bits",
+           "positions are stored as integers times 2^exponent"});
+    t.add({"fixed_point.velocity_exponent", T::integer, "-", "covers u1 with 50 fraction bits",
+           "v and v_s are stored as integers times 2^exponent"});
+    t.add({"fixed_point.entropy_exponent", T::integer, "-", "covers s0 with 50 fraction bits",
+           "s is stored as integers times 2^exponent"});
+    t.add({"fixed_point.density_exponent", T::integer, "-", "covers rho0 with 48 fraction bits",
+           "scale of the density sums and the constants C_a"});
+    t.add({"fixed_point.acceleration_exponent", T::integer, "-",
+           "covers u1^2 / support with 48 fraction bits", "scale of the sums of dv/dt, dv_s/dt"});
+    t.add({"fixed_point.entropy_rate_exponent", T::integer, "-",
+           "covers s0 u1 / support with 48 fraction bits", "scale of the sums of ds/dt"});
+    return t;
+  }();
+  return table;
+}
+
+template Parameters<2> read_parameters<2>(const CaseFile&);
+template Parameters<3> read_parameters<3>(const CaseFile&);
+
+} // namespace revsph::superfluid

@@ -1,0 +1,50 @@
+#pragma once
+// Parameters of a superfluid case (paper 3), read from its case file. Every key read is declared
+// in case_keys() (revsph cases --keys superfluid, docs/case-keys.md).
+
+#include "core/case_file.hpp"
+#include "core/case_keys.hpp"
+#include "core/geometry.hpp"
+#include "fixedpoint/scale.hpp"
+#include "models/superfluid/helium.hpp"
+
+#include <cstdint>
+
+namespace revsph::superfluid {
+
+// Initial fields beyond rest at s0: the second-sound standing wave of eq. (26) and seeded random
+// perturbations (uniform in [-amplitude, amplitude], every component of every particle).
+struct InitialFields {
+  double wave_amplitude = 0.0;  // A of eq. (26)
+  double wave_length = 0.0;     // L of eq. (26): s0 A sin(pi x / L) sin(pi y / L) [sin(pi z / L)]
+  double random_velocity = 0.0; // m/s, on v
+  double random_counterflow = 0.0; // m/s, on v - v_s
+  double random_entropy = 0.0;     // relative, on s / s0
+  std::uint64_t seed = 1;
+};
+
+template <int D>
+struct Parameters {
+  Helium helium;
+  // [discretisation]
+  double dr = 0.0;
+  double support_radius = 0.0; // the kernel's support, twice the paper's h (eq. 17)
+  double dt = 0.0;
+  double cell_size_factor = 1.0;
+  InitialFields initial;
+  Box<D> domain;
+  // [fixed_point]
+  fixedpoint::Scale position_scale;
+  fixedpoint::Scale velocity_scale;     // v and v_s
+  fixedpoint::Scale entropy_scale;      // s
+  fixedpoint::Scale density_scale;      // density sums and C_a
+  fixedpoint::Scale acceleration_scale; // sums of dv/dt and dv_s/dt
+  fixedpoint::Scale entropy_rate_scale; // sums of ds/dt
+};
+
+template <int D>
+Parameters<D> read_parameters(const CaseFile& case_file);
+
+const KeyTable& case_keys();
+
+} // namespace revsph::superfluid

@@ -1,0 +1,208 @@
+#include "models/superfluid/setup.hpp"
+
+#include "core/case_values.hpp"
+#include "core/dimension.hpp"
+#include "core/particle_blocks.hpp"
+#include "core/run_settings.hpp"
+#include "models/superfluid/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <sstream>
+
+namespace revsph::superfluid {
+
+namespace {
+
+constexpr std::string_view particle_kinds[] = {"fluid", "dummy"};
+// State (2 x (2D + 1) + D + 2 values), derived arrays (~4D + 8) and cell lists, plus neighbours.
+double bytes_per_particle(int dimension, double support_radius_over_dr) {
+  return 400.0 + neighbour_list_bytes(dimension, support_radius_over_dr);
+}
+constexpr int mass_fraction_bits = 52;
+
+// Uniform in [-1, 1] from a 64-bit Mersenne twister: the same numbers with every standard
+// library (std::uniform_real_distribution is not specified bit for bit).
+double symmetric_uniform(std::mt19937_64& generator) {
+  return 2.0 * static_cast<double>(generator() >> 11) * 0x1.0p-53 - 1.0;
+}
+
+// Copy 1 of the initial fields: rest at s0, plus the standing wave of eq. (26) and the seeded
+// random perturbations.
+template <int D>
+struct InitialCopy {
+  std::vector<Vec<D>> velocity, superflow_velocity;
+  std::vector<double> entropy;
+};
+
+template <int D>
+InitialCopy<D> initial_copy(const CaseFile& case_file, const Parameters<D>& parameters,
+                            const std::vector<Vec<D>>& positions) {
+  const InitialFields& f = parameters.initial;
+  const Helium& he = parameters.helium;
+  std::mt19937_64 generator(f.seed);
+  InitialCopy<D> copy;
+  for (const Vec<D>& x : positions) {
+    Vec<D> v{}, u{};
+    for (int k = 0; k < D; ++k) {
+      v[k] = f.random_velocity * symmetric_uniform(generator);
+    }
+    for (int k = 0; k < D; ++k) {
+      u[k] = f.random_counterflow * symmetric_uniform(generator);
+    }
+    double wave = f.wave_amplitude;
+    for (int k = 0; k < D && wave != 0.0; ++k) {
+      wave *= std::sin(std::numbers::pi * x[k] / f.wave_length); // eq. (26)
+    }
+    const double s =
+        he.reference_entropy * (1.0 + wave + f.random_entropy * symmetric_uniform(generator));
+    const double chi_n = he.chi_n(s);
+    if (!(chi_n > 0.0 && chi_n <= 1.0)) {
+      std::ostringstream reason;
+      reason << "gives s = " << s << " J/(kg K) and chi_n = " << chi_n
+             << " (eq. 8) at a particle: chi_n must stay in (0, 1]";
+      case_file.fail(f.random_entropy > 0.0 ? "initial.random_entropy"
+                     : wave != 0.0          ? "initial.entropy_wave_amplitude"
+                                            : "physics.normal_fraction",
+                     reason.str());
+    }
+    Vec<D> v_s{};
+    for (int k = 0; k < D; ++k) {
+      v_s[k] = v[k] - u[k];
+    }
+    copy.velocity.push_back(v);
+    copy.superflow_velocity.push_back(v_s);
+    copy.entropy.push_back(s);
+  }
+  return copy;
+}
+
+template <class Arith, int D>
+void fill_vectors(const CaseFile& case_file, const char* key, const std::vector<Vec<D>>& values,
+                  StateField<typename Arith::Raw>& field) {
+  field.resize(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    for (int k = 0; k < D; ++k) {
+      if (!Arith::try_from_real(values[i][k], field.info().scale, field.at(k, i))) {
+        case_file.fail(key, "a particle's " + field.info().name +
+                                " does not fit its fixed-point scale (see [fixed_point])");
+      }
+    }
+  }
+}
+
+template <class Arith>
+void fill_scalars(const CaseFile& case_file, const char* key, const std::vector<double>& values,
+                  StateField<typename Arith::Raw>& field) {
+  field.resize(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (!Arith::try_from_real(values[i], field.info().scale, field.at(0, i))) {
+      case_file.fail(key, "a particle's " + field.info().name +
+                              " does not fit its fixed-point scale (see [fixed_point])");
+    }
+  }
+}
+
+template <int D, class Arith>
+std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const SimulationOptions& options) {
+  using Raw = typename Arith::Raw;
+  const Parameters<D> parameters = read_parameters<D>(case_file);
+  const double reach = parameters.support_radius / parameters.dr;
+  const auto blocks = read_particle_blocks<D>(
+      case_file, parameters.dr, parameters.domain, particle_kinds,
+      {bytes_per_particle(D, reach), options.memory_budget_bytes, neighbour_list_bytes(D, reach)});
+  std::vector<Vec<D>> fluid_positions, dummy_positions;
+  std::vector<double> fluid_masses, dummy_masses;
+  const double rho0 = parameters.helium.rest_density;
+  for (const auto& block : blocks) {
+    const bool fluid = block.kind == "fluid";
+    auto& positions = fluid ? fluid_positions : dummy_positions;
+    auto& masses = fluid ? fluid_masses : dummy_masses;
+    positions.insert(positions.end(), block.positions.begin(), block.positions.end());
+    masses.insert(masses.end(), block.positions.size(), rho0 * block.volume_per_particle);
+  }
+  if (fluid_positions.empty()) {
+    case_file.fail("particles", "the case has no fluid particles");
+  }
+  double largest_mass = 0.0;
+  for (const auto* masses : {&fluid_masses, &dummy_masses}) {
+    for (const double m : *masses) {
+      largest_mass = std::max(largest_mass, m);
+    }
+  }
+  if (!(largest_mass > 0.0) || !std::isfinite(largest_mass)) {
+    case_file.fail("physics.rest_density",
+                   "the particle mass rest_density * (lattice cell volume) must be positive and "
+                   "finite");
+  }
+  const InitialCopy<D> initial = initial_copy<D>(case_file, parameters, fluid_positions);
+
+  State<D, Raw> state;
+  auto& fluid = state.fluid;
+  const fixedpoint::Scale mass_scale =
+      fixedpoint::Scale::covering(largest_mass, mass_fraction_bits);
+  fluid.position.set_scale(parameters.position_scale);
+  for (StateField<Raw>* field : {&fluid.velocity, &fluid.superflow_velocity, &fluid.velocity_copy,
+                                 &fluid.superflow_velocity_copy}) {
+    field->set_scale(parameters.velocity_scale);
+  }
+  fluid.entropy.set_scale(parameters.entropy_scale);
+  fluid.entropy_copy.set_scale(parameters.entropy_scale);
+  fluid.mass.set_scale(mass_scale);
+  fluid.density_constant.set_scale(parameters.density_scale);
+  state.dummy.position.set_scale(parameters.position_scale);
+  state.dummy.mass.set_scale(mass_scale);
+  state.dummy.density_constant.set_scale(parameters.density_scale);
+
+  fill_vectors<Arith, D>(case_file, "particles", fluid_positions, fluid.position);
+  // Both copies start equal, raw for raw.
+  for (StateField<Raw>* field : {&fluid.velocity, &fluid.velocity_copy}) {
+    fill_vectors<Arith, D>(case_file, "initial.random_velocity", initial.velocity, *field);
+  }
+  for (StateField<Raw>* field : {&fluid.superflow_velocity, &fluid.superflow_velocity_copy}) {
+    fill_vectors<Arith, D>(case_file, "initial.random_counterflow", initial.superflow_velocity,
+                           *field);
+  }
+  for (StateField<Raw>* field : {&fluid.entropy, &fluid.entropy_copy}) {
+    fill_scalars<Arith>(case_file, "physics.reference_entropy", initial.entropy, *field);
+  }
+  fill_scalars<Arith>(case_file, "physics.rest_density", fluid_masses, fluid.mass);
+  fluid.density_constant.resize(fluid_positions.size());
+  fill_vectors<Arith, D>(case_file, "particles", dummy_positions, state.dummy.position);
+  fill_scalars<Arith>(case_file, "physics.rest_density", dummy_masses, state.dummy.mass);
+  state.dummy.density_constant.resize(dummy_positions.size());
+
+  SimulationInfo info;
+  info.case_name = case_name(case_file);
+  info.model = "superfluid";
+  info.dimension = D;
+  info.arithmetic = options.arithmetic;
+  info.dt = parameters.dt;
+  info.setup_report = {
+      {"second_sound_speed", format_scientific(parameters.helium.second_sound_speed(), 4)},
+      {"heat_capacity", format_scientific(parameters.helium.heat_capacity, 4)},
+      {"dt", format_scientific(parameters.dt, 4)}};
+  Model<D, Arith> model(parameters, std::move(info), std::move(state));
+  model.initialise_density_constants();
+  return std::make_unique<ModelSimulation<Model<D, Arith>>>(std::move(model));
+}
+
+template <int D>
+std::unique_ptr<Simulation> create_with_arithmetic(const CaseFile& case_file,
+                                                   const SimulationOptions& options) {
+  if (options.arithmetic == Arithmetic::fixed) {
+    return create_in<D, FixedArithmetic>(case_file, options);
+  }
+  return create_in<D, FloatArithmetic>(case_file, options);
+}
+
+} // namespace
+
+std::unique_ptr<Simulation> create(const CaseFile& case_file, const SimulationOptions& options) {
+  return with_dimension<2, 3>(
+      case_file, [&]<int D>() { return create_with_arithmetic<D>(case_file, options); });
+}
+
+} // namespace revsph::superfluid

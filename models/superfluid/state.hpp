@@ -1,0 +1,68 @@
+#pragma once
+// The state of a superfluid simulation (paper 3), declared once (core/particle_sets.hpp).
+//
+// The reversible part of eq. (19) is not volume-preserving in any per-particle variables
+// (README, "The reversible step"), so no exactly invertible single-level step can follow it.
+// The fluid therefore carries two copies of everything that is not a position: copy 1 (velocity,
+// superflow_velocity, entropy) and copy 2 (*_copy), each updated from the other by exact shears,
+// the positions drifting with their mean velocity. Both copies approximate the same solution to
+// second order; the outputs report their mean and their difference.
+
+#include "core/particle_sets.hpp"
+#include "core/state_field.hpp"
+
+#include <tuple>
+
+namespace revsph::superfluid {
+
+template <int D>
+inline constexpr const char* mass_unit = D == 1 ? "kg/m^2" : (D == 2 ? "kg/m" : "kg");
+
+template <int D, class Raw>
+struct Fluid {
+  static constexpr SetInfo set{.name = "fluid", .motion = Motion::moving};
+  StateField<Raw> position{{.name = "position", .unit = "m", .components = D}};
+  // Copy 1: coflow velocity v, superflow velocity v_s (both odd), specific entropy s (even).
+  StateField<Raw> velocity{
+      {.name = "velocity", .unit = "m/s", .parity = Parity::odd, .components = D}};
+  StateField<Raw> superflow_velocity{
+      {.name = "superflow_velocity", .unit = "m/s", .parity = Parity::odd, .components = D}};
+  StateField<Raw> entropy{{.name = "entropy", .unit = "J/(kg K)"}};
+  // Copy 2.
+  StateField<Raw> velocity_copy{
+      {.name = "velocity_copy", .unit = "m/s", .parity = Parity::odd, .components = D}};
+  StateField<Raw> superflow_velocity_copy{
+      {.name = "superflow_velocity_copy", .unit = "m/s", .parity = Parity::odd, .components = D}};
+  StateField<Raw> entropy_copy{{.name = "entropy_copy", .unit = "J/(kg K)"}};
+  // Constants: mass (per unit depth in 2D), C_a of eq. (24).
+  StateField<Raw> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
+  StateField<Raw> density_constant{
+      {.name = "density_constant", .unit = "kg/m^3", .evolved = false}};
+  auto fields() {
+    return std::tie(position, velocity, superflow_velocity, entropy, velocity_copy,
+                    superflow_velocity_copy, entropy_copy, mass, density_constant);
+  }
+};
+
+// Adiabatic walls (sec. III.C): static dummy particles that take part in the density and the
+// pressure force only.
+template <int D, class Raw>
+struct Dummy {
+  static constexpr SetInfo set{.name = "dummy", .motion = Motion::fixed};
+  StateField<Raw> position{{.name = "position", .unit = "m", .components = D, .evolved = false}};
+  StateField<Raw> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
+  StateField<Raw> density_constant{
+      {.name = "density_constant", .unit = "kg/m^3", .evolved = false}};
+  auto fields() { return std::tie(position, mass, density_constant); }
+};
+
+template <int D, class Raw>
+struct State {
+  Fluid<D, Raw> fluid;
+  Dummy<D, Raw> dummy;
+
+  State() { declare_state(*this); }
+  auto sets() { return std::tie(fluid, dummy); }
+};
+
+} // namespace revsph::superfluid
