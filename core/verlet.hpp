@@ -6,12 +6,17 @@
 // Both are exactly undone by the same update with -dt (in fixed point), which makes
 // kick(dt/2) drift(dt) kick(dt/2) bitwise reversible.
 
+#include "core/arithmetic.hpp"
 #include "core/fault.hpp"
 #include "core/state_field.hpp"
+#include "fixedpoint/conversion.hpp"
 
 #include <array>
+#include <cmath>
 #include <concepts>
 #include <cstddef>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 namespace revsph {
@@ -46,6 +51,35 @@ void add_rate(StateField<typename Arith::Raw>& target,
               const std::array<std::vector<double>, D>& rate, double dt, FaultRecorder& faults) {
   add_rate<Arith>(
       target, [&rate](int c, std::size_t i) { return rate[c][i]; }, dt, faults);
+}
+
+// target += the pair loop's totals of quantities first_quantity.. (one per component), summed
+// at the target's own scale (pair impulses tau f_ab, say): in fixed point the exact integer
+// totals are added without a rounding of their own, so equal and opposite pair terms change the
+// sum over particles by exactly zero, and a reversed update subtracts bit for bit what this one
+// added. `slots` maps the target's particles to the loop's slots.
+template <class Arith, class Sums>
+void add_pair_totals(StateField<typename Arith::Raw>& target, const Sums& sums, int first_quantity,
+                     std::span<const std::uint32_t> slots, FaultRecorder& faults) {
+  const int components = target.components();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < slots.size(); ++i) {
+    for (int c = 0; c < components; ++c) {
+      auto& raw = target.at(c, i);
+      bool ok = true;
+      if constexpr (Arith::kind == Arithmetic::fixed) {
+        ok = fixedpoint::try_add(raw, sums.raw_total(first_quantity + c, slots[i]), raw);
+      } else {
+        raw += sums.value(first_quantity + c, slots[i]);
+        ok = std::isfinite(raw);
+      }
+      if (!ok) {
+        faults.record(i, target.info().particle_set.c_str(), target.info().name.c_str(),
+                      "overflow or non-finite value in an update");
+      }
+    }
+  }
+  faults.throw_if_any();
 }
 
 // position += dt * velocity. The increment dt * v is odd in v bit for bit (IEEE negation and

@@ -11,14 +11,14 @@ namespace revsph::superfluid {
 namespace {
 
 template <int D>
-std::array<SummedQuantity, 2 * D + 1> rate_quantities(const fixedpoint::Scale& acceleration,
-                                                      const fixedpoint::Scale& entropy_rate) {
+std::array<SummedQuantity, 2 * D + 1> increment_quantities(const fixedpoint::Scale& velocity,
+                                                           const fixedpoint::Scale& entropy) {
   std::array<SummedQuantity, 2 * D + 1> quantities{};
   for (int k = 0; k < D; ++k) {
-    quantities[k] = {"acceleration", acceleration};
-    quantities[D + k] = {"superflow_acceleration", acceleration};
+    quantities[k] = {"velocity_increment", velocity};
+    quantities[D + k] = {"superflow_velocity_increment", velocity};
   }
-  quantities[2 * D] = {"entropy_rate", entropy_rate};
+  quantities[2 * D] = {"entropy_increment", entropy};
   return quantities;
 }
 
@@ -31,8 +31,8 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
       layout_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
               {{"fluid", state_.fluid.position.count()}, {"dummy", state_.dummy.position.count()}}),
       density_sums_(SummedQuantity{"density", parameters_.density_scale}),
-      rate_sums_(
-          rate_quantities<D>(parameters_.acceleration_scale, parameters_.entropy_rate_scale)) {}
+      increment_sums_(
+          increment_quantities<D>(parameters_.velocity_scale, parameters_.entropy_scale)) {}
 
 template <int D, class Arith>
 void Model<D, Arith>::initialise_density_constants() {
@@ -101,19 +101,13 @@ void Model<D, Arith>::drift(double dt) {
 
 template <int D, class Arith>
 void Model<D, Arith>::update_copy(int to, double dt) {
-  sum_rates(1 - to);
+  sum_increments(1 - to, dt);
   const Copy target = copy(to);
   const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
   FaultRecorder faults;
-  add_rate<Arith>(
-      *target.velocity, [&](int k, std::size_t i) { return rate_sums_.value(k, fluid[i]); }, dt,
-      faults);
-  add_rate<Arith>(
-      *target.superflow_velocity,
-      [&](int k, std::size_t i) { return rate_sums_.value(D + k, fluid[i]); }, dt, faults);
-  add_rate<Arith>(
-      *target.entropy, [&](int, std::size_t i) { return rate_sums_.value(2 * D, fluid[i]); }, dt,
-      faults);
+  add_pair_totals<Arith>(*target.velocity, increment_sums_, 0, fluid, faults);
+  add_pair_totals<Arith>(*target.superflow_velocity, increment_sums_, D, fluid, faults);
+  add_pair_totals<Arith>(*target.entropy, increment_sums_, 2 * D, fluid, faults);
 }
 
 template <int D, class Arith>
@@ -225,23 +219,10 @@ void Model<D, Arith>::fill_rate_inputs(int from) {
 }
 
 template <int D, class Arith>
-void Model<D, Arith>::sum_rates(int from) {
+void Model<D, Arith>::sum_increments(int from, double tau) {
   fill_rate_inputs(from);
-  sum_pairs<Arith>(layout_, RateTerm<D>{kernel_, slot_mass_, slot_is_fluid_, inputs_}, rate_sums_);
-}
-
-template <int D, class Arith>
-std::vector<double> Model<D, Arith>::rates(int from) {
-  sum_rates(from);
-  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
-  std::vector<double> out;
-  out.reserve((2 * D + 1) * fluid.size());
-  for (int q = 0; q < 2 * D + 1; ++q) {
-    for (const std::uint32_t slot : fluid) {
-      out.push_back(rate_sums_.value(q, slot));
-    }
-  }
-  return out;
+  sum_pairs<Arith>(layout_, RateTerm<D>{kernel_, slot_mass_, slot_is_fluid_, inputs_, tau},
+                   increment_sums_);
 }
 
 template class Model<2, FixedArithmetic>;

@@ -57,10 +57,6 @@ public:
   // Adds dt * f(copy `from`) to copy `to` (0: the fields without suffix, 1: the *_copy ones).
   void update_copy(int to, double dt);
 
-  // Per fluid particle, canonical order: the rates of eq. (19) from copy `from`
-  // (dv/dt then dv_s/dt component-major, then ds/dt).
-  std::vector<double> rates(int from);
-
 private:
   static void drift_substep(Model& model, double dt) { model.drift(dt); }
   static void copy_one_substep(Model& model, double dt) { model.update_copy(0, dt); }
@@ -80,7 +76,7 @@ private:
   void update_density();
   // The rate inputs from copy `from` (or the mean of both, from = -1) at the current positions.
   void fill_rate_inputs(int from);
-  void sum_rates(int from);
+  void sum_increments(int from, double tau);
   // The mean of the copies, per fluid particle in canonical order.
   struct MeanState {
     std::array<std::vector<double>, D> velocity, superflow_velocity;
@@ -106,7 +102,7 @@ private:
   std::vector<std::uint8_t> slot_is_fluid_;
   PairSums<Arith, 1> density_sums_;
   RateInputs<D> inputs_;
-  PairSums<Arith, 2 * D + 1> rate_sums_;
+  PairSums<Arith, 2 * D + 1> increment_sums_; // at the scales of v, v_s and s
 };
 
 extern template class Model<2, FixedArithmetic>;

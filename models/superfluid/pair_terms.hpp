@@ -1,7 +1,10 @@
 #pragma once
 // The reversible rates of paper 3 eq. (19) as one pair term run by core's pair loop
-// (core/pair_sum.hpp): quantities 0..D-1 sum dv/dt, D..2D-1 dv_s/dt, 2D ds/dt, for the fluid
-// slots, all read from one copy of the state (model.hpp). With w'_ab = dw/dr (r_ab) and
+// (core/pair_sum.hpp), as increments over a sub-step tau: quantities 0..D-1 sum tau dv/dt,
+// D..2D-1 tau dv_s/dt, 2D tau ds/dt, for the fluid slots, all read from one copy of the state
+// (model.hpp). Summed at the state's scales, each pair's share is rounded once; for equal masses
+// the shares of v and s that a and b receive are exact negatives, so the update keeps sum m v
+// and sum m s bit for bit. With w'_ab = dw/dr (r_ab) and
 // x_ab = x_a - x_b (C_a constant, so the density of eq. 24 is a function of the positions):
 //   ds_a/dt   = -sum_b m_b (w'_ab / r_ab) (J_a + J_b) . x_ab,   J = j / rho^2 = s chi_s v_ns / rho
 //   dv_a/dt   = -sum_b m_b (w'_ab / r_ab) (Pi_a / rho_a^2 + Pi_b / rho_b^2) x_ab
@@ -47,6 +50,7 @@ struct RateTerm {
   std::span<const double> mass;
   std::span<const std::uint8_t> is_fluid;
   const RateInputs<D>& in;
+  double tau; // the sub-step's length
 
   bool receives(std::uint32_t s) const { return is_fluid[s] != 0; }
 
@@ -55,7 +59,7 @@ struct RateTerm {
             std::array<double, width>& to_b) const {
     const std::uint32_t a = p.a;
     const std::uint32_t b = p.b;
-    const double slope = kernel.derivative_over_r(p.r);
+    const double slope = tau * kernel.derivative_over_r(p.r);
     const double pressure =
         in.pressure_over_density_squared[a] + in.pressure_over_density_squared[b];
     to_a.fill(0.0);

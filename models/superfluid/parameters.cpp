@@ -88,19 +88,13 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
 
   const Helium& he = p.helium;
   // Default scales: positions keep 52 fraction bits below the domain size; velocities resolve
-  // u1 * 2^-50; entropies s0 * 2^-50 (room for 2^13 s0); density sums rho0 * 2^-48; rate sums
-  // u1^2 / h_support * 2^-48 and s0 u1 / h_support * 2^-48.
+  // u1 * 2^-50; entropies s0 * 2^-50 (room for 2^13 s0); density sums rho0 * 2^-48. The pair
+  // increments of v, v_s and s are summed at the scales of v and s.
   p.position_scale =
       scale_or(case_file, "fixed_point.position_exponent", p.domain.max_abs_coordinate(), 52);
   p.velocity_scale = scale_or(case_file, "fixed_point.velocity_exponent", he.first_sound_speed, 50);
   p.entropy_scale = scale_or(case_file, "fixed_point.entropy_exponent", he.reference_entropy, 50);
   p.density_scale = scale_or(case_file, "fixed_point.density_exponent", he.rest_density, 48);
-  p.acceleration_scale =
-      scale_or(case_file, "fixed_point.acceleration_exponent",
-               he.first_sound_speed * he.first_sound_speed / p.support_radius, 48);
-  p.entropy_rate_scale =
-      scale_or(case_file, "fixed_point.entropy_rate_exponent",
-               he.reference_entropy * he.first_sound_speed / p.support_radius, 48);
   return p;
 }
 
@@ -148,10 +142,6 @@ const KeyTable& case_keys() {
            "s is stored as integers times 2^exponent"});
     t.add({"fixed_point.density_exponent", T::integer, "-", "covers rho0 with 48 fraction bits",
            "scale of the density sums and the constants C_a"});
-    t.add({"fixed_point.acceleration_exponent", T::integer, "-",
-           "covers u1^2 / support with 48 fraction bits", "scale of the sums of dv/dt, dv_s/dt"});
-    t.add({"fixed_point.entropy_rate_exponent", T::integer, "-",
-           "covers s0 u1 / support with 48 fraction bits", "scale of the sums of ds/dt"});
     return t;
   }();
   return table;

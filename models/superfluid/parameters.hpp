@@ -35,11 +35,9 @@ struct Parameters {
   Box<D> domain;
   // [fixed_point]
   fixedpoint::Scale position_scale;
-  fixedpoint::Scale velocity_scale;     // v and v_s
-  fixedpoint::Scale entropy_scale;      // s
-  fixedpoint::Scale density_scale;      // density sums and C_a
-  fixedpoint::Scale acceleration_scale; // sums of dv/dt and dv_s/dt
-  fixedpoint::Scale entropy_rate_scale; // sums of ds/dt
+  fixedpoint::Scale velocity_scale; // v and v_s
+  fixedpoint::Scale entropy_scale;  // s
+  fixedpoint::Scale density_scale;  // density sums and C_a
 };
 
 template <int D>

@@ -6,7 +6,9 @@
 2. divergence of the vector field f in several choices of stored variables, by central finite
    differences: an exactly invertible map of integers is a lattice bijection, so it can only
    approximate a flow that preserves volume in the stored variables (design note sec. 4);
-3. the analytic split of that divergence (README, "Why the state is doubled") against (2).
+3. the analytic split of that divergence (README, "The reversible step") against (2);
+4. the paper's time stepper (sec. II.E) and the engine's doubled one (README) against RK4 on a
+   small second-sound case, and the doubled scheme's copy difference on a random droplet.
 
 Run: /usr/bin/python3 models/superfluid/scheme_check.py
 """
@@ -121,6 +123,114 @@ def divergence(part, state, transform=None, eps=1e-7):
     return div
 
 
+# ---- time steppers: the paper's (sec. II.E), the doubled one of the engine (README), RK4 ----
+
+def square_grid(n, L):
+    g = (np.arange(n) + 0.5) * L / n
+    X, Y = np.meshgrid(g, g, indexing='ij')
+    return np.stack([X.ravel(), Y.ravel()], -1)
+
+def second_sound(N, A, L=0.01):
+    x = square_grid(N, L)
+    dr = L / N
+    m = np.full(len(x), RHO0 * dr**2)
+    part = Particles.__new__(Particles)
+    part.m, part.h, part.dim = m, 3 * dr, 2
+    w, _ = kernel(part.distances(x)[1], part.h, 2)
+    part.c = RHO0 - w @ m
+    s = S0 + A * S0 * np.sin(np.pi * x[:, 0] / L) * np.sin(np.pi * x[:, 1] / L)
+    z = np.zeros_like(x)
+    return part, [x, z.copy(), z.copy(), s]
+
+def split_rates(part, x, v, u, s):
+    """(F_v, Phi_u, Phi_s) in variables (x, v, u = v - v_s, s)."""
+    _, vdot, vsdot, sdot = part.rates(x, v, v - u, s)
+    return vdot, vdot - vsdot, sdot
+
+def paper_step(part, st, dt, cache):
+    x, v, vs, s = st
+    if cache.get('r') is None:
+        cache['r'] = part.rates(x, v, vs, s)
+    _, vd, vsd, _ = cache['r']
+    v = v + dt / 2 * vd; vs = vs + dt / 2 * vsd
+    x = x + dt / 2 * v
+    sd = part.rates(x, v, vs, s)[3]
+    s = s + dt * sd            # the paper prints dt/2 (step 5): a slip, s must advance by dt
+    x = x + dt / 2 * v
+    r = part.rates(x, v, vs, s); cache['r'] = r
+    v = v + dt / 2 * r[1]; vs = vs + dt / 2 * r[2]
+    return [x, v, vs, s]
+
+def rk4_step(part, st, dt):
+    def f(y): return list(part.rates(*y))
+    k1 = f(st); y = [a + dt / 2 * b for a, b in zip(st, k1)]
+    k2 = f(y); y = [a + dt / 2 * b for a, b in zip(st, k2)]
+    k3 = f(y); y = [a + dt * b for a, b in zip(st, k3)]
+    k4 = f(y)
+    return [a + dt / 6 * (b + 2 * c + 2 * d + e) for a, b, c, d, e in zip(st, k1, k2, k3, k4)]
+
+def full_step(part, st, dt):
+    """D(h/2) A(h/2) B(h) A(h/2) D(h/2); copies y_i = (v_i, u_i, s_i); the drift uses the mean v."""
+    x, v1, u1, s1, v2, u2, s2 = st
+    x = x + dt / 2 * 0.5 * (v1 + v2)
+    fv, pu, ps = split_rates(part, x, v2, u2, s2); v1 = v1 + dt / 2 * fv; u1 = u1 + dt / 2 * pu; s1 = s1 + dt / 2 * ps
+    fv, pu, ps = split_rates(part, x, v1, u1, s1); v2 = v2 + dt * fv; u2 = u2 + dt * pu; s2 = s2 + dt * ps
+    fv, pu, ps = split_rates(part, x, v2, u2, s2); v1 = v1 + dt / 2 * fv; u1 = u1 + dt / 2 * pu; s1 = s1 + dt / 2 * ps
+    x = x + dt / 2 * 0.5 * (v1 + v2)
+    return [x, v1, u1, s1, v2, u2, s2]
+
+def to_full(st):
+    x, v, vs, s = st
+    return [x, v, v - vs, s, v.copy(), v - vs, s]
+
+def from_full(d):
+    x, v1, u1, s1, v2, u2, s2 = d
+    v = 0.5 * (v1 + v2)
+    return [x, v, v - 0.5 * (u1 + u2), 0.5 * (s1 + s2)]
+
+
+def order_check(N, A, t_end):
+    part, st0 = second_sound(N, A)
+    h = 3 * 0.01 / N
+
+    def run(stepper, M, conv_in=lambda s: s, conv_out=lambda s: s):
+        dt = h / (M * U1)
+        n = int(round(t_end / dt))
+        dt = t_end / n
+        st = conv_in([a.copy() for a in st0])
+        cache = {}
+        for _ in range(n):
+            st = stepper(st, dt, cache)
+        return conv_out(st), st
+
+    def err(a, b):
+        return max(np.abs(a[3] - b[3]).max() / S0, np.abs(a[2] - b[2]).max(), np.abs(a[1] - b[1]).max())
+
+    ref, _ = run(lambda s, dt, c: rk4_step(part, s, dt), 400)
+    E0 = part.energy(*st0)
+    print(f'second sound, N = {N}, A = {A}, t = {t_end} s: errors against RK4 at M = 400')
+    for M in (25, 50, 100):
+        p, _ = run(lambda s, dt, c: paper_step(part, s, dt, c), M)
+        d, dd = run(lambda s, dt, c: full_step(part, s, dt), M, to_full, from_full)
+        print(f'   M = {M:3d}: paper {err(p, ref):.3e}, doubled {err(d, ref):.3e}, paper - doubled '
+              f'{err(p, d):.3e}; copies |v_s - v_s\'| {np.abs((dd[1] - dd[2]) - (dd[4] - dd[5])).max():.2e} m/s;'
+              f' dE/E paper {part.energy(*p) / E0 - 1:.2e}, doubled {part.energy(*d) / E0 - 1:.2e}')
+
+
+def droplet_check(steps):
+    part, st = random_droplet(9, 2, 1, speed=0.3, counterflow=0.3, ds=0.01)
+    dt = part.h / (10 * U1)
+    E0 = part.energy(*st)
+    d = to_full(st)
+    print(f'random droplet, {len(st[0])} particles, doubled scheme, dt = {dt:.3e} s:')
+    for i in range(1, steps + 1):
+        d = full_step(part, d, dt)
+        if i % (steps // 4) == 0:
+            du = max(np.abs(d[1] - d[4]).max(), np.abs(d[2] - d[5]).max())
+            print(f'   step {i}: max copy difference in v, v - v_s {du:.2e} m/s, in s / s0 '
+                  f'{np.abs(d[3] - d[6]).max() / S0:.2e}; dE/E {part.energy(*from_full(d)) / E0 - 1:.2e}')
+
+
 def main():
     for dim, n_side in ((2, 9), (3, 5)):
         part, state = random_droplet(n_side, dim, 1, speed=0.3, counterflow=0.3, ds=0.05)
@@ -154,6 +264,9 @@ def main():
               f' total {bulk + rest:.4e} 1/s')
         print(f'   div f in (x, v, v_s, s) = {div:.4e} 1/s; with s / rho stored: {div_y:.4e} 1/s;'
               f' typical rate {rate_scale:.3e} 1/s')
+    order_check(12, 0.1, 1e-4)
+    order_check(12, 0.01, 1e-4)
+    droplet_check(4000)
 
 
 if __name__ == '__main__':

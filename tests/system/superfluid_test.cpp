@@ -1,0 +1,134 @@
+// Superfluid helium (paper 3), the reversible part: the random droplet (2D and 3D) and the
+// second-sound wave return bit for bit on 1 and 2 threads; every sub-step is undone by itself on
+// random states whose two copies differ; the hash does not depend on the cell size; each copy's
+// momentum and total entropy are kept in integers; golden hashes.
+
+#include "core/threads.hpp"
+#include "simulation_fixture.hpp"
+#include "verify/reversibility.hpp"
+
+#include <boost/multiprecision/cpp_int.hpp>
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <random>
+#include <string>
+
+namespace {
+
+using revsph::VerifyOptions;
+using revsph::testing::hash_of;
+using revsph::testing::make_simulation;
+
+void expect_returns(const std::string& name, std::int64_t steps) {
+  for (const int threads : {1, 2}) {
+    const int previous = revsph::thread_count();
+    revsph::set_thread_count(threads);
+    auto simulation = make_simulation(name);
+    VerifyOptions options;
+    options.steps = steps;
+    const auto report = revsph::verify_reversibility(*simulation, options);
+    EXPECT_TRUE(report.identical())
+        << name << ", " << threads << " threads: " << report.comparison.verdict();
+    EXPECT_NE(report.initial_hash, report.turning_point_hash) << name << " did move";
+    revsph::set_thread_count(previous);
+  }
+}
+
+TEST(Superfluid, RandomDropletReturnsBitwiseOnOneAndTwoThreads) {
+  expect_returns("droplet-small", 2000);
+}
+
+TEST(Superfluid, SecondSoundReturnsBitwiseOnOneAndTwoThreads) {
+  expect_returns("second-sound-small", 2000);
+}
+
+TEST(Superfluid, ThreeDimensionalDropletReturnsBitwise) {
+  expect_returns("droplet-3d-small", 500);
+}
+
+// Each sub-step (drift, copy_one, copy_two) alone, forward then with -dt, on random states: the
+// droplet's random v, v_s, s with copy 2 jittered away from copy 1 (as the copies drift apart in
+// a run) and positions jittered by about dr / 30.
+TEST(Superfluid, EverySubstepIsUndoneByItselfOnRandomStates) {
+  for (const char* name : {"droplet-small", "droplet-3d-small"}) {
+    for (const std::uint64_t seed : {1u, 2u}) {
+      auto simulation = make_simulation(name);
+      revsph::StateSnapshot state = simulation->capture_state();
+      std::mt19937_64 engine(seed);
+      std::uniform_int_distribution<std::int64_t> jitter(-(std::int64_t{1} << 40),
+                                                         std::int64_t{1} << 40);
+      for (const char* field : {"velocity_copy", "superflow_velocity_copy", "entropy_copy"}) {
+        for (std::int64_t& bits : state.find("fluid", field)->bits) {
+          bits += jitter(engine);
+        }
+      }
+      for (std::int64_t& bits : state.find("fluid", "position")->bits) {
+        bits += jitter(engine) * 16;
+      }
+      simulation->restore_state(state);
+      for (const auto& check : revsph::check_substeps(*simulation, simulation->info().dt)) {
+        EXPECT_TRUE(check.comparison.identical) << name << ", seed " << seed << ", " << check.name
+                                                << ": " << check.comparison.verdict();
+      }
+    }
+  }
+}
+
+TEST(Superfluid, HashDoesNotDependOnTheCellSize) {
+  auto hash_with_cells = [](const char* factor) {
+    auto simulation =
+        make_simulation("droplet-small", {{"discretisation.cell_size_factor", factor}});
+    simulation->advance(200);
+    return hash_of(*simulation);
+  };
+  EXPECT_EQ(hash_with_cells("1.0"), hash_with_cells("1.7"));
+}
+
+// Equal masses: the pair increments of v and s that a and b receive are exact negatives, so the
+// raw sums over the particles of each copy's v and s never change (eq. B9, B10 in integers).
+TEST(Superfluid, EachCopyKeepsMomentumAndEntropyInIntegers) {
+  auto simulation = make_simulation("droplet-small");
+  auto totals = [&] {
+    const revsph::StateSnapshot state = simulation->capture_state();
+    std::vector<boost::multiprecision::int128_t> sums;
+    for (const char* field : {"velocity", "velocity_copy", "entropy", "entropy_copy"}) {
+      const revsph::FieldSnapshot& f = *state.find("fluid", field);
+      const std::size_t components = f.bits.size() / f.count;
+      for (std::size_t k = 0; k < components; ++k) {
+        boost::multiprecision::int128_t sum = 0;
+        for (std::size_t i = 0; i < f.count; ++i) {
+          sum += f.bits[k * f.count + i];
+        }
+        sums.push_back(sum);
+      }
+    }
+    return sums;
+  };
+  const auto before = totals();
+  simulation->advance(500);
+  const auto after = totals();
+  ASSERT_EQ(before.size(), after.size());
+  for (std::size_t q = 0; q < before.size(); ++q) {
+    EXPECT_TRUE(before[q] == after[q]) << "total " << q << " changed";
+  }
+  // The droplet does move: its velocities are not the initial ones.
+  EXPECT_NE(hash_of(*simulation), hash_of(*make_simulation("droplet-small")));
+}
+
+// Golden hashes. Regenerate with: build/bin/revsph hash droplet-small --steps 200 (and so on).
+TEST(GoldenHash, SuperfluidDropletSmallAfter200Steps) {
+  auto simulation = make_simulation("droplet-small");
+  simulation->advance(200);
+  EXPECT_EQ(hash_of(*simulation),
+            "ba497e3619e09be4bb1fbeeba29829c6891d2bc06e4881a745af6640bfd72588");
+}
+
+TEST(GoldenHash, SuperfluidSecondSoundSmallAfter100Steps) {
+  auto simulation = make_simulation("second-sound-small");
+  simulation->advance(100);
+  EXPECT_EQ(hash_of(*simulation),
+            "e08e1fdc4b8a6e063012dc048e332512c43e0777c188f28e33a48728d24cf6b9");
+}
+
+} // namespace
