@@ -73,6 +73,12 @@ template <class M>
 concept HasDiagnostics = requires(M& model) {
   { model.diagnostics() } -> std::same_as<std::vector<EnergyTerm>>;
 };
+// The same for diagnostics that need the simulated time (an error against an analytic solution
+// that evolves, say); the time is steps taken * dt.
+template <class M>
+concept HasTimedDiagnostics = requires(M& model, double time) {
+  { model.diagnostics(time) } -> std::same_as<std::vector<EnergyTerm>>;
+};
 
 // Optional: operations after each full step, outside the palindrome (core/step_composition.hpp).
 template <class M>
@@ -160,7 +166,9 @@ public:
     attributing_faults([&] { model_.derived_views(sink); });
   }
   std::vector<EnergyTerm> diagnostics() override {
-    if constexpr (HasDiagnostics<M>) {
+    if constexpr (HasTimedDiagnostics<M>) {
+      return attributing_faults([&] { return model_.diagnostics(time()); });
+    } else if constexpr (HasDiagnostics<M>) {
       return attributing_faults([&] { return model_.diagnostics(); });
     } else {
       return {};

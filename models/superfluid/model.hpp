@@ -45,8 +45,11 @@ public:
   // Eq. (15) summed over the fluid, on the mean of the two copies.
   EnergyBudget energy();
   void derived_views(const ViewSink& sink);
-  // The largest differences between the copies, and the total entropies sum m s of each copy.
-  std::vector<EnergyTerm> diagnostics();
+  // The largest differences between the copies and the total entropies sum m s of each copy;
+  // with the second-sound wave of eq. (26), its error against eq. (25) at `time` (RMS over the
+  // particles of (s - s_exact) / (A s0): eq. 27 before its maximum over time) and the mean
+  // entropy of the particle nearest to (L/4, L/4) with eq. (25) there (Fig. 6).
+  std::vector<EnergyTerm> diagnostics(double time);
   void invalidate_derived() {
     density_valid_ = false;
     constants_valid_ = false;

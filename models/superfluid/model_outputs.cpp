@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <string>
 
 namespace revsph::superfluid {
@@ -70,7 +72,7 @@ EnergyBudget Model<D, Arith>::energy() {
 }
 
 template <int D, class Arith>
-std::vector<EnergyTerm> Model<D, Arith>::diagnostics() {
+std::vector<EnergyTerm> Model<D, Arith>::diagnostics(double time) {
   const auto& f = state_.fluid;
   const auto& v_scale = f.velocity.info().scale;
   const auto& s_scale = f.entropy.info().scale;
@@ -91,11 +93,54 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics() {
     entropy_one += mass[a] * s1;
     entropy_two += mass[a] * s2;
   }
-  return {{"copy_velocity_difference", dv},
-          {"copy_superflow_difference", dvs},
-          {"copy_entropy_difference", ds},
-          {"total_entropy", entropy_one},
-          {"total_entropy_copy", entropy_two}};
+  std::vector<EnergyTerm> terms{{"copy_velocity_difference", dv},
+                                {"copy_superflow_difference", dvs},
+                                {"copy_entropy_difference", ds},
+                                {"total_entropy", entropy_one},
+                                {"total_entropy_copy", entropy_two}};
+  const InitialFields& wave = parameters_.initial;
+  if (wave.wave_amplitude != 0.0) {
+    const Helium& he = parameters_.helium;
+    const double s0 = he.reference_entropy;
+    const double pi = std::numbers::pi;
+    // Eq. (25): s0 + A s0 prod_k sin(pi x_k / L) cos(sqrt(D) pi u2 t / L) (the 2D formula's
+    // frequency sqrt(2) pi u2 / L is the mode's |k| u2); cosines for the adiabatic mode.
+    const double phase = std::cos(std::sqrt(static_cast<double>(D)) * pi * he.second_sound_speed() *
+                                  time / wave.wave_length);
+    auto exact = [&](const std::array<double, D>& x) {
+      double value = wave.wave_amplitude * s0 * phase;
+      for (int k = 0; k < D; ++k) {
+        const double angle = pi * x[k] / wave.wave_length;
+        value *= wave.wave_cosine ? std::cos(angle) : std::sin(angle);
+      }
+      return s0 + value;
+    };
+    const MeanState mean = mean_state();
+    const auto& x_scale = f.position.info().scale;
+    std::array<double, D> probe_point{};
+    probe_point.fill(0.25 * wave.wave_length);
+    double squared = 0.0, nearest = std::numeric_limits<double>::infinity();
+    double probe_entropy = 0.0;
+    for (std::size_t a = 0; a < fluid_count(); ++a) {
+      std::array<double, D> x{};
+      double distance = 0.0;
+      for (int k = 0; k < D; ++k) {
+        x[k] = Arith::real(f.position.at(k, a), x_scale);
+        distance += (x[k] - probe_point[k]) * (x[k] - probe_point[k]);
+      }
+      const double error = (mean.entropy[a] - exact(x)) / (wave.wave_amplitude * s0);
+      squared += error * error;
+      if (distance < nearest) {
+        nearest = distance;
+        probe_entropy = mean.entropy[a];
+      }
+    }
+    terms.push_back(
+        {"second_sound_error", std::sqrt(squared / static_cast<double>(fluid_count()))});
+    terms.push_back({"probe_entropy", probe_entropy});
+    terms.push_back({"probe_entropy_exact", exact(probe_point)});
+  }
+  return terms;
 }
 
 template <int D, class Arith>

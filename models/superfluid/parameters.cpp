@@ -53,6 +53,12 @@ InitialFields read_initial(const CaseFile& case_file) {
   if (f.wave_amplitude != 0.0) {
     f.wave_length = case_file.positive_number("initial.entropy_wave_length");
   }
+  const std::string shape = case_file.string_or("initial.entropy_wave_shape", "sine");
+  if (shape != "sine" && shape != "cosine") {
+    case_file.fail("initial.entropy_wave_shape",
+                   "expected \"sine\" or \"cosine\", got \"" + shape + "\"");
+  }
+  f.wave_cosine = shape == "cosine";
   f.random_velocity = case_file.number_or("initial.random_velocity", 0.0);
   f.random_counterflow = case_file.number_or("initial.random_counterflow", 0.0);
   f.random_entropy = case_file.number_or("initial.random_entropy", 0.0);
@@ -122,6 +128,14 @@ const KeyTable& case_keys() {
         "paper's dt = h / (M u1) is courant_number = 1 / (2 M))"));
     t.add({"initial.entropy_wave_amplitude", T::number, "1", "0",
            "A of eq. (26): s = s0 (1 + A sin(pi x / L) sin(pi y / L)) [sin(pi z / L) in 3D]"});
+    t.add({"initial.entropy_wave_shape",
+           T::string,
+           "-",
+           "\"sine\"",
+           "\"sine\": eq. (26) as printed, zero at the edges of the square [0, L]^D (eq. 25 "
+           "assumes s = s0 there); \"cosine\": cos(pi x / L) cos(pi y / L), the standing mode "
+           "of a square with adiabatic (free) edges",
+           {"sine", "cosine"}});
     t.add({"initial.entropy_wave_length", T::number, "m", "required with an amplitude",
            "L of eq. (26); > 0"});
     t.add({"initial.random_velocity", T::number, "m/s", "0",

@@ -15,9 +15,12 @@ namespace revsph::superfluid {
 // Initial fields beyond rest at s0: the second-sound standing wave of eq. (26) and seeded random
 // perturbations (uniform in [-amplitude, amplitude], every component of every particle).
 struct InitialFields {
-  double wave_amplitude = 0.0;  // A of eq. (26)
-  double wave_length = 0.0;     // L of eq. (26): s0 A sin(pi x / L) sin(pi y / L) [sin(pi z / L)]
-  double random_velocity = 0.0; // m/s, on v
+  double wave_amplitude = 0.0; // A of eq. (26)
+  double wave_length = 0.0;    // L of eq. (26): s0 A sin(pi x / L) sin(pi y / L) [sin(pi z / L)]
+  // Eq. (26) as printed (sine), or the mode of the adiabatic square, cos(pi x / L) cos(pi y / L)
+  // (README: with free adiabatic edges eq. 25 is not a solution; the cosine mode is).
+  bool wave_cosine = false;
+  double random_velocity = 0.0;    // m/s, on v
   double random_counterflow = 0.0; // m/s, on v - v_s
   double random_entropy = 0.0;     // relative, on s / s0
   std::uint64_t seed = 1;

@@ -54,7 +54,8 @@ InitialCopy<D> initial_copy(const CaseFile& case_file, const Parameters<D>& para
     }
     double wave = f.wave_amplitude;
     for (int k = 0; k < D && wave != 0.0; ++k) {
-      wave *= std::sin(std::numbers::pi * x[k] / f.wave_length); // eq. (26)
+      const double angle = std::numbers::pi * x[k] / f.wave_length;
+      wave *= f.wave_cosine ? std::cos(angle) : std::sin(angle); // eq. (26)
     }
     const double s =
         he.reference_entropy * (1.0 + wave + f.random_entropy * symmetric_uniform(generator));
