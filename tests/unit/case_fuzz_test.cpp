@@ -799,6 +799,16 @@ TEST(CaseFuzz, MutantsOfHyperbolicSmall) {
   fuzz({"hyperbolic-small", "dr = 0.05", "dr = 0.1", 8000, 4, false});
 }
 
+TEST(CaseFuzz, MutantsOfDropletSmall) {
+  // The superfluid model: random v, v_s and s, free surfaces; dr 2 mm: 64 particles.
+  fuzz({"droplet-small", "dr = 1.0e-3", "dr = 2.0e-3", 8000, 5});
+}
+
+TEST(CaseFuzz, MutantsOfSecondSoundSmall) {
+  // The superfluid model's entropy wave on a Vogel spiral; dr 1 mm: about 100 particles.
+  fuzz({"second-sound-small", "dr = 3.3333333333333335e-4", "dr = 1.0e-3", 4000, 6});
+}
+
 TEST(CaseFuzz, MutantsOfDambreakSmall3D) {
   // dr 0.125: 16 fluid and about 300 wall particles.
   fuzz({"dambreak-3d-small", "dr = 0.025", "dr = 0.125", 8000, 1});

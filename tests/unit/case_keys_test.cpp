@@ -111,9 +111,10 @@ TEST(CaseKeys, EveryDeclarationIsDocumented) {
 
 // A built-in case of each model that reaches every string key's check.
 std::string base_case_of(std::string_view model) {
-  return model == "wcsph"      ? "dambreak-small"
-         : model == "entropic" ? "expansion-small"
-                               : "cavity-re100-small";
+  return model == "wcsph"        ? "dambreak-small"
+         : model == "entropic"   ? "expansion-small"
+         : model == "superfluid" ? "second-sound-small"
+                                 : "cavity-re100-small";
 }
 
 // Setting a string key to a value outside its allowed ones is refused by the reader, on that key,

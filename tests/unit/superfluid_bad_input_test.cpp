@@ -1,0 +1,84 @@
+// Bad input to the superfluid model (issue 17): each defect of a built-in case ends the run with
+// the one-line error "file: key: reason", exit status 2, and no output written. Defects are
+// given with --set, or as an edited line where a key must be removed.
+
+#include "case_text.hpp"
+#include "cli_sandbox.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace {
+
+using revsph::testing::error_prefix;
+using revsph::testing::expect_clean_rejection;
+using revsph::testing::replaced_once;
+using revsph::testing::Sandbox;
+
+struct Defect {
+  const char* name;
+  const char* builtin_case;
+  const char* from; // a line of the case replaced by `to` ("" for none)
+  const char* to;
+  const char* set; // a --set argument ("" for none)
+  const char* key; // the key the error names
+  const char* reason;
+};
+
+std::vector<Defect> defects() {
+  constexpr const char* capacity = "heat_capacity = 3902.0";
+  return {
+      {"normal_fraction_above_one", "droplet-small", "", "", "physics.normal_fraction=1.5",
+       "physics.normal_fraction", "chi_n0 must be in (0, 1]"},
+      {"negative_heat_capacity", "droplet-small", "", "", "physics.heat_capacity=-1",
+       "physics.heat_capacity", "must be > 0"},
+      {"negative_second_sound_speed", "droplet-small", capacity, "second_sound_speed = -18.83", "",
+       "physics.second_sound_speed", "must be > 0"},
+      {"both_heat_capacity_and_second_sound_speed", "droplet-small", "", "",
+       "physics.second_sound_speed=18.83", "physics.second_sound_speed", "give exactly one"},
+      {"neither_heat_capacity_nor_second_sound_speed", "droplet-small", capacity, "", "",
+       "physics.heat_capacity", "give exactly one"},
+      // chi_n = chi_n0 + chi' (s - s0) leaves (0, 1] where s / s0 - 1 reaches -1.5.
+      {"normal_fraction_negative_at_the_start", "droplet-small", "", "", "initial.random_entropy=3",
+       "initial.random_entropy", "chi_n must stay in (0, 1]"},
+      {"normal_fraction_above_one_in_the_wave", "second-sound-small", "", "",
+       "initial.entropy_wave_amplitude=4", "initial.entropy_wave_amplitude",
+       "chi_n must stay in (0, 1]"},
+      {"unknown_wave_shape", "second-sound-small", "", "", "initial.entropy_wave_shape=square",
+       "initial.entropy_wave_shape", "expected \"sine\" or \"cosine\", got \"square\""},
+      {"negative_random_velocity", "droplet-small", "", "", "initial.random_velocity=-0.1",
+       "initial.random_velocity", "must be a finite number >= 0"},
+      {"wave_without_length", "second-sound-small", "entropy_wave_length = 0.01", "", "",
+       "initial.entropy_wave_length", "missing required key"},
+  };
+}
+
+class SuperfluidBadInput : public ::testing::TestWithParam<Defect> {};
+
+TEST_P(SuperfluidBadInput, RunExitsWithOneLineAndWritesNothing) {
+  const Defect& defect = GetParam();
+  Sandbox sandbox;
+  std::string text = revsph::testing::builtin_case_text(defect.builtin_case);
+  if (std::string(defect.from).size() > 0) {
+    text = replaced_once(text, defect.from, defect.to);
+  }
+  const auto case_path = sandbox.write_case(text);
+  std::vector<std::string> arguments{
+      "run", case_path.string(), "--out", sandbox.out().string(), "--steps", "1"};
+  if (std::string(defect.set).size() > 0) {
+    arguments.insert(arguments.end(), {"--set", defect.set});
+  }
+  const auto result = sandbox.revsph(arguments);
+  expect_clean_rejection(
+      sandbox, result, {"case.toml"},
+      {defect.reason, error_prefix + case_path.string() + ": " + defect.key + ": "});
+}
+
+INSTANTIATE_TEST_SUITE_P(Defects, SuperfluidBadInput, ::testing::ValuesIn(defects()),
+                         [](const ::testing::TestParamInfo<Defect>& param_info) {
+                           return std::string(param_info.param.name);
+                         });
+
+} // namespace
