@@ -22,6 +22,17 @@ std::array<SummedQuantity, 2 * D + 1> increment_quantities(const fixedpoint::Sca
   return quantities;
 }
 
+template <int D>
+std::array<SummedQuantity, D + 1> dissipation_quantities(const fixedpoint::Scale& velocity,
+                                                         const fixedpoint::Scale& heat) {
+  std::array<SummedQuantity, D + 1> quantities{};
+  for (int k = 0; k < D; ++k) {
+    quantities[k] = {"viscous_velocity_increment", velocity};
+  }
+  quantities[D] = {"heat", heat};
+  return quantities;
+}
+
 } // namespace
 
 template <int D, class Arith>
@@ -32,7 +43,9 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
               {{"fluid", state_.fluid.position.count()}, {"dummy", state_.dummy.position.count()}}),
       density_sums_(SummedQuantity{"density", parameters_.density_scale}),
       increment_sums_(
-          increment_quantities<D>(parameters_.velocity_scale, parameters_.entropy_scale)) {}
+          increment_quantities<D>(parameters_.velocity_scale, parameters_.entropy_scale)),
+      dissipation_sums_(
+          dissipation_quantities<D>(parameters_.velocity_scale, parameters_.heat_scale)) {}
 
 template <int D, class Arith>
 void Model<D, Arith>::initialise_density_constants() {
@@ -58,11 +71,17 @@ void Model<D, Arith>::initialise_density_constants() {
 
 template <int D, class Arith>
 std::span<const Substep<Model<D, Arith>>> Model<D, Arith>::palindrome() {
+  // clang-format off
   static constexpr Substep<Model> sequence[] = {
-      {"drift", 0.5, &Model::drift_substep},       {"copy_one", 0.5, &Model::copy_one_substep},
-      {"copy_two", 1.0, &Model::copy_two_substep}, {"copy_one", 0.5, &Model::copy_one_substep},
+      {"drift", 0.5, &Model::drift_substep},
+      {"dissipate", 0.5, &Model::dissipate_substep, &Model::dissipation_acts},
+      {"copy_one", 0.5, &Model::copy_one_substep},
+      {"copy_two", 1.0, &Model::copy_two_substep},
+      {"copy_one", 0.5, &Model::copy_one_substep},
+      {"dissipate", 0.5, &Model::dissipate_substep, &Model::dissipation_acts},
       {"drift", 0.5, &Model::drift_substep},
   };
+  // clang-format on
   return sequence;
 }
 
@@ -221,8 +240,9 @@ void Model<D, Arith>::fill_rate_inputs(int from) {
 template <int D, class Arith>
 void Model<D, Arith>::sum_increments(int from, double tau) {
   fill_rate_inputs(from);
-  sum_pairs<Arith>(layout_, RateTerm<D>{kernel_, slot_mass_, slot_is_fluid_, inputs_, tau},
-                   increment_sums_);
+  sum_pairs<Arith>(
+      layout_, RateTerm<D>{kernel_, slot_mass_, slot_is_fluid_, inputs_, tau, parameters_.gravity},
+      increment_sums_);
 }
 
 template class Model<2, FixedArithmetic>;

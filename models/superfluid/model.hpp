@@ -2,13 +2,15 @@
 // The superfluid helium-4 model of paper 3 (Kincl, Schmoranzer, Pavelka, Phys. Fluids 35 (2023)
 // 047124): one particle with two velocities, the reversible part of eq. (19), bitwise reversible
 // through two copies of (v, v_s, s) (state.hpp; README "The reversible step"):
-//   drift(dt/2)  copy_one(dt/2)  copy_two(dt)  copy_one(dt/2)  drift(dt/2)
+//   drift(dt/2) [dissipate(dt/2)] copy_one(dt/2) copy_two(dt) copy_one(dt/2) [dissipate(dt/2)]
+//   drift(dt/2)
 // drift:    x += tau (v + v') / 2                      (mean of the two copies' velocities)
 // copy_one: (v, v_s, s) += tau f(x, v', v_s', s')      (eq. 19 evaluated on copy 2)
 // copy_two: (v', v_s', s') += tau f(x, v, v_s, s)      (eq. 19 evaluated on copy 1)
 // Each is a shear (its increment does not depend on the group it changes), so each is undone by
 // subtracting the same increment, and the palindrome is bitwise reversible under
-// (v, v_s, v', v_s') -> -(...).
+// (v, v_s, v', v_s') -> -(...). dissipate (viscosity, heat conduction: dissipation_terms.hpp)
+// is the irreversible part, a no-op without it; it gives both copies the same increments.
 
 #include "core/carrier_field.hpp"
 #include "core/energy.hpp"
@@ -23,6 +25,7 @@
 #include "models/superfluid/state.hpp"
 
 #include <span>
+#include <string>
 #include <vector>
 
 namespace revsph::superfluid {
@@ -57,6 +60,10 @@ public:
   void reverse_time();
 
   void drift(double dt);
+  // Viscosity and heat conduction over dt from the mean of the copies (irreversible): the same
+  // velocity and entropy increments to both copies, the heat turned into entropy so that the
+  // energy (15) is kept.
+  void dissipate(double dt);
   // Adds dt * f(copy `from`) to copy `to` (0: the fields without suffix, 1: the *_copy ones).
   void update_copy(int to, double dt);
 
@@ -64,6 +71,8 @@ private:
   static void drift_substep(Model& model, double dt) { model.drift(dt); }
   static void copy_one_substep(Model& model, double dt) { model.update_copy(0, dt); }
   static void copy_two_substep(Model& model, double dt) { model.update_copy(1, dt); }
+  static void dissipate_substep(Model& model, double dt) { model.dissipate(dt); }
+  static std::string dissipation_acts(const Model& model);
 
   struct Copy {
     StateField<Raw>* velocity;
@@ -77,6 +86,8 @@ private:
   }
   void update_constants();
   void update_density();
+  // Entropy increment that adds `heat` to a particle's energy (15) at fixed v, v_s, rho.
+  double entropy_for_heat(double s, double relative_squared, double mass, double heat) const;
   // The rate inputs from copy `from` (or the mean of both, from = -1) at the current positions.
   void fill_rate_inputs(int from);
   void sum_increments(int from, double tau);
@@ -106,6 +117,7 @@ private:
   PairSums<Arith, 1> density_sums_;
   RateInputs<D> inputs_;
   PairSums<Arith, 2 * D + 1> increment_sums_; // at the scales of v, v_s and s
+  PairSums<Arith, D + 1> dissipation_sums_;   // velocity increments and heat
 };
 
 extern template class Model<2, FixedArithmetic>;

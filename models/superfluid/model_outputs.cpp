@@ -48,6 +48,8 @@ EnergyBudget Model<D, Arith>::energy() {
       layout_.part_of_set(std::span<const double>(mass_), dummy_set);
   // Serial sums in particle order: the same value for any thread count.
   double kinetic = 0.0, counterflow = 0.0, compressional = 0.0, thermal = 0.0;
+  double gravitational = 0.0;
+  const auto& x_scale = state_.fluid.position.info().scale;
   for (std::size_t a = 0; a < fluid.size(); ++a) {
     double v_squared = 0.0, relative_squared = 0.0;
     for (int k = 0; k < D; ++k) {
@@ -61,6 +63,9 @@ EnergyBudget Model<D, Arith>::energy() {
     counterflow += mass[a] * he.counterflow_energy(s, relative_squared);
     compressional += mass[a] * he.compressional_energy(density_sums_.value(0, fluid[a]));
     thermal += mass[a] * he.thermal_energy(s);
+    gravitational += mass[a] * parameters_.gravity *
+                     (Arith::real(state_.fluid.position.at(D - 1, a), x_scale) -
+                      parameters_.gravity_reference_height);
   }
   for (std::size_t d = 0; d < dummy.size(); ++d) {
     compressional += dummy_mass[d] * he.compressional_energy(density_sums_.value(0, dummy[d]));
@@ -68,7 +73,8 @@ EnergyBudget Model<D, Arith>::energy() {
   return EnergyBudget{{{"kinetic", kinetic},
                        {"counterflow", counterflow},
                        {"compressional", compressional},
-                       {"thermal", thermal}}};
+                       {"thermal", thermal},
+                       {"gravitational", gravitational}}};
 }
 
 template <int D, class Arith>

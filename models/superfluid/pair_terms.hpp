@@ -50,9 +50,19 @@ struct RateTerm {
   std::span<const double> mass;
   std::span<const std::uint8_t> is_fluid;
   const RateInputs<D>& in;
-  double tau; // the sub-step's length
+  double tau;     // the sub-step's length
+  double gravity; // g along minus the last axis, on v and v_s (eq. 29)
 
   bool receives(std::uint32_t s) const { return is_fluid[s] != 0; }
+
+  // Gravity (eq. 29): the same increment for every particle, even under time reversal.
+  template <class Add>
+  void self(std::uint32_t, Add& add) const {
+    if (gravity != 0.0) {
+      add(D - 1, -tau * gravity);
+      add(2 * D - 1, -tau * gravity);
+    }
+  }
 
   // The pressure part, shared by v and v_s: -(p_a / rho_a^2 + p_b / rho_b^2) w'/r x_ab.
   void pair(const PairGeometry<D>& p, std::array<double, width>& to_a,

@@ -83,6 +83,16 @@ template <int D>
 Parameters<D> read_parameters(const CaseFile& case_file) {
   Parameters<D> p;
   p.helium = read_helium(case_file);
+  p.gravity = case_file.number_or("physics.gravity", 0.0);
+  p.gravity_reference_height = case_file.number_or("physics.gravity_reference_height", 0.0);
+  p.viscosity = case_file.number_or("physics.viscosity", 0.0);
+  p.heat_conductivity = case_file.number_or("physics.heat_conductivity", 0.0);
+  for (const char* key : {"physics.viscosity", "physics.heat_conductivity"}) {
+    const double value = case_file.number_or(key, 0.0);
+    if (!(value >= 0.0 && std::isfinite(value))) {
+      case_file.fail(key, "must be a finite number >= 0");
+    }
+  }
   const ParticleDiscretisation discretisation =
       read_particle_discretisation(case_file, p.helium.first_sound_speed);
   p.dr = discretisation.dr;
@@ -101,6 +111,10 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.velocity_scale = scale_or(case_file, "fixed_point.velocity_exponent", he.first_sound_speed, 50);
   p.entropy_scale = scale_or(case_file, "fixed_point.entropy_exponent", he.reference_entropy, 50);
   p.density_scale = scale_or(case_file, "fixed_point.density_exponent", he.rest_density, 48);
+  // The heat sums: a particle's thermal energy scale m T0 s0 (m = rho0 dr^D) with 60 bits.
+  p.heat_scale = scale_or(
+      case_file, "fixed_point.heat_exponent",
+      he.rest_density * std::pow(p.dr, D) * he.reference_temperature * he.reference_entropy, 60);
   return p;
 }
 
@@ -115,6 +129,15 @@ const KeyTable& case_keys() {
     t.add({"physics.reference_temperature", T::number, "K", "required", "T0 of eq. (13); > 0"});
     t.add({"physics.reference_entropy", T::number, "J/(kg K)", "required",
            "s0 of eqs. (8, 13); > 0"});
+    t.add({"physics.gravity", T::number, "m/s^2", "0",
+           "gravitational acceleration g (eq. 29) along minus the last axis, on v and v_s"});
+    t.add({"physics.gravity_reference_height", T::number, "m", "0",
+           "height of zero gravitational energy (shifts the reported energy only)"});
+    t.add({"physics.viscosity", T::number, "Pa s", "0",
+           "mu of the normal fluid (eq. 19, Monaghan's form B22, eta = h / 10); >= 0; "
+           "irreversible"});
+    t.add({"physics.heat_conductivity", T::number, "W/(m K)", "0",
+           "beta of eq. (5) (B21, B23); >= 0; irreversible"});
     t.add({"physics.normal_fraction", T::number, "1", "required",
            "chi_n0 of eq. (8), in (0, 1] (1: a classical fluid)"});
     t.add({"physics.normal_fraction_slope", T::number, "kg K/J", "0", "chi' of eq. (8)"});
@@ -154,6 +177,9 @@ const KeyTable& case_keys() {
            "v and v_s are stored as integers times 2^exponent"});
     t.add({"fixed_point.entropy_exponent", T::integer, "-", "covers s0 with 50 fraction bits",
            "s is stored as integers times 2^exponent"});
+    t.add({"fixed_point.heat_exponent", T::integer, "-",
+           "covers rho0 dr^D T0 s0 with 60 fraction bits",
+           "scale of the sums of the heat a particle receives in a dissipation sub-step"});
     t.add({"fixed_point.density_exponent", T::integer, "-", "covers rho0 with 48 fraction bits",
            "scale of the density sums and the constants C_a"});
     return t;

@@ -29,6 +29,10 @@ struct InitialFields {
 template <int D>
 struct Parameters {
   Helium helium;
+  double gravity = 0.0;                  // g (m/s^2) along minus the last axis (eq. 29)
+  double gravity_reference_height = 0.0; // height of zero gravitational energy (m)
+  double viscosity = 0.0;                // mu of the normal fluid (eq. 19), >= 0
+  double heat_conductivity = 0.0;        // beta (eq. 5), >= 0
   // [discretisation]
   double dr = 0.0;
   double support_radius = 0.0; // the kernel's support, twice the paper's h (eq. 17)
@@ -41,6 +45,7 @@ struct Parameters {
   fixedpoint::Scale velocity_scale; // v and v_s
   fixedpoint::Scale entropy_scale;  // s
   fixedpoint::Scale density_scale;  // density sums and C_a
+  fixedpoint::Scale heat_scale;     // sums of the heat a particle receives in a sub-step
 };
 
 template <int D>

@@ -10,15 +10,20 @@
 #include <boost/multiprecision/cpp_int.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace {
 
 using revsph::VerifyOptions;
 using revsph::testing::hash_of;
 using revsph::testing::make_simulation;
+using revsph::testing::named_value;
 
 void expect_returns(const std::string& name, std::int64_t steps) {
   for (const int threads : {1, 2}) {
@@ -114,6 +119,64 @@ TEST(Superfluid, EachCopyKeepsMomentumAndEntropyInIntegers) {
   }
   // The droplet does move: its velocities are not the initial ones.
   EXPECT_NE(hash_of(*simulation), hash_of(*make_simulation("droplet-small")));
+}
+
+// The dissipation sub-step alone (viscosity and heat conduction, from the mean of the copies) on
+// the random droplet after 300 steps: it keeps the energy (15) to 1e-12 of the mechanical energy
+// it moves plus the rounding of the entropies (the heat becomes entropy by Newton's method on the
+// exact energy), the
+// momentum of each copy in integers (equal and opposite pair increments), the copies'
+// difference bit for bit (the same increments to both), and it raises the total entropy.
+TEST(Superfluid, DissipationKeepsEnergyAndMomentumAndRaisesEntropy) {
+  auto simulation = make_simulation(
+      "droplet-small", {{"physics.viscosity", "1e-4"}, {"physics.heat_conductivity", "5"}});
+  simulation->advance(300);
+  const std::vector<std::string> names = simulation->substep_names();
+  const std::size_t dissipate =
+      static_cast<std::size_t>(std::find(names.begin(), names.end(), "dissipate") - names.begin());
+  ASSERT_LT(dissipate, names.size());
+  auto sum_of = [](const revsph::StateSnapshot& state, const char* field, std::size_t component) {
+    const revsph::FieldSnapshot& f = *state.find("fluid", field);
+    boost::multiprecision::int128_t sum = 0;
+    for (std::size_t i = 0; i < f.count; ++i) {
+      sum += f.bits[component * f.count + i];
+    }
+    return sum;
+  };
+  const revsph::StateSnapshot before = simulation->capture_state();
+  const double energy_before = simulation->energy().total();
+  const double kinetic_before = named_value(simulation->energy().terms, "kinetic");
+  // Ten times the step, so that the heat is large against rounding.
+  simulation->apply_substep(dissipate, 10.0 * simulation->info().dt);
+  const revsph::StateSnapshot after = simulation->capture_state();
+  const double energy_after = simulation->energy().total();
+  const double kinetic_after = named_value(simulation->energy().terms, "kinetic");
+  EXPECT_NE(kinetic_before, kinetic_after) << "the viscosity acted";
+  // Rounding: each particle's entropy increment is rounded up by less than one unit of its scale,
+  // worth m T < m * 2 K of energy each.
+  const revsph::FieldSnapshot& entropy = *after.find("fluid", "entropy");
+  const double rounding = static_cast<double>(entropy.count) *
+                          after.find("fluid", "mass")->real(0, 0) * 2.0 * entropy.info.scale.unit();
+  const double moved = std::abs(kinetic_after - kinetic_before);
+  EXPECT_LT(std::abs(energy_after - energy_before), 1e-9 * moved + rounding)
+      << "energy " << energy_before << " -> " << energy_after << ", kinetic energy moved " << moved
+      << ", rounding bound " << rounding;
+  EXPECT_TRUE(sum_of(after, "entropy", 0) > sum_of(before, "entropy", 0));
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_TRUE(sum_of(after, "velocity", k) == sum_of(before, "velocity", k));
+    EXPECT_TRUE(sum_of(after, "velocity_copy", k) == sum_of(before, "velocity_copy", k));
+  }
+  for (const auto& [one, two] : {std::pair{"velocity", "velocity_copy"},
+                                 std::pair{"superflow_velocity", "superflow_velocity_copy"},
+                                 std::pair{"entropy", "entropy_copy"}}) {
+    const auto& a0 = before.find("fluid", one)->bits;
+    const auto& b0 = before.find("fluid", two)->bits;
+    const auto& a1 = after.find("fluid", one)->bits;
+    const auto& b1 = after.find("fluid", two)->bits;
+    for (std::size_t i = 0; i < a0.size(); ++i) {
+      ASSERT_EQ(a0[i] - b0[i], a1[i] - b1[i]) << one << " value " << i;
+    }
+  }
 }
 
 // Golden hashes. Regenerate with: build/bin/revsph hash droplet-small --steps 200 (and so on).

@@ -1,0 +1,114 @@
+// The irreversible sub-step of the superfluid model: viscosity and heat conduction
+// (dissipation_terms.hpp), the heat turned into entropy so that the energy (15) is kept.
+#include "core/verlet.hpp"
+#include "models/superfluid/dissipation_terms.hpp"
+#include "models/superfluid/model.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace revsph::superfluid {
+
+template <int D, class Arith>
+std::string Model<D, Arith>::dissipation_acts(const Model& model) {
+  const Parameters<D>& p = model.parameters_;
+  if (p.viscosity == 0.0 && p.heat_conductivity == 0.0) {
+    return "";
+  }
+  std::ostringstream text;
+  text << "normal-fluid viscosity (mu = " << p.viscosity
+       << " Pa s, eqs. 19, B22) and heat conduction (beta = " << p.heat_conductivity
+       << " W/(m K), eqs. B21, B23), the heat kept as entropy";
+  return text.str();
+}
+
+// Solves m [e(s + x) - e(s)] = heat at fixed v, v_s and rho, e the energy (15): its s-dependent
+// part is the thermal term and the counterflow term (chi_s / chi_n)(s) |v - v_s|^2 / 2, whose
+// derivative is T (helium.hpp). Newton's method from heat / (m T), a fixed number of iterations
+// (deterministic; the heat of one sub-step is a tiny fraction of m T s).
+template <int D, class Arith>
+double Model<D, Arith>::entropy_for_heat(double s, double relative_squared, double mass,
+                                         double heat) const {
+  const Helium& he = parameters_.helium;
+  auto energy = [&](double entropy) {
+    return he.thermal_energy(entropy) + he.counterflow_energy(entropy, relative_squared);
+  };
+  auto temperature = [&](double entropy) {
+    const double chi_n = he.chi_n(entropy);
+    return he.temperature(entropy, relative_squared / (chi_n * chi_n));
+  };
+  const double target = heat / mass;
+  const double e0 = energy(s);
+  double x = target / temperature(s);
+  for (int iteration = 0; iteration < 4; ++iteration) {
+    x -= (energy(s + x) - e0 - target) / temperature(s + x);
+  }
+  return x;
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::dissipate(double dt) {
+  if (parameters_.viscosity == 0.0 && parameters_.heat_conductivity == 0.0) {
+    return;
+  }
+  fill_rate_inputs(-1); // the mean of the copies: T, v_n, u = v - v_s, 1 / rho
+  const double eta = parameters_.support_radius / 20.0; // h / 10, h = support / 2
+  sum_pairs<Arith>(layout_,
+                   DissipationTerm<D>{kernel_, slot_mass_, slot_is_fluid_, inputs_.inverse_density,
+                                      inputs_.temperature, inputs_.normal_velocity,
+                                      parameters_.viscosity, parameters_.heat_conductivity,
+                                      eta * eta, dt},
+                   dissipation_sums_);
+  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  FaultRecorder faults;
+  add_pair_totals<Arith>(state_.fluid.velocity, dissipation_sums_, 0, fluid, faults);
+  add_pair_totals<Arith>(state_.fluid.velocity_copy, dissipation_sums_, 0, fluid, faults);
+  // The heat: what the pairs gave, less the kinetic energy the increments themselves carry,
+  // m |dv|^2 / (2 chi_n) (e is quadratic in v with curvature 1 / chi_n at fixed v_s, s), so that
+  // the heats add up to the mechanical energy removed.
+  const Helium& he = parameters_.helium;
+  const std::span<const double> mass =
+      layout_.part_of_set(std::span<const double>(mass_), fluid_set);
+  auto& s1 = state_.fluid.entropy;
+  auto& s2 = state_.fluid.entropy_copy;
+  const auto& s_scale = s1.info().scale;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    const std::uint32_t slot = fluid[i];
+    const double s = 0.5 * (Arith::real(s1.at(0, i), s_scale) + Arith::real(s2.at(0, i), s_scale));
+    double dv_squared = 0.0, u_squared = 0.0;
+    for (int k = 0; k < D; ++k) {
+      const double dv = dissipation_sums_.value(k, slot);
+      const double u = inputs_.relative[k][slot] + dv;
+      dv_squared += dv * dv;
+      u_squared += u * u;
+    }
+    const double heat = dissipation_sums_.value(D, slot) - 0.5 * mass[i] * dv_squared / he.chi_n(s);
+    const double ds = entropy_for_heat(s, u_squared, mass[i], heat);
+    bool ok = std::isfinite(ds);
+    if constexpr (Arith::kind == Arithmetic::fixed) {
+      // Rounded up: rounding never lowers the total entropy.
+      const double raw = std::ceil(ds * s_scale.inverse_unit());
+      ok = ok && std::abs(raw) < 0x1.0p62;
+      if (ok) {
+        const auto increment = static_cast<std::int64_t>(raw);
+        ok = fixedpoint::try_add(s1.at(0, i), increment, s1.at(0, i)) &&
+             fixedpoint::try_add(s2.at(0, i), increment, s2.at(0, i));
+      }
+    } else {
+      s1.at(0, i) += ds;
+      s2.at(0, i) += ds;
+    }
+    if (!ok) {
+      faults.record(i, "fluid", "entropy", "overflow or non-finite value in the heat update");
+    }
+  }
+  faults.throw_if_any();
+}
+
+template class Model<2, FixedArithmetic>;
+template class Model<3, FixedArithmetic>;
+template class Model<2, FloatArithmetic>;
+template class Model<3, FloatArithmetic>;
+
+} // namespace revsph::superfluid

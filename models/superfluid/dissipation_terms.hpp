@@ -1,0 +1,79 @@
+#pragma once
+// The irreversible pair terms of paper 3 (eqs. 19, 23, B27-B28) over one sub-step tau, from the
+// mean of the two copies, run by core's pair loop: quantities 0..D-1 sum the velocity increments
+// (at the velocity's scale), quantity D the heat each particle receives (energy).
+//
+// Normal-fluid viscosity, Monaghan's form (B22), on the coflow velocity v, with the difference of
+// the normal velocities:
+//   dv_a/dt = sum_b m_b (w'_ab / r_ab) 2 (d + 2) mu / (rho_a rho_b)
+//             (v_n,ab . x_ab) / (r_ab^2 + eta^2) x_ab,     eta = h / 10 (h: the paper's, support / 2)
+// a's and b's increments are m_b c x_ab and -m_a c x_ab: momentum is kept exactly for equal
+// masses. The pair's dissipated power (B24), -m_a m_b c (v_n,ab . x_ab) / tau >= 0, heats a and b
+// by half each (B28 splits it so: each particle's zeta carries its half).
+//
+// Heat conduction (B21, B23, B27-B28): ds_a/dt = (beta / rho_a) {Delta T}_a + zeta_a / (T_a rho_a)
+// with zeta's conduction part beta {|grad T|^2}_a. Multiplied by m_a T_a it is the pairwise heat
+//   Q_a<-b = beta m_a m_b (w'_ab / r_ab) (T_a^2 - T_b^2) / (rho_a rho_b)  (= -Q_b<-a),
+// (the Laplacian's 2 T_a T_ab plus the dual's -T_ab^2 is T_a^2 - T_b^2): heat flows from hot
+// to cold (w' <= 0), so energy is kept and entropy grows.
+//
+// Dummy particles take no part (adiabatic, free-slip walls).
+
+#include "core/geometry.hpp"
+#include "core/kernel_wendland.hpp"
+#include "core/pair_sum.hpp"
+
+#include <array>
+#include <cstdint>
+#include <span>
+
+namespace revsph::superfluid {
+
+template <int D>
+struct DissipationTerm {
+  static constexpr int width = D + 1;
+  const WendlandQuintic<D>& kernel;
+  std::span<const double> mass;
+  std::span<const std::uint8_t> is_fluid;
+  std::span<const double> inverse_density;
+  std::span<const double> temperature;        // of the mean state, fluid slots
+  const CoordinateArrays<D>& normal_velocity; // of the mean state, fluid slots
+  double viscosity;                           // mu
+  double conductivity;                        // beta
+  double eta_squared;
+  double tau;
+
+  bool receives(std::uint32_t s) const { return is_fluid[s] != 0; }
+
+  void pair(const PairGeometry<D>& p, std::array<double, width>& to_a,
+            std::array<double, width>& to_b) const {
+    to_a.fill(0.0);
+    to_b.fill(0.0);
+    if (!is_fluid[p.a] || !is_fluid[p.b]) {
+      return;
+    }
+    const std::uint32_t a = p.a;
+    const std::uint32_t b = p.b;
+    const double slope = kernel.derivative_over_r(p.r);
+    const double inverse_densities = inverse_density[a] * inverse_density[b];
+    double vn_dot_x = 0.0;
+    for (int k = 0; k < D; ++k) {
+      vn_dot_x += (normal_velocity[k][a] - normal_velocity[k][b]) * p.x_ab[k];
+    }
+    const double c = tau * 2.0 * (D + 2) * viscosity * slope * inverse_densities * vn_dot_x /
+                     (p.r_squared + eta_squared);
+    for (int k = 0; k < D; ++k) {
+      to_a[k] = mass[b] * c * p.x_ab[k];
+      to_b[k] = -mass[a] * c * p.x_ab[k];
+    }
+    const double dissipated = -mass[a] * mass[b] * c * vn_dot_x;
+    const double t_a = temperature[a];
+    const double t_b = temperature[b];
+    const double heat = tau * conductivity * mass[a] * mass[b] * slope * inverse_densities *
+                        (t_a * t_a - t_b * t_b);
+    to_a[D] = 0.5 * dissipated + heat;
+    to_b[D] = 0.5 * dissipated - heat;
+  }
+};
+
+} // namespace revsph::superfluid
