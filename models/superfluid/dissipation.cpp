@@ -51,10 +51,21 @@ void Model<D, Arith>::dissipate(double dt) {
   if (parameters_.viscosity == 0.0 && parameters_.heat_conductivity == 0.0) {
     return;
   }
+  const bool walls = state_.wall.position.count() > 0;
+  const double energy_before = walls ? energy().total() : 0.0;
   fill_rate_inputs(-1); // the mean of the copies: T, v_n, u = v - v_s, 1 / rho
+  // The walls: their own velocity as v_n, T0 as temperature (s = s0, no counterflow).
+  const std::span<const std::uint32_t> wall = layout_.slots_of_set(wall_set);
+  const auto& wall_scale = state_.wall.velocity.info().scale;
+  for (std::size_t i = 0; i < wall.size(); ++i) {
+    inputs_.temperature[wall[i]] = parameters_.helium.reference_temperature;
+    for (int k = 0; k < D; ++k) {
+      inputs_.normal_velocity[k][wall[i]] = Arith::real(state_.wall.velocity.at(k, i), wall_scale);
+    }
+  }
   const double eta = parameters_.support_radius / 20.0; // h / 10, h = support / 2
   sum_pairs<Arith>(layout_,
-                   DissipationTerm<D>{kernel_, slot_mass_, slot_is_fluid_, inputs_.inverse_density,
+                   DissipationTerm<D>{kernel_, slot_mass_, slot_kind_, inputs_.inverse_density,
                                       inputs_.temperature, inputs_.normal_velocity,
                                       parameters_.viscosity, parameters_.heat_conductivity,
                                       eta * eta, dt},
@@ -104,6 +115,9 @@ void Model<D, Arith>::dissipate(double dt) {
     }
   }
   faults.throw_if_any();
+  if (walls) {
+    exchanged_energy_ += energy().total() - energy_before;
+  }
 }
 
 template class Model<2, FixedArithmetic>;

@@ -17,7 +17,9 @@
 // (the Laplacian's 2 T_a T_ab plus the dual's -T_ab^2 is T_a^2 - T_b^2): heat flows from hot
 // to cold (w' <= 0), so energy is kept and entropy grows.
 //
-// Dummy particles take no part (adiabatic, free-slip walls).
+// Dummy particles take no part (adiabatic, free-slip walls). Wall particles (no-slip, cooler)
+// act on the fluid with their own velocity as v_n and T0 as temperature, and receive nothing:
+// what they give or take is the model's wall_exchange energy.
 
 #include "core/geometry.hpp"
 #include "core/kernel_wendland.hpp"
@@ -29,27 +31,35 @@
 
 namespace revsph::superfluid {
 
+enum class CarrierKind : std::uint8_t { fluid = 0, dummy = 1, wall = 2 };
+
 template <int D>
 struct DissipationTerm {
   static constexpr int width = D + 1;
   const WendlandQuintic<D>& kernel;
   std::span<const double> mass;
-  std::span<const std::uint8_t> is_fluid;
+  std::span<const std::uint8_t> kind; // CarrierKind by slot
   std::span<const double> inverse_density;
-  std::span<const double> temperature;        // of the mean state, fluid slots
-  const CoordinateArrays<D>& normal_velocity; // of the mean state, fluid slots
+  std::span<const double> temperature;        // of the mean state; T0 on walls
+  const CoordinateArrays<D>& normal_velocity; // of the mean state; a wall's own velocity
   double viscosity;                           // mu
   double conductivity;                        // beta
   double eta_squared;
   double tau;
+  static constexpr std::uint8_t fluid = static_cast<std::uint8_t>(CarrierKind::fluid);
+  static constexpr std::uint8_t wall = static_cast<std::uint8_t>(CarrierKind::wall);
 
-  bool receives(std::uint32_t s) const { return is_fluid[s] != 0; }
+  bool receives(std::uint32_t s) const { return kind[s] == fluid; }
 
   void pair(const PairGeometry<D>& p, std::array<double, width>& to_a,
             std::array<double, width>& to_b) const {
     to_a.fill(0.0);
     to_b.fill(0.0);
-    if (!is_fluid[p.a] || !is_fluid[p.b]) {
+    const std::uint8_t kind_a = kind[p.a];
+    const std::uint8_t kind_b = kind[p.b];
+    const bool both_fluid = kind_a == fluid && kind_b == fluid;
+    if (!both_fluid && !(kind_a == fluid && kind_b == wall) &&
+        !(kind_a == wall && kind_b == fluid)) {
       return;
     }
     const std::uint32_t a = p.a;

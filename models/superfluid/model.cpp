@@ -2,6 +2,7 @@
 
 #include "core/summation_density.hpp"
 #include "core/verlet.hpp"
+#include "models/superfluid/dissipation_terms.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -40,7 +41,9 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
     : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
       kernel_(parameters_.support_radius),
       layout_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
-              {{"fluid", state_.fluid.position.count()}, {"dummy", state_.dummy.position.count()}}),
+              {{"fluid", state_.fluid.position.count()},
+               {"dummy", state_.dummy.position.count()},
+               {"wall", state_.wall.position.count()}}),
       density_sums_(SummedQuantity{"density", parameters_.density_scale}),
       increment_sums_(
           increment_quantities<D>(parameters_.velocity_scale, parameters_.entropy_scale)),
@@ -49,13 +52,15 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
 
 template <int D, class Arith>
 void Model<D, Arith>::initialise_density_constants() {
-  for (StateField<Raw>* field : {&state_.fluid.density_constant, &state_.dummy.density_constant}) {
+  for (StateField<Raw>* field : {&state_.fluid.density_constant, &state_.dummy.density_constant,
+                                 &state_.wall.density_constant}) {
     std::fill(field->all().begin(), field->all().end(), Raw{});
   }
   invalidate_derived();
   update_density();
   for (const auto& [set, field] : {std::pair{fluid_set, &state_.fluid.density_constant},
-                                   std::pair{dummy_set, &state_.dummy.density_constant}}) {
+                                   std::pair{dummy_set, &state_.dummy.density_constant},
+                                   std::pair{wall_set, &state_.wall.density_constant}}) {
     const std::span<const std::uint32_t> slots = layout_.slots_of_set(set);
     for (std::size_t i = 0; i < slots.size(); ++i) {
       const double sum = density_sums_.value(0, slots[i]);
@@ -139,12 +144,20 @@ void Model<D, Arith>::update_constants() {
   if (constants_valid_) {
     return;
   }
-  mass_ = CarrierField<Arith>{&state_.fluid.mass, &state_.dummy.mass}.reals();
+  mass_ = CarrierField<Arith>{&state_.fluid.mass, &state_.dummy.mass, &state_.wall.mass}.reals();
   density_constant_ =
-      CarrierField<Arith>{&state_.fluid.density_constant, &state_.dummy.density_constant}.raws();
+      CarrierField<Arith>{&state_.fluid.density_constant, &state_.dummy.density_constant,
+                          &state_.wall.density_constant}
+          .raws();
   is_fluid_.assign(mass_.size(), 0);
   const std::span<std::uint8_t> fluid = layout_.part_of_set(std::span(is_fluid_), fluid_set);
   std::fill(fluid.begin(), fluid.end(), 1);
+  kind_.assign(mass_.size(), static_cast<std::uint8_t>(CarrierKind::dummy));
+  for (const auto& [set, kind] :
+       {std::pair{fluid_set, CarrierKind::fluid}, std::pair{wall_set, CarrierKind::wall}}) {
+    const std::span<std::uint8_t> part = layout_.part_of_set(std::span(kind_), set);
+    std::fill(part.begin(), part.end(), static_cast<std::uint8_t>(kind));
+  }
   constants_valid_ = true;
 }
 
@@ -157,7 +170,8 @@ void Model<D, Arith>::update_density() {
   layout_.build(carrier_position(), parameters_.support_radius,
                 Gathered<double>{mass_, &slot_mass_},
                 Gathered<Raw>{density_constant_, &slot_density_constant_},
-                Gathered<std::uint8_t>{is_fluid_, &slot_is_fluid_});
+                Gathered<std::uint8_t>{is_fluid_, &slot_is_fluid_},
+                Gathered<std::uint8_t>{kind_, &slot_kind_});
   const std::size_t carriers = layout_.slot_count();
   inputs_.pressure_over_density_squared.resize(carriers);
   inputs_.inverse_density.resize(carriers);

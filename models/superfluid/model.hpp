@@ -82,7 +82,7 @@ private:
   Copy copy(int which);
   std::size_t fluid_count() const { return state_.fluid.position.count(); }
   CarrierField<Arith> carrier_position() const {
-    return {&state_.fluid.position, &state_.dummy.position};
+    return {&state_.fluid.position, &state_.dummy.position, &state_.wall.position};
   }
   void update_constants();
   void update_density();
@@ -107,13 +107,19 @@ private:
   std::vector<double> mass_;
   std::vector<Raw> density_constant_;
   std::vector<std::uint8_t> is_fluid_;
+  std::vector<std::uint8_t> kind_; // CarrierKind per carrier (dissipation_terms.hpp)
   bool density_valid_ = false;
   SlotLayout<D> layout_;
   static constexpr std::size_t fluid_set = 0;
   static constexpr std::size_t dummy_set = 1;
+  static constexpr std::size_t wall_set = 2;
   std::vector<double> slot_mass_;
   std::vector<Raw> slot_density_constant_;
   std::vector<std::uint8_t> slot_is_fluid_;
+  std::vector<std::uint8_t> slot_kind_;
+  // Energy the walls gave the fluid in dissipation sub-steps since the simulation was built (lid
+  // work, heat from or to a cooler): the energy budget's wall_exchange term is minus this.
+  double exchanged_energy_ = 0.0;
   PairSums<Arith, 1> density_sums_;
   RateInputs<D> inputs_;
   PairSums<Arith, 2 * D + 1> increment_sums_; // at the scales of v, v_s and s

@@ -70,11 +70,18 @@ EnergyBudget Model<D, Arith>::energy() {
   for (std::size_t d = 0; d < dummy.size(); ++d) {
     compressional += dummy_mass[d] * he.compressional_energy(density_sums_.value(0, dummy[d]));
   }
+  const std::span<const std::uint32_t> wall = layout_.slots_of_set(wall_set);
+  const std::span<const double> wall_mass =
+      layout_.part_of_set(std::span<const double>(mass_), wall_set);
+  for (std::size_t w = 0; w < wall.size(); ++w) {
+    compressional += wall_mass[w] * he.compressional_energy(density_sums_.value(0, wall[w]));
+  }
   return EnergyBudget{{{"kinetic", kinetic},
                        {"counterflow", counterflow},
                        {"compressional", compressional},
                        {"thermal", thermal},
-                       {"gravitational", gravitational}}};
+                       {"gravitational", gravitational},
+                       {"wall_exchange", -exchanged_energy_}}};
 }
 
 template <int D, class Arith>

@@ -169,7 +169,10 @@ const KeyTable& case_keys() {
            "s / s0 - 1 uniform in [-value, value] (added to the wave); >= 0"});
     t.add({"initial.seed", T::integer, "-", "1", "seed of the random fields; >= 0"});
     t.add(domain_case_keys());
-    t.add(particle_block_case_keys({"fluid", "dummy"}));
+    t.add(particle_block_case_keys({"fluid", "dummy", "wall"}));
+    t.add({"particles[].velocity", T::numbers, "m/s", "zero",
+           "velocity of a kind = \"wall\" block (a lid): the no-slip velocity the viscosity "
+           "drags the normal fluid toward"});
     t.add({"fixed_point.position_exponent", T::integer, "-",
            "covers the domain with 52 fraction bits",
            "positions are stored as integers times 2^exponent"});

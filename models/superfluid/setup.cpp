@@ -16,7 +16,7 @@ namespace revsph::superfluid {
 
 namespace {
 
-constexpr std::string_view particle_kinds[] = {"fluid", "dummy"};
+constexpr std::string_view particle_kinds[] = {"fluid", "dummy", "wall"};
 // State (2 x (2D + 1) + D + 2 values), derived arrays (~4D + 8) and cell lists, plus neighbours.
 double bytes_per_particle(int dimension, double support_radius_over_dr) {
   return 400.0 + neighbour_list_bytes(dimension, support_radius_over_dr);
@@ -114,21 +114,36 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   const auto blocks = read_particle_blocks<D>(
       case_file, parameters.dr, parameters.domain, particle_kinds,
       {bytes_per_particle(D, reach), options.memory_budget_bytes, neighbour_list_bytes(D, reach)});
-  std::vector<Vec<D>> fluid_positions, dummy_positions;
-  std::vector<double> fluid_masses, dummy_masses;
+  std::vector<Vec<D>> fluid_positions, dummy_positions, wall_positions, wall_velocities;
+  std::vector<double> fluid_masses, dummy_masses, wall_masses;
   const double rho0 = parameters.helium.rest_density;
   for (const auto& block : blocks) {
-    const bool fluid = block.kind == "fluid";
-    auto& positions = fluid ? fluid_positions : dummy_positions;
-    auto& masses = fluid ? fluid_masses : dummy_masses;
+    const std::string velocity_key = block.key + ".velocity";
+    Vec<D> velocity{};
+    if (case_file.has(velocity_key)) {
+      if (block.kind != "wall") {
+        case_file.fail(velocity_key, "only for kind = \"wall\" (a moving no-slip wall: a lid)");
+      }
+      const std::vector<double> given = case_file.numbers(velocity_key, D);
+      std::copy(given.begin(), given.end(), velocity.begin());
+    }
+    auto& positions = block.kind == "fluid"   ? fluid_positions
+                      : block.kind == "dummy" ? dummy_positions
+                                              : wall_positions;
+    auto& masses = block.kind == "fluid"   ? fluid_masses
+                   : block.kind == "dummy" ? dummy_masses
+                                           : wall_masses;
     positions.insert(positions.end(), block.positions.begin(), block.positions.end());
     masses.insert(masses.end(), block.positions.size(), rho0 * block.volume_per_particle);
+    if (block.kind == "wall") {
+      wall_velocities.insert(wall_velocities.end(), block.positions.size(), velocity);
+    }
   }
   if (fluid_positions.empty()) {
     case_file.fail("particles", "the case has no fluid particles");
   }
   double largest_mass = 0.0;
-  for (const auto* masses : {&fluid_masses, &dummy_masses}) {
+  for (const auto* masses : {&fluid_masses, &dummy_masses, &wall_masses}) {
     for (const double m : *masses) {
       largest_mass = std::max(largest_mass, m);
     }
@@ -156,6 +171,10 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   state.dummy.position.set_scale(parameters.position_scale);
   state.dummy.mass.set_scale(mass_scale);
   state.dummy.density_constant.set_scale(parameters.density_scale);
+  state.wall.position.set_scale(parameters.position_scale);
+  state.wall.velocity.set_scale(parameters.velocity_scale);
+  state.wall.mass.set_scale(mass_scale);
+  state.wall.density_constant.set_scale(parameters.density_scale);
 
   fill_vectors<Arith, D>(case_file, "particles", fluid_positions, fluid.position);
   // Both copies start equal, raw for raw.
@@ -174,6 +193,10 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   fill_vectors<Arith, D>(case_file, "particles", dummy_positions, state.dummy.position);
   fill_scalars<Arith>(case_file, "physics.rest_density", dummy_masses, state.dummy.mass);
   state.dummy.density_constant.resize(dummy_positions.size());
+  fill_vectors<Arith, D>(case_file, "particles", wall_positions, state.wall.position);
+  fill_vectors<Arith, D>(case_file, "particles", wall_velocities, state.wall.velocity);
+  fill_scalars<Arith>(case_file, "physics.rest_density", wall_masses, state.wall.mass);
+  state.wall.density_constant.resize(wall_positions.size());
 
   SimulationInfo info;
   info.case_name = case_name(case_file);

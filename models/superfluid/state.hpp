@@ -56,13 +56,33 @@ struct Dummy {
   auto fields() { return std::tie(position, mass, density_constant); }
 };
 
+// No-slip walls (sec. III.A-C): static particles in the density and the pressure force like
+// dummies, that also drag the normal fluid toward their own velocity (zero, or a lid's) through
+// the viscosity and, with heat conduction, hold the fluid at T0 (s = s0, no counterflow): the
+// cryostat's cooler. Their velocity is prescribed (odd: time reversal reverses a lid).
+template <int D, class Raw>
+struct Wall {
+  static constexpr SetInfo set{.name = "wall", .motion = Motion::fixed};
+  StateField<Raw> position{{.name = "position", .unit = "m", .components = D, .evolved = false}};
+  StateField<Raw> velocity{{.name = "velocity",
+                            .unit = "m/s",
+                            .parity = Parity::odd,
+                            .components = D,
+                            .evolved = false}};
+  StateField<Raw> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
+  StateField<Raw> density_constant{
+      {.name = "density_constant", .unit = "kg/m^3", .evolved = false}};
+  auto fields() { return std::tie(position, velocity, mass, density_constant); }
+};
+
 template <int D, class Raw>
 struct State {
   Fluid<D, Raw> fluid;
   Dummy<D, Raw> dummy;
+  Wall<D, Raw> wall;
 
   State() { declare_state(*this); }
-  auto sets() { return std::tie(fluid, dummy); }
+  auto sets() { return std::tie(fluid, dummy, wall); }
 };
 
 } // namespace revsph::superfluid
