@@ -102,10 +102,9 @@ def make_figures(runs, out, report, names):
             probes.append((name, shape, a, diag))
     write_rows(out / "superfluid_second_sound.csv", ["run", "shape", "N", "M", "A", "eps1", "eps2"],
                rows)
-    report.append("| run | shape | N | M | A | eps1 (RMS, eq. 27) | eps2 (eq. 28) |")
-    report.append("|---|---|---|---|---|---|---|")
     for r in rows:
-        report.append(f"| {r[0]} | {r[1]} | {r[2]} | {r[3]} | {r[4]} | {r[5]:.3e} | {r[6]:.3e} |")
+        report.append((f"{r[0]}: eps1 (eq. 27 as an RMS), eps2 (eq. 28)",
+                       f"{r[5]:.3e}, {r[6]:.3e}"))
     for a in sorted({r[4] for r in rows if r[0].startswith("eps1-cosine")}):
         pts = sorted((r[2], r[5]) for r in rows if r[0].startswith("eps1-cosine") and r[4] == a)
         axes[0].loglog([p[0] for p in pts], [p[1] for p in pts], "o-", label=f"A = {a}")
@@ -138,7 +137,6 @@ def make_figures(runs, out, report, names):
                 title="Fig. 6: A = 0.01, M = 50, N = 300")
     axes[2].legend(fontsize=7)
     save_figure(fig, out / "superfluid_second_sound.png")
-    print("\n".join(report))
 
 
 def main():
