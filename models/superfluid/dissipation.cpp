@@ -47,6 +47,51 @@ double Model<D, Arith>::entropy_for_heat(double s, double relative_squared, doub
 }
 
 template <int D, class Arith>
+bool Model<D, Arith>::add_entropy(std::size_t i, double ds) {
+  auto& s1 = state_.fluid.entropy;
+  auto& s2 = state_.fluid.entropy_copy;
+  if (!std::isfinite(ds)) {
+    return false;
+  }
+  if constexpr (Arith::kind == Arithmetic::fixed) {
+    // Rounded up: rounding never lowers the total entropy.
+    const double raw = std::ceil(ds * s1.info().scale.inverse_unit());
+    if (!(std::abs(raw) < 0x1.0p62)) {
+      return false;
+    }
+    const auto increment = static_cast<std::int64_t>(raw);
+    return fixedpoint::try_add(s1.at(0, i), increment, s1.at(0, i)) &&
+           fixedpoint::try_add(s2.at(0, i), increment, s2.at(0, i));
+  } else {
+    s1.at(0, i) += ds;
+    s2.at(0, i) += ds;
+    return true;
+  }
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::fill_superleak_sides() {
+  const Superleak<D>& leak = parameters_.superleak;
+  slot_side_.assign(layout_.slot_count(), 0);
+  if (leak.rate == 0.0) {
+    return;
+  }
+  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  const auto& x_scale = state_.fluid.position.info().scale;
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    bool within = true;
+    for (int k = 0; k + 1 < D; ++k) {
+      within = within && std::abs(Arith::real(state_.fluid.position.at(k, i), x_scale) -
+                                  leak.centre[k]) <= leak.half_width;
+    }
+    if (within) {
+      const double y = Arith::real(state_.fluid.position.at(D - 1, i), x_scale);
+      slot_side_[fluid[i]] = y >= leak.centre[D - 1] ? 1 : -1;
+    }
+  }
+}
+
+template <int D, class Arith>
 void Model<D, Arith>::dissipate(double dt) {
   if (parameters_.viscosity == 0.0 && parameters_.heat_conductivity == 0.0) {
     return;
@@ -63,12 +108,13 @@ void Model<D, Arith>::dissipate(double dt) {
       inputs_.normal_velocity[k][wall[i]] = Arith::real(state_.wall.velocity.at(k, i), wall_scale);
     }
   }
+  fill_superleak_sides();
   const double eta = parameters_.support_radius / 20.0; // h / 10, h = support / 2
   sum_pairs<Arith>(layout_,
                    DissipationTerm<D>{kernel_, slot_mass_, slot_kind_, inputs_.inverse_density,
                                       inputs_.temperature, inputs_.normal_velocity,
                                       parameters_.viscosity, parameters_.heat_conductivity,
-                                      eta * eta, dt},
+                                      eta * eta, dt, slot_side_},
                    dissipation_sums_);
   const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
   FaultRecorder faults;
@@ -96,20 +142,7 @@ void Model<D, Arith>::dissipate(double dt) {
     }
     const double heat = dissipation_sums_.value(D, slot) - 0.5 * mass[i] * dv_squared / he.chi_n(s);
     const double ds = entropy_for_heat(s, u_squared, mass[i], heat);
-    bool ok = std::isfinite(ds);
-    if constexpr (Arith::kind == Arithmetic::fixed) {
-      // Rounded up: rounding never lowers the total entropy.
-      const double raw = std::ceil(ds * s_scale.inverse_unit());
-      ok = ok && std::abs(raw) < 0x1.0p62;
-      if (ok) {
-        const auto increment = static_cast<std::int64_t>(raw);
-        ok = fixedpoint::try_add(s1.at(0, i), increment, s1.at(0, i)) &&
-             fixedpoint::try_add(s2.at(0, i), increment, s2.at(0, i));
-      }
-    } else {
-      s1.at(0, i) += ds;
-      s2.at(0, i) += ds;
-    }
+    const bool ok = add_entropy(i, ds);
     if (!ok) {
       faults.record(i, "fluid", "entropy", "overflow or non-finite value in the heat update");
     }

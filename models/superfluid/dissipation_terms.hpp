@@ -46,6 +46,9 @@ struct DissipationTerm {
   double conductivity;                        // beta
   double eta_squared;
   double tau;
+  // +1 / -1: the side of the superleak's mid-plane a slot lies on within its width (0: outside);
+  // no heat crosses between the two sides (sec. III.C).
+  std::span<const std::int8_t> side;
   static constexpr std::uint8_t fluid = static_cast<std::uint8_t>(CarrierKind::fluid);
   static constexpr std::uint8_t wall = static_cast<std::uint8_t>(CarrierKind::wall);
 
@@ -79,8 +82,10 @@ struct DissipationTerm {
     const double dissipated = -mass[a] * mass[b] * c * vn_dot_x;
     const double t_a = temperature[a];
     const double t_b = temperature[b];
-    const double heat = tau * conductivity * mass[a] * mass[b] * slope * inverse_densities *
-                        (t_a * t_a - t_b * t_b);
+    const bool cut = side[a] * side[b] < 0;
+    const double heat = cut ? 0.0
+                            : tau * conductivity * mass[a] * mass[b] * slope * inverse_densities *
+                                  (t_a * t_a - t_b * t_b);
     to_a[D] = 0.5 * dissipated + heat;
     to_b[D] = 0.5 * dissipated - heat;
   }

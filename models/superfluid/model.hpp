@@ -64,6 +64,11 @@ public:
   // velocity and entropy increments to both copies, the heat turned into entropy so that the
   // energy (15) is kept.
   void dissipate(double dt);
+  // The fountain's sources, after every step (outside the palindrome; irreversible): the
+  // superleak's exact relaxation of v_n, its energy kept as heat; the heater's power as heat.
+  static std::span<const StepHook<Model>> step_hooks();
+  void relax_superleak(std::int64_t step);
+  void heat(std::int64_t step);
   // Adds dt * f(copy `from`) to copy `to` (0: the fields without suffix, 1: the *_copy ones).
   void update_copy(int to, double dt);
 
@@ -73,6 +78,15 @@ private:
   static void copy_two_substep(Model& model, double dt) { model.update_copy(1, dt); }
   static void dissipate_substep(Model& model, double dt) { model.dissipate(dt); }
   static std::string dissipation_acts(const Model& model);
+  static void superleak_hook(Model& model, std::int64_t step) { model.relax_superleak(step); }
+  static void heater_hook(Model& model, std::int64_t step) { model.heat(step); }
+  static std::string superleak_acts(const Model& model);
+  static std::string heater_acts(const Model& model);
+  // Adds the same entropy increment ds (rounded up to the scale) to both copies of particle i;
+  // false on overflow.
+  bool add_entropy(std::size_t i, double ds);
+  // Which side of the superleak's mid-plane each slot lies on (+1, -1; 0 outside its width).
+  void fill_superleak_sides();
 
   struct Copy {
     StateField<Raw>* velocity;
@@ -120,6 +134,8 @@ private:
   // Energy the walls gave the fluid in dissipation sub-steps since the simulation was built (lid
   // work, heat from or to a cooler): the energy budget's wall_exchange term is minus this.
   double exchanged_energy_ = 0.0;
+  double heater_energy_ = 0.0; // the heater's input since the simulation was built
+  std::vector<std::int8_t> slot_side_;
   PairSums<Arith, 1> density_sums_;
   RateInputs<D> inputs_;
   PairSums<Arith, 2 * D + 1> increment_sums_; // at the scales of v, v_s and s

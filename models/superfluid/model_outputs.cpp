@@ -81,7 +81,8 @@ EnergyBudget Model<D, Arith>::energy() {
                        {"compressional", compressional},
                        {"thermal", thermal},
                        {"gravitational", gravitational},
-                       {"wall_exchange", -exchanged_energy_}}};
+                       {"wall_exchange", -exchanged_energy_},
+                       {"heater_input", -heater_energy_}}};
 }
 
 template <int D, class Arith>

@@ -77,6 +77,61 @@ InitialFields read_initial(const CaseFile& case_file) {
   return f;
 }
 
+template <int D>
+Vec<D> read_point(const CaseFile& case_file, const char* key, const Box<D>& domain) {
+  const std::vector<double> given = case_file.numbers(key, D);
+  Vec<D> point{};
+  for (int k = 0; k < D; ++k) {
+    point[k] = given[k];
+    if (!(given[k] >= domain.min[k] && given[k] <= domain.max[k])) {
+      case_file.fail(key, "lies outside the domain ([domain] min, max)");
+    }
+  }
+  return point;
+}
+
+template <int D>
+Superleak<D> read_superleak(const CaseFile& case_file, const Box<D>& domain) {
+  Superleak<D> s;
+  s.rate = case_file.number_or("superleak.rate", 0.0);
+  if (!(s.rate >= 0.0 && std::isfinite(s.rate))) {
+    case_file.fail("superleak.rate", "must be a finite number >= 0 (0: no superleak)");
+  }
+  if (s.rate == 0.0) {
+    return s;
+  }
+  s.centre = read_point<D>(case_file, "superleak.centre", domain);
+  s.half_width = case_file.positive_number("superleak.half_width");
+  s.half_thickness = case_file.positive_number("superleak.half_thickness");
+  for (int k = 0; k < D; ++k) {
+    const double half = k == D - 1 ? s.half_thickness : s.half_width;
+    if (s.centre[k] - half < domain.min[k] || s.centre[k] + half > domain.max[k]) {
+      case_file.fail(k == D - 1 ? "superleak.half_thickness" : "superleak.half_width",
+                     "the superleak reaches outside the domain ([domain] min, max)");
+    }
+  }
+  return s;
+}
+
+template <int D>
+Heater<D> read_heater(const CaseFile& case_file, const Box<D>& domain) {
+  Heater<D> h;
+  h.power = case_file.number_or("heater.power", 0.0);
+  if (!(h.power >= 0.0 && std::isfinite(h.power))) {
+    case_file.fail("heater.power", "must be a finite number >= 0 (0: no heater)");
+  }
+  if (h.power == 0.0) {
+    return h;
+  }
+  h.centre = read_point<D>(case_file, "heater.centre", domain);
+  h.support = case_file.positive_number("heater.support");
+  h.ramp_time = case_file.number_or("heater.ramp_time", 0.0);
+  if (!(h.ramp_time >= 0.0 && std::isfinite(h.ramp_time))) {
+    case_file.fail("heater.ramp_time", "must be a finite number >= 0");
+  }
+  return h;
+}
+
 } // namespace
 
 template <int D>
@@ -101,6 +156,8 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.cell_size_factor = discretisation.cell_size_factor;
   p.initial = read_initial(case_file);
   p.domain = read_domain<D>(case_file);
+  p.superleak = read_superleak<D>(case_file, p.domain);
+  p.heater = read_heater<D>(case_file, p.domain);
 
   const Helium& he = p.helium;
   // Default scales: positions keep 52 fraction bits below the domain size; velocities resolve
@@ -168,6 +225,24 @@ const KeyTable& case_keys() {
     t.add({"initial.random_entropy", T::number, "1", "0",
            "s / s0 - 1 uniform in [-value, value] (added to the wave); >= 0"});
     t.add({"initial.seed", T::integer, "-", "1", "seed of the random fields; >= 0"});
+    t.add({"superleak.rate", T::number, "1/s", "0",
+           "friction rate of the superleak (eq. 30: its 1 / tau), applied exactly as v_n -> v_n "
+           "exp(-rate dt) to the fluid in the slab; >= 0 (0: none); irreversible"});
+    t.add({"superleak.centre", T::numbers, "m", "required with a rate",
+           "centre of the superleak slab (inside the domain)"});
+    t.add({"superleak.half_width", T::number, "m", "required with a rate",
+           "half its extent along the axes but the last (r_sup of eq. 30); > 0"});
+    t.add({"superleak.half_thickness", T::number, "m", "required with a rate",
+           "half its extent along the last axis; > 0; no heat is conducted across its "
+           "mid-plane"});
+    t.add({"heater.power", T::number, "W/m (2D), W (3D)", "0",
+           "heater power W of eq. (30); >= 0 (0: none); irreversible, counted in the energy "
+           "budget as heater_input"});
+    t.add({"heater.centre", T::numbers, "m", "required with a power", "heater centre"});
+    t.add({"heater.support", T::number, "m", "required with a power",
+           "support radius of the Wendland kernel that spreads the power (2H of eq. 30); > 0"});
+    t.add({"heater.ramp_time", T::number, "s", "0",
+           "the power grows linearly from 0 over this time; >= 0"});
     t.add(domain_case_keys());
     t.add(particle_block_case_keys({"fluid", "dummy", "wall"}));
     t.add({"particles[].velocity", T::numbers, "m/s", "zero",

@@ -26,6 +26,28 @@ struct InitialFields {
   std::uint64_t seed = 1;
 };
 
+// The fountain's superleak (sec. III.C, eq. 30): a slab |x_k - c_k| <= half_width (k < D-1),
+// |y - c_y| <= half_thickness in which the normal velocity relaxes at `rate` (the paper's 1 / tau
+// times its mollifier; applied exactly, v_n -> v_n exp(-rate dt)), and across whose mid-plane no
+// heat is conducted.
+template <int D>
+struct Superleak {
+  double rate = 0.0; // 1/s; 0: no superleak
+  Vec<D> centre{};
+  double half_width = 0.0;
+  double half_thickness = 0.0;
+};
+
+// The heater (eq. 30): power (W/m in 2D, W in 3D) spread by a Wendland kernel of the given
+// support about the centre, ramped up linearly over ramp_time.
+template <int D>
+struct Heater {
+  double power = 0.0; // 0: no heater
+  Vec<D> centre{};
+  double support = 0.0;
+  double ramp_time = 0.0;
+};
+
 template <int D>
 struct Parameters {
   Helium helium;
@@ -39,6 +61,8 @@ struct Parameters {
   double dt = 0.0;
   double cell_size_factor = 1.0;
   InitialFields initial;
+  Superleak<D> superleak;
+  Heater<D> heater;
   Box<D> domain;
   // [fixed_point]
   fixedpoint::Scale position_scale;

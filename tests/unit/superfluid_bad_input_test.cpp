@@ -50,6 +50,18 @@ std::vector<Defect> defects() {
        "initial.entropy_wave_shape", "expected \"sine\" or \"cosine\", got \"square\""},
       {"negative_random_velocity", "droplet-small", "", "", "initial.random_velocity=-0.1",
        "initial.random_velocity", "must be a finite number >= 0"},
+      {"superleak_centre_outside_the_domain", "droplet-small", "[run]",
+       "[superleak]\nrate = 1e6\ncentre = [1.0, 1.0]\nhalf_width = 0.004\n"
+       "half_thickness = 0.002\n\n[run]",
+       "", "superleak.centre", "lies outside the domain"},
+      {"superleak_reaching_outside_the_domain", "droplet-small", "[run]",
+       "[superleak]\nrate = 1e6\ncentre = [0.008, 0.008]\nhalf_width = 0.1\n"
+       "half_thickness = 0.002\n\n[run]",
+       "", "superleak.half_width", "reaches outside the domain"},
+      {"superleak_without_centre", "droplet-small", "", "", "superleak.rate=1e6",
+       "superleak.centre", "missing required key"},
+      {"heater_without_support", "droplet-small", "", "", "heater.power=10", "heater.centre",
+       "missing required key"},
       {"wave_without_length", "second-sound-small", "entropy_wave_length = 0.01", "", "",
        "initial.entropy_wave_length", "missing required key"},
   };
