@@ -4,6 +4,7 @@
 //   with_dimension<1, 2, 3>(case_file, [&]<int D>() { return create<D>(case_file); });
 // and a case asking for another dimension gets one error naming the ones that exist.
 
+#include "core/arithmetic.hpp"
 #include "core/case_file.hpp"
 
 #include <cstdint>
@@ -35,6 +36,16 @@ auto with_dimension(const CaseFile& case_file, Create&& create) {
                                     std::to_string(dimension) + ")");
   }
   return result;
+}
+
+// The same for the arithmetic, a model templated on FixedArithmetic and FloatArithmetic:
+//   with_arithmetic(options.arithmetic, [&]<class Arith>() { return create<D, Arith>(...); });
+template <class Create>
+auto with_arithmetic(Arithmetic arithmetic, Create&& create) {
+  if (arithmetic == Arithmetic::fixed) {
+    return create.template operator()<FixedArithmetic>();
+  }
+  return create.template operator()<FloatArithmetic>();
 }
 
 } // namespace revsph

@@ -243,20 +243,13 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   return std::make_unique<ModelSimulation<Model<D, Arith>>>(std::move(model));
 }
 
-template <int D>
-std::unique_ptr<Simulation> create_with_arithmetic(const CaseFile& case_file,
-                                                   const SimulationOptions& options) {
-  if (options.arithmetic == Arithmetic::fixed) {
-    return create_in<D, FixedArithmetic>(case_file, options);
-  }
-  return create_in<D, FloatArithmetic>(case_file, options);
-}
-
 } // namespace
 
 std::unique_ptr<Simulation> create(const CaseFile& case_file, const SimulationOptions& options) {
-  return with_dimension<1, 2, 3>(
-      case_file, [&]<int D>() { return create_with_arithmetic<D>(case_file, options); });
+  return with_dimension<1, 2, 3>(case_file, [&]<int D>() {
+    return with_arithmetic(options.arithmetic,
+                           [&]<class Arith>() { return create_in<D, Arith>(case_file, options); });
+  });
 }
 
 } // namespace revsph::wcsph
