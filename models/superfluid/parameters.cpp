@@ -47,8 +47,20 @@ Helium read_helium(const CaseFile& case_file) {
   return he;
 }
 
-InitialFields read_initial(const CaseFile& case_file) {
+InitialFields read_initial(const CaseFile& case_file, int dimension) {
   InitialFields f;
+  for (const auto& [key, target] :
+       {std::pair{"initial.uniform_velocity", &f.uniform_velocity},
+        std::pair{"initial.uniform_counterflow", &f.uniform_counterflow}}) {
+    if (case_file.has(key)) {
+      *target = case_file.numbers(key, static_cast<std::size_t>(dimension));
+      for (const double value : *target) {
+        if (!std::isfinite(value)) {
+          case_file.fail(key, "must be finite");
+        }
+      }
+    }
+  }
   f.wave_amplitude = case_file.number_or("initial.entropy_wave_amplitude", 0.0);
   if (f.wave_amplitude != 0.0) {
     f.wave_length = case_file.positive_number("initial.entropy_wave_length");
@@ -154,7 +166,7 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.support_radius = discretisation.support_radius;
   p.dt = discretisation.dt;
   p.cell_size_factor = discretisation.cell_size_factor;
-  p.initial = read_initial(case_file);
+  p.initial = read_initial(case_file, D);
   p.domain = read_domain<D>(case_file);
   p.superleak = read_superleak<D>(case_file, p.domain);
   p.heater = read_heater<D>(case_file, p.domain);
@@ -218,6 +230,10 @@ const KeyTable& case_keys() {
            {"sine", "cosine"}});
     t.add({"initial.entropy_wave_length", T::number, "m", "required with an amplitude",
            "L of eq. (26); > 0"});
+    t.add({"initial.uniform_velocity", T::numbers, "m/s", "zero",
+           "coflow velocity v of every fluid particle (the random part adds to it)"});
+    t.add({"initial.uniform_counterflow", T::numbers, "m/s", "zero",
+           "v - v_s of every fluid particle (the random part adds to it)"});
     t.add({"initial.random_velocity", T::number, "m/s", "0",
            "each component of v uniform in [-value, value]; >= 0"});
     t.add({"initial.random_counterflow", T::number, "m/s", "0",

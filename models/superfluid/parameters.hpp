@@ -9,6 +9,7 @@
 #include "models/superfluid/helium.hpp"
 
 #include <cstdint>
+#include <vector>
 
 namespace revsph::superfluid {
 
@@ -20,9 +21,11 @@ struct InitialFields {
   // Eq. (26) as printed (sine), or the mode of the adiabatic square, cos(pi x / L) cos(pi y / L)
   // (README: with free adiabatic edges eq. 25 is not a solution; the cosine mode is).
   bool wave_cosine = false;
-  double random_velocity = 0.0;    // m/s, on v
-  double random_counterflow = 0.0; // m/s, on v - v_s
-  double random_entropy = 0.0;     // relative, on s / s0
+  std::vector<double> uniform_velocity;    // v everywhere (the random part adds to it); empty: 0
+  std::vector<double> uniform_counterflow; // v - v_s everywhere; empty: 0
+  double random_velocity = 0.0;            // m/s, on v
+  double random_counterflow = 0.0;         // m/s, on v - v_s
+  double random_entropy = 0.0;             // relative, on s / s0
   std::uint64_t seed = 1;
 };
 

@@ -47,10 +47,12 @@ InitialCopy<D> initial_copy(const CaseFile& case_file, const Parameters<D>& para
   for (const Vec<D>& x : positions) {
     Vec<D> v{}, u{};
     for (int k = 0; k < D; ++k) {
-      v[k] = f.random_velocity * symmetric_uniform(generator);
+      v[k] = (f.uniform_velocity.empty() ? 0.0 : f.uniform_velocity[k]) +
+             f.random_velocity * symmetric_uniform(generator);
     }
     for (int k = 0; k < D; ++k) {
-      u[k] = f.random_counterflow * symmetric_uniform(generator);
+      u[k] = (f.uniform_counterflow.empty() ? 0.0 : f.uniform_counterflow[k]) +
+             f.random_counterflow * symmetric_uniform(generator);
     }
     double wave = f.wave_amplitude;
     for (int k = 0; k < D && wave != 0.0; ++k) {
