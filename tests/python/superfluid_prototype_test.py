@@ -1,11 +1,11 @@
 #!/usr/bin/python3
 """The superfluid model against its independent float64 prototype
 (models/superfluid/scheme_check.py: eq. 19 in numpy, the doubled stepper in a dozen lines): the
-second-sound square (N = 12, A = 0.1, square lattice, dt = h / (25 u1)) and the same square
-with a uniform coflow and counterflow, 40 steps, in the engine's fixed point and float arithmetic. The engine's
-mean fields must equal the prototype's to the rounding of the fixed point (1e-9 relative), and
-measured: fixed 1e-12 of the velocities and 5e-14 of s0, float 2e-14): the C++ pair terms are the equations the prototype checks for
-energy conservation and order.
+second-sound square (N = 12, A = 0.1, square lattice, dt = h / (25 u1)) and the same square with
+a uniform coflow and counterflow, 40 steps, in the engine's fixed point and float arithmetic.
+The engine's mean fields must equal the prototype's to 1e-9 relative (measured: fixed point
+1e-12 of the velocities and 5e-14 of s0, float 2e-14): the C++ pair terms are the equations the
+prototype checks for energy conservation and order.
 
 Usage: superfluid_prototype_test.py REVSPH_BINARY [unittest options]
 """
