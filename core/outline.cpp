@@ -1,0 +1,157 @@
+#include "core/outline.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace revsph {
+
+namespace {
+
+Vec<2> minus(const Vec<2>& a, const Vec<2>& b) {
+  return {a[0] - b[0], a[1] - b[1]};
+}
+double norm(const Vec<2>& a) {
+  return std::hypot(a[0], a[1]);
+}
+
+double distance_to_segment(const Vec<2>& p, const Vec<2>& a, const Vec<2>& b) {
+  const Vec<2> ab = minus(b, a);
+  const Vec<2> ap = minus(p, a);
+  const double length_squared = ab[0] * ab[0] + ab[1] * ab[1];
+  const double t = length_squared > 0.0
+                       ? std::clamp((ap[0] * ab[0] + ap[1] * ab[1]) / length_squared, 0.0, 1.0)
+                       : 0.0;
+  return std::hypot(ap[0] - t * ab[0], ap[1] - t * ab[1]);
+}
+
+} // namespace
+
+Outline::Outline(const std::vector<Vec<2>>& vertices, const std::vector<double>& corner_radii) {
+  const std::size_t n = vertices.size();
+  if (n < 3) {
+    throw std::invalid_argument("an outline needs at least three vertices");
+  }
+  if (!corner_radii.empty() && corner_radii.size() != n) {
+    throw std::invalid_argument("corner_radii needs one radius per vertex (" + std::to_string(n) +
+                                ")");
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec<2>& previous = vertices[(i + n - 1) % n];
+    const Vec<2>& vertex = vertices[i];
+    const Vec<2>& next = vertices[(i + 1) % n];
+    const double r = corner_radii.empty() ? 0.0 : corner_radii[i];
+    if (!(r >= 0.0) || !std::isfinite(r)) {
+      throw std::invalid_argument("corner radius " + std::to_string(i) + " must be >= 0");
+    }
+    const Vec<2> in = minus(previous, vertex);
+    const Vec<2> out = minus(next, vertex);
+    const double in_length = norm(in);
+    const double out_length = norm(out);
+    if (in_length == 0.0 || out_length == 0.0) {
+      throw std::invalid_argument("vertex " + std::to_string(i) + " repeats its neighbour");
+    }
+    if (r == 0.0) {
+      boundary_.push_back(vertex);
+      continue;
+    }
+    // The corner's angle theta between its edges; the tangent points lie r / tan(theta / 2)
+    // from the vertex along each edge, the centre r / sin(theta / 2) along the bisector.
+    const Vec<2> u{in[0] / in_length, in[1] / in_length};
+    const Vec<2> w{out[0] / out_length, out[1] / out_length};
+    const double theta = std::acos(std::clamp(u[0] * w[0] + u[1] * w[1], -1.0, 1.0));
+    if (!(theta > 1e-9 && theta < std::numbers::pi - 1e-9)) {
+      throw std::invalid_argument("vertex " + std::to_string(i) +
+                                  " is straight or folded back: it cannot be rounded");
+    }
+    const double tangent = r / std::tan(0.5 * theta);
+    if (tangent > 0.5 * in_length * (1.0 + 1e-12) || tangent > 0.5 * out_length * (1.0 + 1e-12)) {
+      throw std::invalid_argument("corner radius " + std::to_string(i) +
+                                  " does not fit: its arc reaches past the middle of an edge");
+    }
+    const Vec<2> start{vertex[0] + tangent * u[0], vertex[1] + tangent * u[1]};
+    const Vec<2> end{vertex[0] + tangent * w[0], vertex[1] + tangent * w[1]};
+    const Vec<2> bisector{u[0] + w[0], u[1] + w[1]};
+    const double bisector_length = norm(bisector);
+    const double centre_distance = r / std::sin(0.5 * theta);
+    const Vec<2> centre{vertex[0] + centre_distance * bisector[0] / bisector_length,
+                        vertex[1] + centre_distance * bisector[1] / bisector_length};
+    double a0 = std::atan2(start[1] - centre[1], start[0] - centre[0]);
+    double a1 = std::atan2(end[1] - centre[1], end[0] - centre[0]);
+    // The short way round: the arc turns by pi - theta.
+    double sweep = a1 - a0;
+    while (sweep > std::numbers::pi) {
+      sweep -= 2.0 * std::numbers::pi;
+    }
+    while (sweep < -std::numbers::pi) {
+      sweep += 2.0 * std::numbers::pi;
+    }
+    const int chords =
+        std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / (std::numbers::pi / 90.0))));
+    for (int c = 0; c <= chords; ++c) {
+      const double angle = a0 + sweep * static_cast<double>(c) / chords;
+      boundary_.push_back({centre[0] + r * std::cos(angle), centre[1] + r * std::sin(angle)});
+    }
+  }
+  if (!(area() > 0.0)) {
+    throw std::invalid_argument("the outline encloses no area");
+  }
+}
+
+Outline Outline::transformed(bool mirror_x, const Vec<2>& offset) const {
+  Outline out;
+  out.boundary_.reserve(boundary_.size());
+  for (const Vec<2>& p : boundary_) {
+    out.boundary_.push_back({(mirror_x ? -p[0] : p[0]) + offset[0], p[1] + offset[1]});
+  }
+  return out;
+}
+
+bool Outline::contains(const Vec<2>& p) const {
+  bool inside = false;
+  const std::size_t n = boundary_.size();
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    const Vec<2>& a = boundary_[i];
+    const Vec<2>& b = boundary_[j];
+    if ((a[1] > p[1]) != (b[1] > p[1]) &&
+        p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0]) {
+      inside = !inside;
+    }
+  }
+  return inside;
+}
+
+double Outline::distance_to_boundary(const Vec<2>& p) const {
+  double best = std::numeric_limits<double>::infinity();
+  const std::size_t n = boundary_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    best = std::min(best, distance_to_segment(p, boundary_[i], boundary_[(i + 1) % n]));
+  }
+  return best;
+}
+
+Box<2> Outline::bounds() const {
+  Box<2> box{boundary_.front(), boundary_.front()};
+  for (const Vec<2>& p : boundary_) {
+    for (int k = 0; k < 2; ++k) {
+      box.min[k] = std::min(box.min[k], p[k]);
+      box.max[k] = std::max(box.max[k], p[k]);
+    }
+  }
+  return box;
+}
+
+double Outline::area() const {
+  double twice = 0.0;
+  const std::size_t n = boundary_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec<2>& a = boundary_[i];
+    const Vec<2>& b = boundary_[(i + 1) % n];
+    twice += a[0] * b[1] - b[0] * a[1];
+  }
+  return 0.5 * std::abs(twice);
+}
+
+} // namespace revsph
