@@ -307,17 +307,31 @@ bool CaseFile::boolean_or(std::string_view key, bool fallback) const {
 }
 
 std::vector<double> CaseFile::numbers(std::string_view key, std::size_t size) const {
+  const toml::node* node = find(key);
+  const toml::array* array = node != nullptr ? node->as_array() : nullptr;
+  if (node != nullptr && array == nullptr) {
+    constexpr KeyType type = KeyType::numbers;
+    declared(key, &type);
+    fail(key,
+         "expected an array of " + std::to_string(size) + " numbers, got " + describe_type(*node));
+  }
+  if (array != nullptr && array->size() != size) {
+    constexpr KeyType type = KeyType::numbers;
+    declared(key, &type);
+    fail(key,
+         "expected " + std::to_string(size) + " numbers, got " + std::to_string(array->size()));
+  }
+  return number_list(key);
+}
+
+std::vector<double> CaseFile::number_list(std::string_view key) const {
   constexpr KeyType type = KeyType::numbers;
   declared(key, &type);
   const toml::node& node = require(key);
   const toml::array* array = node.as_array();
-  if (array == nullptr) {
-    fail(key,
-         "expected an array of " + std::to_string(size) + " numbers, got " + describe_type(node));
-  }
-  if (array->size() != size) {
-    fail(key,
-         "expected " + std::to_string(size) + " numbers, got " + std::to_string(array->size()));
+  if (array == nullptr || array->empty()) {
+    fail(key, "expected an array of numbers, got " +
+                  (array == nullptr ? describe_type(node) : std::string("an empty array")));
   }
   std::vector<double> values;
   for (const toml::node& element : *array) {

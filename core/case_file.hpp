@@ -73,6 +73,8 @@ public:
   bool boolean_or(std::string_view key, bool fallback) const;
   // An array of exactly `size` numbers.
   std::vector<double> numbers(std::string_view key, std::size_t size) const;
+  // An array of one or more numbers, of any length.
+  std::vector<double> number_list(std::string_view key) const;
   // Number of tables in an array of tables ([[particles]]); 0 if the key is absent.
   std::size_t table_count(std::string_view key) const;
   // Marks a table as known even if none of its keys were read (an empty [output], say).

@@ -50,8 +50,9 @@ std::vector<KeyDecl> particle_block_case_keys(const std::vector<std::string>& ki
        "\"box\"",
        "\"box\": the region [min, max] filled; \"container\": `layers` lattice layers around the "
        "box [min, max]; \"annulus\" (2D): concentric rings between inner_radius and "
-       "outer_radius about centre",
-       {"box", "container", "annulus"}},
+       "outer_radius about centre; \"outline\" (2D): a polygon with rounded corners (vertices, "
+       "corner_radii), filled on a square lattice",
+       {"box", "container", "annulus", "outline"}},
       {"particles[].lattice",
        KeyType::string,
        "-",
@@ -66,9 +67,24 @@ std::vector<KeyDecl> particle_block_case_keys(const std::vector<std::string>& ki
       {"particles[].max", KeyType::numbers, "m", "required (not for an annulus)",
        "upper corner of the region; greater than min on every axis"},
       {"particles[].layers", KeyType::integer, "-", "1",
-       "a container's wall thickness in lattice layers, 1 to 1000 (containers only)"},
+       "a container's wall thickness in lattice layers, 1 to 1000; an outline's: only the "
+       "particles within layers * spacing of its boundary (default: filled)"},
       {"particles[].open_top", KeyType::boolean, "-", "false",
        "a container without its top wall (containers only)"},
+      {"particles[].vertices", KeyType::numbers, "m", "required for an outline",
+       "an outline's vertices in order, x0, y0, x1, y1, ... (three or more)"},
+      {"particles[].corner_radii", KeyType::numbers, "m", "all 0",
+       "one radius per vertex: the corner becomes the arc of that radius tangent to both edges "
+       "(a convex corner rounded, a concave one filled); 0: sharp"},
+      {"particles[].mirror_x", KeyType::boolean, "-", "false",
+       "an outline reflected x -> -x (before its offset)"},
+      {"particles[].offset", KeyType::numbers, "m", "[0, 0]", "an outline moved by this vector"},
+      {"particles[].lattice_origin", KeyType::numbers, "m", "[0, 0]",
+       "an outline's lattice points are origin + (i + 1/2, j + 1/2) spacing: give a box "
+       "block's min to continue its lattice"},
+      {"particles[].exclude_blocks", KeyType::numbers, "-", "none",
+       "indices of box or outline blocks (0-based) whose regions this block leaves out (a fluid "
+       "around solid bodies)"},
       {"particles[].centre", KeyType::numbers, "m", "required for an annulus",
        "an annulus's centre (2 numbers)"},
       {"particles[].inner_radius", KeyType::number, "m", "required for an annulus",

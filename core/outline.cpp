@@ -1,6 +1,7 @@
 #include "core/outline.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -152,6 +153,27 @@ double Outline::area() const {
     twice += a[0] * b[1] - b[0] * a[1];
   }
   return 0.5 * std::abs(twice);
+}
+
+std::vector<Vec<2>> square_lattice_points(const Outline& outline, const Vec<2>& origin,
+                                          double spacing, double shell) {
+  const Box<2> bounds = outline.bounds();
+  std::array<long, 2> first{}, last{};
+  for (int k = 0; k < 2; ++k) {
+    first[k] = static_cast<long>(std::floor((bounds.min[k] - origin[k]) / spacing - 0.5));
+    last[k] = static_cast<long>(std::ceil((bounds.max[k] - origin[k]) / spacing - 0.5));
+  }
+  std::vector<Vec<2>> points;
+  for (long j = first[1]; j <= last[1]; ++j) {
+    for (long i = first[0]; i <= last[0]; ++i) {
+      const Vec<2> p{origin[0] + (static_cast<double>(i) + 0.5) * spacing,
+                     origin[1] + (static_cast<double>(j) + 0.5) * spacing};
+      if (outline.contains(p) && (shell <= 0.0 || outline.distance_to_boundary(p) < shell)) {
+        points.push_back(p);
+      }
+    }
+  }
+  return points;
 }
 
 } // namespace revsph

@@ -37,4 +37,10 @@ private:
   std::vector<Vec<2>> boundary_; // closed: the last point connects to the first
 };
 
+// The points origin + (i + 1/2, j + 1/2) spacing of a square lattice that lie inside `outline`;
+// with shell > 0 only those within `shell` of its boundary (a wall's layers). Row by row, y
+// slowest, like core's lattices.
+std::vector<Vec<2>> square_lattice_points(const Outline& outline, const Vec<2>& origin,
+                                          double spacing, double shell);
+
 } // namespace revsph

@@ -1,10 +1,13 @@
 #include "core/particle_blocks.hpp"
 
+#include "core/outline.hpp"
+
 #include "core/memory.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <numbers>
 #include <sstream>
 
@@ -216,7 +219,7 @@ Box<D> read_domain(const CaseFile& case_file) {
 
 namespace {
 
-enum class Shape { box, container, annulus };
+enum class Shape { box, container, annulus, outline };
 
 // Concentric rings filling the annulus inner_radius < |x - centre| < outer_radius (2D): as many
 // rings as spacings fit across it, each at the middle of its band, with round(2 pi r / spacing)
@@ -259,6 +262,13 @@ struct BlockSpec {
   Box<D> region;
   Box<D> outer; // the region grown by a container's layers (the region itself for a box)
   AnnulusSpec annulus;
+  // An outline (2D): its region, the lattice origin its points continue, the shell thickness
+  // (0: filled).
+  std::shared_ptr<const Outline> outline;
+  Vec<2> lattice_origin{};
+  double shell = 0.0;
+  // Blocks whose regions this block's particles leave out (indices into [[particles]]).
+  std::vector<std::size_t> exclude;
 };
 
 template <int D>
@@ -297,6 +307,78 @@ void read_annulus(const CaseFile& case_file, BlockSpec<D>& spec) {
     }
     spec.outer = spec.region;
   }
+}
+
+void read_exclusions(const CaseFile& case_file, const std::string& key, std::size_t index,
+                     std::vector<std::size_t>& exclude) {
+  const std::string exclude_key = key + ".exclude_blocks";
+  if (!case_file.has(exclude_key)) {
+    return;
+  }
+  const std::size_t count = case_file.table_count("particles");
+  for (const double value : case_file.number_list(exclude_key)) {
+    if (!(value >= 0.0 && value < static_cast<double>(count) && value == std::floor(value)) ||
+        static_cast<std::size_t>(value) == index) {
+      std::ostringstream reason;
+      reason << "expected indices of other [[particles]] blocks (0 to " << count - 1 << "), got "
+             << value;
+      case_file.fail(exclude_key, reason.str());
+    }
+    exclude.push_back(static_cast<std::size_t>(value));
+  }
+}
+
+// shape = "outline" (2D): vertices = [x0, y0, x1, y1, ...], corner_radii, mirror_x, offset,
+// lattice_origin, layers (core/outline.hpp).
+template <int D>
+void read_outline(const CaseFile& case_file, BlockSpec<D>& spec) {
+  auto field = [&](const char* name) { return spec.key + "." + name; };
+  if (spec.lattice != Lattice::square) {
+    case_file.fail(field("lattice"), "an outline is filled on a square lattice");
+  }
+  const std::vector<double> flat = case_file.number_list(field("vertices"));
+  if (flat.size() % 2 != 0 || flat.size() < 6) {
+    case_file.fail(field("vertices"), "expected x0, y0, x1, y1, ... for three vertices or more");
+  }
+  std::vector<Vec<2>> vertices;
+  for (std::size_t i = 0; i < flat.size(); i += 2) {
+    vertices.push_back({flat[i], flat[i + 1]});
+  }
+  std::vector<double> radii;
+  if (case_file.has(field("corner_radii"))) {
+    radii = case_file.number_list(field("corner_radii"));
+  }
+  const bool mirror = case_file.boolean_or(field("mirror_x"), false);
+  Vec<2> offset{};
+  if (case_file.has(field("offset"))) {
+    const std::vector<double> given = case_file.numbers(field("offset"), 2);
+    offset = {given[0], given[1]};
+  }
+  if (case_file.has(field("lattice_origin"))) {
+    const std::vector<double> given = case_file.numbers(field("lattice_origin"), 2);
+    spec.lattice_origin = {given[0], given[1]};
+  }
+  if (case_file.has(field("layers"))) {
+    const std::int64_t layers = case_file.integer(field("layers"));
+    if (layers < 1 || layers > 1000) {
+      case_file.fail(field("layers"),
+                     "must be between 1 and 1000 (got " + std::to_string(layers) + ")");
+    }
+    spec.shell = static_cast<double>(layers) * spec.spacing;
+  }
+  try {
+    spec.outline =
+        std::make_shared<const Outline>(Outline(vertices, radii).transformed(mirror, offset));
+  } catch (const std::invalid_argument& error) {
+    case_file.fail(field(radii.empty() ? "vertices" : "corner_radii"), error.what());
+  }
+  spec.shape = Shape::outline;
+  const Box<2> bounds = spec.outline->bounds();
+  for (int k = 0; k < D; ++k) {
+    spec.region.min[k] = bounds.min[k];
+    spec.region.max[k] = bounds.max[k];
+  }
+  spec.outer = spec.region;
 }
 
 template <int D>
@@ -342,8 +424,17 @@ BlockSpec<D> read_block(const CaseFile& case_file, std::size_t index, double def
     spec.spacing = case_file.positive_number(field("spacing"));
   }
   const std::string shape = case_file.string_or(field("shape"), "box");
+  read_exclusions(case_file, spec.key, index, spec.exclude);
   if (shape == "annulus") {
     read_annulus<D>(case_file, spec);
+    return spec;
+  }
+  if (shape == "outline") {
+    if constexpr (D != 2) {
+      case_file.fail(field("shape"), "an outline is two-dimensional");
+    } else {
+      read_outline(case_file, spec);
+    }
     return spec;
   }
   spec.region = Box<D>{to_vec<D>(case_file.numbers(field("min"), D)),
@@ -374,7 +465,8 @@ BlockSpec<D> read_block(const CaseFile& case_file, std::size_t index, double def
     }
   } else if (shape != "box") {
     case_file.fail(field("shape"),
-                   "expected \"box\", \"container\" or \"annulus\", got \"" + shape + "\"");
+                   "expected \"box\", \"container\", \"annulus\" or \"outline\", got \"" + shape +
+                       "\"");
   } else if (case_file.has(field("layers")) || case_file.has(field("open_top"))) {
     case_file.fail(case_file.has(field("layers")) ? field("layers") : field("open_top"),
                    "only a \"container\" block has layers and open_top");
@@ -445,6 +537,11 @@ ParticleBlock<D> generate_block(const CaseFile& case_file, const BlockSpec<D>& s
   block.volume_per_particle = lattice_cell_volume<D>(spec.lattice, spec.spacing);
   if (spec.shape == Shape::box) {
     block.positions = lattice_points<D>(spec.lattice, spec.region, spec.spacing);
+  } else if (spec.shape == Shape::outline) {
+    if constexpr (D == 2) {
+      block.positions =
+          square_lattice_points(*spec.outline, spec.lattice_origin, spec.spacing, spec.shell);
+    }
   } else if (spec.shape == Shape::annulus) {
     if constexpr (D == 2) {
       block.positions = ring_points(spec.annulus, spec.spacing);
@@ -495,6 +592,29 @@ read_particle_blocks(const CaseFile& case_file, double default_spacing, const Bo
   std::vector<ParticleBlock<D>> blocks;
   for (const BlockSpec<D>& spec : specs) {
     blocks.push_back(generate_block<D>(case_file, spec, domain));
+  }
+  // exclude_blocks: leave out the particles inside other blocks' regions (an outline's, or a
+  // box's [min, max]).
+  for (std::size_t b = 0; b < specs.size(); ++b) {
+    for (const std::size_t other : specs[b].exclude) {
+      const BlockSpec<D>& region = specs[other];
+      if (region.shape != Shape::outline && region.shape != Shape::box) {
+        case_file.fail(specs[b].key + ".exclude_blocks",
+                       region.key + " is not a box or an outline: only their regions exclude");
+      }
+      auto inside = [&](const Vec<D>& p) {
+        if constexpr (D == 2) {
+          if (region.shape == Shape::outline) {
+            return region.outline->contains(p);
+          }
+        }
+        return strictly_inside<D>(region.region, p);
+      };
+      std::erase_if(blocks[b].positions, inside);
+    }
+    if (blocks[b].positions.empty()) {
+      case_file.fail(specs[b].key, "the block holds no particles once exclude_blocks are left out");
+    }
   }
   return blocks;
 }

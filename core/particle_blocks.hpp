@@ -8,7 +8,13 @@
 //                                (its walls), with `open_top = true` leaving the top open;
 //                                "annulus" (2D): concentric rings filling inner_radius < |x -
 //                                centre| < outer_radius (keys centre, inner_radius, outer_radius;
-//                                no lattice, no min/max)
+//                                no lattice, no min/max);
+//                                "outline" (2D): a polygon with rounded corners
+//                                (core/outline.hpp; keys vertices, corner_radii, mirror_x,
+//                                offset, lattice_origin; layers: only a shell that thick),
+//                                filled on a square lattice
+//   exclude_blocks = [i, ...]    leave out the particles inside those blocks' regions (box or
+//                                outline): a fluid around solid bodies
 //   lattice = "square"           "square", "hexagonal" (2D: triangular; 3D: hexagonal close
 //                                packed), "bcc" (3D: body-centred cubic, cube side `spacing`,
 //                                two particles per cube) or "vogel" (2D: a Vogel spiral about

@@ -4,14 +4,20 @@
 
 #include "core/outline.hpp"
 
+#include "core/case_file.hpp"
+#include "core/particle_blocks.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string_view>
+#include <vector>
 
 namespace {
 
+using revsph::Box;
 using revsph::Outline;
 using revsph::Vec;
 
@@ -69,6 +75,57 @@ TEST(Outline, RefusesRadiiThatDoNotFitAndDegeneratePolygons) {
   EXPECT_THROW(Outline({{0, 0}, {1, 0}}, {}), std::invalid_argument);
   EXPECT_THROW(Outline({{0, 0}, {1, 0}, {2, 0}}, {}), std::invalid_argument);
   EXPECT_THROW(Outline({{0, 0}, {1, 0}, {1, 1}}, {0, 0}), std::invalid_argument);
+}
+
+} // namespace
+
+namespace {
+
+// A box of fluid around a rounded obstacle, the obstacle's wall a shell of three layers on the
+// fluid's own lattice: the fluid leaves the obstacle out (exclude_blocks), the shell lies within
+// three spacings inside its boundary, and fluid and shell never share a lattice point.
+TEST(OutlineBlock, FluidAroundAShellOnOneLattice) {
+  const revsph::CaseFile case_file = revsph::CaseFile::parse(R"([[particles]]
+kind = "fluid"
+min = [0.0, 0.0]
+max = [4.0, 3.0]
+exclude_blocks = [1]
+
+[[particles]]
+kind = "wall"
+shape = "outline"
+vertices = [0.0, 0.0, 0.0, 1.5, 1.2, 1.5, 1.2, 0.0]
+corner_radii = [0.0, 0.5, 0.5, 0.0]
+offset = [1.0, 0.5]
+lattice_origin = [0.0, 0.0]
+layers = 3
+)",
+                                                             "outline block test");
+  const double spacing = 0.05;
+  const std::string_view kinds[] = {"fluid", "wall"};
+  const auto blocks = revsph::read_particle_blocks<2>(case_file, spacing, Box<2>{{-1, -1}, {5, 4}},
+                                                      kinds, {100, 0});
+  ASSERT_EQ(blocks.size(), 2u);
+  const Outline obstacle = Outline({{0, 0}, {0, 1.5}, {1.2, 1.5}, {1.2, 0}}, {0, 0.5, 0.5, 0})
+                               .transformed(false, {1.0, 0.5});
+  for (const Vec<2>& p : blocks[0].positions) {
+    ASSERT_FALSE(obstacle.contains(p)) << p[0] << ", " << p[1];
+  }
+  for (const Vec<2>& p : blocks[1].positions) {
+    ASSERT_TRUE(obstacle.contains(p));
+    ASSERT_LT(obstacle.distance_to_boundary(p), 3.0 * spacing);
+  }
+  // The fluid fills the box less the obstacle: one particle per spacing^2, to a boundary row.
+  const double fluid_area = 12.0 - obstacle.area();
+  EXPECT_NEAR(static_cast<double>(blocks[0].positions.size()) * spacing * spacing, fluid_area,
+              obstacle.bounds().max[0] * 4.0 * spacing);
+  // One lattice: every shell point is a lattice point of the fluid's box (origin [0, 0]).
+  for (const Vec<2>& p : blocks[1].positions) {
+    for (int k = 0; k < 2; ++k) {
+      const double index = p[k] / spacing - 0.5;
+      ASSERT_NEAR(index, std::round(index), 1e-9);
+    }
+  }
 }
 
 } // namespace
