@@ -39,48 +39,58 @@ Outline::Outline(const std::vector<Vec<2>>& vertices, const std::vector<double>&
     throw std::invalid_argument("corner_radii needs one radius per vertex (" + std::to_string(n) +
                                 ")");
   }
+  // The tangent length of each rounded corner: its arc starts r / tan(theta / 2) from the vertex
+  // along both edges, theta the corner's angle; an edge must hold the arcs of both its ends.
+  std::vector<double> tangent(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec<2>& previous = vertices[(i + n - 1) % n];
-    const Vec<2>& vertex = vertices[i];
-    const Vec<2>& next = vertices[(i + 1) % n];
     const double r = corner_radii.empty() ? 0.0 : corner_radii[i];
     if (!(r >= 0.0) || !std::isfinite(r)) {
       throw std::invalid_argument("corner radius " + std::to_string(i) + " must be >= 0");
     }
-    const Vec<2> in = minus(previous, vertex);
-    const Vec<2> out = minus(next, vertex);
-    const double in_length = norm(in);
-    const double out_length = norm(out);
-    if (in_length == 0.0 || out_length == 0.0) {
+    const Vec<2> in = minus(vertices[(i + n - 1) % n], vertices[i]);
+    const Vec<2> out = minus(vertices[(i + 1) % n], vertices[i]);
+    if (norm(in) == 0.0 || norm(out) == 0.0) {
       throw std::invalid_argument("vertex " + std::to_string(i) + " repeats its neighbour");
     }
     if (r == 0.0) {
-      boundary_.push_back(vertex);
       continue;
     }
-    // The corner's angle theta between its edges; the tangent points lie r / tan(theta / 2)
-    // from the vertex along each edge, the centre r / sin(theta / 2) along the bisector.
-    const Vec<2> u{in[0] / in_length, in[1] / in_length};
-    const Vec<2> w{out[0] / out_length, out[1] / out_length};
-    const double theta = std::acos(std::clamp(u[0] * w[0] + u[1] * w[1], -1.0, 1.0));
+    const double cosine = (in[0] * out[0] + in[1] * out[1]) / (norm(in) * norm(out));
+    const double theta = std::acos(std::clamp(cosine, -1.0, 1.0));
     if (!(theta > 1e-9 && theta < std::numbers::pi - 1e-9)) {
       throw std::invalid_argument("vertex " + std::to_string(i) +
                                   " is straight or folded back: it cannot be rounded");
     }
-    const double tangent = r / std::tan(0.5 * theta);
-    if (tangent > 0.5 * in_length * (1.0 + 1e-12) || tangent > 0.5 * out_length * (1.0 + 1e-12)) {
-      throw std::invalid_argument("corner radius " + std::to_string(i) +
-                                  " does not fit: its arc reaches past the middle of an edge");
+    tangent[i] = r / std::tan(0.5 * theta);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = (i + 1) % n;
+    if (tangent[i] + tangent[j] > norm(minus(vertices[j], vertices[i])) * (1.0 + 1e-12)) {
+      throw std::invalid_argument("corner radii " + std::to_string(i) + " and " +
+                                  std::to_string(j) +
+                                  " do not fit: their arcs overlap on the edge between them");
     }
-    const Vec<2> start{vertex[0] + tangent * u[0], vertex[1] + tangent * u[1]};
-    const Vec<2> end{vertex[0] + tangent * w[0], vertex[1] + tangent * w[1]};
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec<2>& vertex = vertices[i];
+    if (tangent[i] == 0.0) {
+      boundary_.push_back(vertex);
+      continue;
+    }
+    const double r = corner_radii[i];
+    const Vec<2> in = minus(vertices[(i + n - 1) % n], vertex);
+    const Vec<2> out = minus(vertices[(i + 1) % n], vertex);
+    const Vec<2> u{in[0] / norm(in), in[1] / norm(in)};
+    const Vec<2> w{out[0] / norm(out), out[1] / norm(out)};
+    const double theta = std::acos(std::clamp(u[0] * w[0] + u[1] * w[1], -1.0, 1.0));
+    const Vec<2> start{vertex[0] + tangent[i] * u[0], vertex[1] + tangent[i] * u[1]};
+    const Vec<2> end{vertex[0] + tangent[i] * w[0], vertex[1] + tangent[i] * w[1]};
     const Vec<2> bisector{u[0] + w[0], u[1] + w[1]};
-    const double bisector_length = norm(bisector);
     const double centre_distance = r / std::sin(0.5 * theta);
-    const Vec<2> centre{vertex[0] + centre_distance * bisector[0] / bisector_length,
-                        vertex[1] + centre_distance * bisector[1] / bisector_length};
-    double a0 = std::atan2(start[1] - centre[1], start[0] - centre[0]);
-    double a1 = std::atan2(end[1] - centre[1], end[0] - centre[0]);
+    const Vec<2> centre{vertex[0] + centre_distance * bisector[0] / norm(bisector),
+                        vertex[1] + centre_distance * bisector[1] / norm(bisector)};
+    const double a0 = std::atan2(start[1] - centre[1], start[0] - centre[0]);
+    const double a1 = std::atan2(end[1] - centre[1], end[0] - centre[0]);
     // The short way round: the arc turns by pi - theta.
     double sweep = a1 - a0;
     while (sweep > std::numbers::pi) {

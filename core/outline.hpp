@@ -17,7 +17,7 @@ class Outline {
 public:
   // `vertices` in order (either orientation), at least three; `corner_radii` empty or one per
   // vertex (0: a sharp corner). Throws std::invalid_argument with the reason when a radius does
-  // not fit (its arc would reach past the middle of an edge) or the polygon is degenerate.
+  // not fit (the arcs at the two ends of an edge would overlap) or the polygon is degenerate.
   Outline(const std::vector<Vec<2>>& vertices, const std::vector<double>& corner_radii);
 
   // Reflected x -> -x (the mirror image about the y axis), then moved by `offset`.

@@ -58,14 +58,28 @@ void Model<D, Arith>::initialise_density_constants() {
   }
   invalidate_derived();
   update_density();
-  for (const auto& [set, field] : {std::pair{fluid_set, &state_.fluid.density_constant},
-                                   std::pair{dummy_set, &state_.dummy.density_constant},
-                                   std::pair{wall_set, &state_.wall.density_constant}}) {
-    const std::span<const std::uint32_t> slots = layout_.slots_of_set(set);
+  struct Carriers {
+    std::size_t set;
+    StateField<Raw>* constant;
+    const StateField<Raw>* position;
+  };
+  for (const Carriers& c :
+       {Carriers{fluid_set, &state_.fluid.density_constant, &state_.fluid.position},
+        Carriers{dummy_set, &state_.dummy.density_constant, &state_.dummy.position},
+        Carriers{wall_set, &state_.wall.density_constant, &state_.wall.position}}) {
+    StateField<Raw>* field = c.constant;
+    const std::span<const std::uint32_t> slots = layout_.slots_of_set(c.set);
     for (std::size_t i = 0; i < slots.size(); ++i) {
       const double sum = density_sums_.value(0, slots[i]);
-      if (!Arith::try_from_real(parameters_.helium.rest_density - sum, field->info().scale,
-                                field->at(0, i))) {
+      // rho0, or the hydrostatic density below a free surface.
+      double target = parameters_.helium.rest_density;
+      const double surface = parameters_.initial.hydrostatic_surface;
+      if (!std::isnan(surface)) {
+        const double y = Arith::real(c.position->at(D - 1, i), c.position->info().scale);
+        const double u1 = parameters_.helium.first_sound_speed;
+        target *= 1.0 + parameters_.gravity * (surface - y) / (u1 * u1);
+      }
+      if (!Arith::try_from_real(target - sum, field->info().scale, field->at(0, i))) {
         throw SimulationFault(
             {field->info().particle_set, i, "density_constant", "does not fit its scale"}, 0);
       }

@@ -81,6 +81,9 @@ InitialFields read_initial(const CaseFile& case_file, int dimension) {
       case_file.fail(key, "must be a finite number >= 0");
     }
   }
+  if (case_file.has("initial.hydrostatic_surface")) {
+    f.hydrostatic_surface = case_file.number("initial.hydrostatic_surface");
+  }
   const std::int64_t seed = case_file.integer_or("initial.seed", 1);
   if (seed < 0) {
     case_file.fail("initial.seed", "must be >= 0");
@@ -234,6 +237,9 @@ const KeyTable& case_keys() {
            "coflow velocity v of every fluid particle (the random part adds to it)"});
     t.add({"initial.uniform_counterflow", T::numbers, "m/s", "zero",
            "v - v_s of every fluid particle (the random part adds to it)"});
+    t.add({"initial.hydrostatic_surface", T::number, "m", "none (rho0 everywhere)",
+           "height H of the free surface: the initial density is rho0 (1 + g (H - y) / u1^2), "
+           "the pressure rho0 g (H - y) (eq. 12), for every particle"});
     t.add({"initial.random_velocity", T::number, "m/s", "0",
            "each component of v uniform in [-value, value]; >= 0"});
     t.add({"initial.random_counterflow", T::number, "m/s", "0",

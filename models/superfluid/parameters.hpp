@@ -9,6 +9,7 @@
 #include "models/superfluid/helium.hpp"
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace revsph::superfluid {
@@ -23,9 +24,12 @@ struct InitialFields {
   bool wave_cosine = false;
   std::vector<double> uniform_velocity;    // v everywhere (the random part adds to it); empty: 0
   std::vector<double> uniform_counterflow; // v - v_s everywhere; empty: 0
-  double random_velocity = 0.0;            // m/s, on v
-  double random_counterflow = 0.0;         // m/s, on v - v_s
-  double random_entropy = 0.0;             // relative, on s / s0
+  // With gravity: the height of the free surface, below which the initial density is hydrostatic,
+  // rho = rho0 (1 + g (H - y) / u1^2) (p = rho0 g (H - y) by eq. 12); NaN: rho0 everywhere.
+  double hydrostatic_surface = std::numeric_limits<double>::quiet_NaN();
+  double random_velocity = 0.0;    // m/s, on v
+  double random_counterflow = 0.0; // m/s, on v - v_s
+  double random_entropy = 0.0;     // relative, on s / s0
   std::uint64_t seed = 1;
 };
 

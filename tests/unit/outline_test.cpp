@@ -71,7 +71,9 @@ TEST(Outline, MirrorImageAndOffset) {
 }
 
 TEST(Outline, RefusesRadiiThatDoNotFitAndDegeneratePolygons) {
-  EXPECT_THROW(Outline({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {0.6, 0, 0, 0}), std::invalid_argument);
+  EXPECT_THROW(Outline({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {0.6, 0.6, 0, 0}), std::invalid_argument);
+  // One rounded end may take more than half an edge when the other end is sharp.
+  EXPECT_NO_THROW(Outline({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {0.8, 0, 0, 0}));
   EXPECT_THROW(Outline({{0, 0}, {1, 0}}, {}), std::invalid_argument);
   EXPECT_THROW(Outline({{0, 0}, {1, 0}, {2, 0}}, {}), std::invalid_argument);
   EXPECT_THROW(Outline({{0, 0}, {1, 0}, {1, 1}}, {0, 0}), std::invalid_argument);
