@@ -112,6 +112,18 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics(double time) {
                                 {"copy_entropy_difference", ds},
                                 {"total_entropy", entropy_one},
                                 {"total_entropy_copy", entropy_two}};
+  if (!std::isnan(parameters_.jet_height)) {
+    update_density();
+    const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+    const auto& x_scale = f.position.info().scale;
+    double volume = 0.0;
+    for (std::size_t a = 0; a < fluid_count(); ++a) {
+      if (Arith::real(f.position.at(D - 1, a), x_scale) > parameters_.jet_height) {
+        volume += mass[a] / density_sums_.value(0, fluid[a]);
+      }
+    }
+    terms.push_back({"volume_above_jet_height", volume});
+  }
   const InitialFields& wave = parameters_.initial;
   if (wave.wave_amplitude != 0.0) {
     const Helium& he = parameters_.helium;

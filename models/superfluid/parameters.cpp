@@ -172,6 +172,9 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.initial = read_initial(case_file, D);
   p.domain = read_domain<D>(case_file);
   p.superleak = read_superleak<D>(case_file, p.domain);
+  if (case_file.has("jet.height")) {
+    p.jet_height = case_file.number("jet.height");
+  }
   p.heater = read_heater<D>(case_file, p.domain);
 
   const Helium& he = p.helium;
@@ -257,6 +260,10 @@ const KeyTable& case_keys() {
     t.add({"superleak.half_thickness", T::number, "m", "required with a rate",
            "half its extent along the last axis; > 0; no heat is conducted across its "
            "mid-plane"});
+    t.add({"jet.height", T::number, "m", "none",
+           "report the fluid volume (sum m / rho, per unit depth in 2D) above this height in "
+           "diagnostics.csv as volume_above_jet_height: its rate over the capillary's width is "
+           "the jet speed (sec. III.C)"});
     t.add({"heater.power", T::number, "W/m (2D), W (3D)", "0",
            "heater power W of eq. (30); >= 0 (0: none); irreversible, counted in the energy "
            "budget as heater_input"});

@@ -68,6 +68,9 @@ struct Parameters {
   double dt = 0.0;
   double cell_size_factor = 1.0;
   InitialFields initial;
+  // The fountain's jet (sec. III.C): the diagnostics report the fluid volume above this height
+  // (NaN: not reported); its growth rate over the capillary's width is the jet speed.
+  double jet_height = std::numeric_limits<double>::quiet_NaN();
   Superleak<D> superleak;
   Heater<D> heater;
   Box<D> domain;
