@@ -52,6 +52,12 @@ TEST(Superfluid, ThreeDimensionalDropletReturnsBitwise) {
   expect_returns("droplet-3d-small", 500);
 }
 
+// The reversible core on the fountain's geometry (glass shells, cooler walls, gravity, a free
+// surface) at dr = d / 2: about 1 900 fluid and 2 600 wall and dummy particles.
+TEST(Superfluid, FountainReversibleCoreReturnsBitwiseOnOneAndTwoThreads) {
+  expect_returns("fountain-small", 2000);
+}
+
 // Each sub-step (drift, copy_one, copy_two) alone, forward then with -dt, on random states: the
 // droplet's random v, v_s, s with copy 2 jittered away from copy 1 (as the copies drift apart in
 // a run) and positions jittered by about dr / 30.
