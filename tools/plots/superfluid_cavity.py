@@ -41,7 +41,9 @@ RUNS = {f"cavity-re{re}-n{n}": (re, n) for re in (100, 400) for n in (20, 30, 40
 
 
 def command(re, n):
+    top = 1.0 + 6.0 / n  # six layers of wall above the lid line: the support is 6 dr
     return ["run", str(CASE), "--set", f"discretisation.dr={1.0 / n!r}",
+            "--set", f"particles[1].max=[1.0, {top!r}]", "--set", f"particles[2].max=[1.0, {top!r}]",
             "--set", f"physics.viscosity={1.0 / re!r}",
             "--set", "output.snapshot_every=1000000000"]
 
