@@ -206,10 +206,14 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   info.dimension = D;
   info.arithmetic = options.arithmetic;
   info.dt = parameters.dt;
-  info.setup_report = {
-      {"second_sound_speed", format_scientific(parameters.helium.second_sound_speed(), 4)},
-      {"heat_capacity", format_scientific(parameters.helium.heat_capacity, 4)},
-      {"dt", format_scientific(parameters.dt, 4)}};
+  // u2 of eq. (14) exists only with a superfluid fraction (not in the classical cavity).
+  if (parameters.helium.normal_fraction < 1.0) {
+    info.setup_report.emplace_back("second_sound_speed",
+                                   format_scientific(parameters.helium.second_sound_speed(), 4));
+  }
+  info.setup_report.emplace_back("heat_capacity",
+                                 format_scientific(parameters.helium.heat_capacity, 4));
+  info.setup_report.emplace_back("dt", format_scientific(parameters.dt, 4));
   Model<D, Arith> model(parameters, std::move(info), std::move(state));
   model.initialise_density_constants();
   return std::make_unique<ModelSimulation<Model<D, Arith>>>(std::move(model));
