@@ -268,9 +268,12 @@ void Model<D, Arith>::fill_rate_inputs(int from) {
 template <int D, class Arith>
 void Model<D, Arith>::sum_increments(int from, double tau) {
   fill_rate_inputs(from);
-  sum_pairs<Arith>(
-      layout_, RateTerm<D>{kernel_, slot_mass_, slot_is_fluid_, inputs_, tau, parameters_.gravity},
-      increment_sums_);
+  sum_pairs<Arith>(layout_,
+                   RateTerm<D>{kernel_, slot_mass_, slot_is_fluid_, inputs_, tau,
+                               parameters_.gravity,
+                               parameters_.helium.normal_fraction == 1.0 &&
+                                   parameters_.helium.normal_fraction_slope == 0.0},
+                   increment_sums_);
 }
 
 template class Model<2, FixedArithmetic>;
