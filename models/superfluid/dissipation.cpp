@@ -72,10 +72,11 @@ bool Model<D, Arith>::add_entropy(std::size_t i, double ds) {
 template <int D, class Arith>
 void Model<D, Arith>::fill_superleak_sides() {
   const Superleak<D>& leak = parameters_.superleak;
-  slot_side_.assign(layout_.slot_count(), 0);
   if (leak.rate == 0.0) {
+    slot_side_.resize(layout_.slot_count(), 0); // all zero: nothing to redo each sub-step
     return;
   }
+  slot_side_.assign(layout_.slot_count(), 0);
   const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
   const auto& x_scale = state_.fluid.position.info().scale;
   for (std::size_t i = 0; i < fluid.size(); ++i) {

@@ -155,11 +155,10 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.helium = read_helium(case_file);
   p.gravity = case_file.number_or("physics.gravity", 0.0);
   p.gravity_reference_height = case_file.number_or("physics.gravity_reference_height", 0.0);
-  p.viscosity = case_file.number_or("physics.viscosity", 0.0);
-  p.heat_conductivity = case_file.number_or("physics.heat_conductivity", 0.0);
-  for (const char* key : {"physics.viscosity", "physics.heat_conductivity"}) {
-    const double value = case_file.number_or(key, 0.0);
-    if (!(value >= 0.0 && std::isfinite(value))) {
+  for (const auto& [key, target] : {std::pair{"physics.viscosity", &p.viscosity},
+                                    std::pair{"physics.heat_conductivity", &p.heat_conductivity}}) {
+    *target = case_file.number_or(key, 0.0);
+    if (!(*target >= 0.0 && std::isfinite(*target))) {
       case_file.fail(key, "must be a finite number >= 0");
     }
   }
