@@ -51,9 +51,43 @@ public:
   template <int D>
   void build(const CellList<D>& cells, const CoordinateView<D>& slot_coordinates, double radius);
 
+  // Copies the pairs {a, b} of `from` for which keep(a, b) holds, in the same stripes and the
+  // same order: the pairs a term can act on, when many cannot (two fixed wall particles, say).
+  // A pair loop over it gives the same sums as over `from` if the dropped pairs add nothing to
+  // the slots whose sums are used.
+  template <class Keep>
+  void assign_filtered(const HalfPairList& from, const Keep& keep);
+
 private:
   std::vector<Stripe> stripes_;
 };
+
+template <class Keep>
+void HalfPairList::assign_filtered(const HalfPairList& from, const Keep& keep) {
+  stripes_.resize(from.stripes_.size());
+  const std::size_t stripe_count = stripes_.size();
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::size_t i = 0; i < stripe_count; ++i) {
+    const Stripe& source = from.stripes_[i];
+    Stripe& stripe = stripes_[i];
+    stripe.first_slot = source.first_slot;
+    stripe.slot_count = source.slot_count;
+    stripe.offsets.resize(source.slot_count + 1);
+    stripe.partners.resize(source.partners.size());
+    std::uint32_t used = 0;
+    stripe.offsets[0] = 0;
+    for (std::uint32_t local = 0; local < source.slot_count; ++local) {
+      const std::uint32_t a = source.first_slot + local;
+      for (std::uint32_t j = source.offsets[local]; j < source.offsets[local + 1]; ++j) {
+        const std::uint32_t b = source.partners[j];
+        if (keep(a, b)) {
+          stripe.partners[used++] = b;
+        }
+      }
+      stripe.offsets[local + 1] = used;
+    }
+  }
+}
 
 template <class Visit>
 void HalfPairList::for_each_slot(Visit&& visit) const {

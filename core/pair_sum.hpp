@@ -160,9 +160,12 @@ struct NothingAfter {
 // unknown) for the lowest-index particle whose sum does not fit. `then(slot)` runs for every slot
 // as soon as its sums are final, in the same parallel loop: per-slot work on the sums (a pressure
 // from a density) costs no barrier of its own. It must touch nothing but its slot's data.
+// sum_pairs_over runs over `pairs` instead of the layout's own list: a filtered copy of it
+// (HalfPairList::assign_filtered) without the pairs the term gives nothing to a wanted slot.
 template <class Arith, int D, PairTerm<D> Term, class Then = NothingAfter>
-void sum_pairs(const SlotLayout<D>& layout, const Term& term, PairSums<Arith, Term::width>& sums,
-               const CrossPairs<D>& cross = {}, const Then& then = {}) {
+void sum_pairs_over(const SlotLayout<D>& layout, const HalfPairList& pairs, const Term& term,
+                    PairSums<Arith, Term::width>& sums, const CrossPairs<D>& cross = {},
+                    const Then& then = {}) {
   constexpr int K = Term::width;
   sums.resize(layout.slot_count());
   const CoordinateView<D> x = layout.position();
@@ -172,36 +175,41 @@ void sum_pairs(const SlotLayout<D>& layout, const Term& term, PairSums<Arith, Te
 #pragma omp parallel
   {
     sums.zero_in_team();
-    layout.pairs().for_each_slot_in_team(
-        [&](std::uint32_t a, std::span<const std::uint32_t> partners) {
-          typename PairSums<Arith, K>::Local own(sums);
-          PairGeometry<D> pair;
-          std::array<double, K> to_a{};
-          std::array<double, K> to_b{};
-          for (const std::uint32_t b : partners) {
-            detail::fill_geometry<D>(x, a, x, b, pair);
-            term.pair(pair, to_a, to_b);
+    pairs.for_each_slot_in_team([&](std::uint32_t a, std::span<const std::uint32_t> partners) {
+      typename PairSums<Arith, K>::Local own(sums);
+      PairGeometry<D> pair;
+      std::array<double, K> to_a{};
+      std::array<double, K> to_b{};
+      for (const std::uint32_t b : partners) {
+        detail::fill_geometry<D>(x, a, x, b, pair);
+        term.pair(pair, to_a, to_b);
+        for (int q = 0; q < K; ++q) {
+          own.add(q, to_a[q]);
+          sums.add(b, q, to_b[q]);
+        }
+      }
+      if constexpr (HasCrossPairs<Term, D>) {
+        if (detail::receives(term, a)) {
+          for (const std::uint32_t w : cross.of_slot->of(a)) {
+            detail::fill_geometry<D>(x, a, cross.targets, w, pair);
+            term.cross_pair(pair, to_a);
             for (int q = 0; q < K; ++q) {
               own.add(q, to_a[q]);
-              sums.add(b, q, to_b[q]);
             }
           }
-          if constexpr (HasCrossPairs<Term, D>) {
-            if (detail::receives(term, a)) {
-              for (const std::uint32_t w : cross.of_slot->of(a)) {
-                detail::fill_geometry<D>(x, a, cross.targets, w, pair);
-                term.cross_pair(pair, to_a);
-                for (int q = 0; q < K; ++q) {
-                  own.add(q, to_a[q]);
-                }
-              }
-            }
-          }
-          sums.add_local(a, own);
-        });
+        }
+      }
+      sums.add_local(a, own);
+    });
     detail::finish_in_team<Arith>(layout, term, sums, faults, then);
   }
   faults.throw_if_any();
+}
+
+template <class Arith, int D, PairTerm<D> Term, class Then = NothingAfter>
+void sum_pairs(const SlotLayout<D>& layout, const Term& term, PairSums<Arith, Term::width>& sums,
+               const CrossPairs<D>& cross = {}, const Then& then = {}) {
+  sum_pairs_over<Arith>(layout, layout.pairs(), term, sums, cross, then);
 }
 
 // Only the one-sided terms of fixed targets: for every wanted slot a, the sum over the targets

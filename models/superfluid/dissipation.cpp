@@ -111,12 +111,12 @@ void Model<D, Arith>::dissipate(double dt) {
   }
   fill_superleak_sides();
   const double eta = parameters_.support_radius / 20.0; // h / 10, h = support / 2
-  sum_pairs<Arith>(layout_,
-                   DissipationTerm<D>{kernel_, slot_mass_, slot_kind_, inputs_.inverse_density,
-                                      inputs_.temperature, inputs_.normal_velocity,
-                                      parameters_.viscosity, parameters_.heat_conductivity,
-                                      eta * eta, dt, slot_side_},
-                   dissipation_sums_);
+  sum_pairs_over<Arith>(layout_, fluid_pairs_,
+                        DissipationTerm<D>{kernel_, slot_mass_, slot_kind_, inputs_.inverse_density,
+                                           inputs_.temperature, inputs_.normal_velocity,
+                                           parameters_.viscosity, parameters_.heat_conductivity,
+                                           eta * eta, dt, slot_side_},
+                        dissipation_sums_);
   const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
   FaultRecorder faults;
   add_pair_totals<Arith>(state_.fluid.velocity, dissipation_sums_, 0, fluid, faults);

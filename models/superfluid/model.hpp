@@ -137,6 +137,7 @@ private:
   double heater_energy_ = 0.0; // the heater's input since the simulation was built
   std::vector<std::int8_t> slot_side_;
   PairSums<Arith, 1> density_sums_;
+  HalfPairList fluid_pairs_; // the layout's pairs with a fluid particle on one side at least
   RateInputs<D> inputs_;
   PairSums<Arith, 2 * D + 1> increment_sums_; // at the scales of v, v_s and s
   PairSums<Arith, D + 1> dissipation_sums_;   // velocity increments and heat

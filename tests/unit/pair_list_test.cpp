@@ -17,7 +17,9 @@
 #include <cstdint>
 #include <random>
 #include <set>
+#include <tuple>
 #include <utility>
+#include <vector>
 
 namespace {
 
@@ -127,6 +129,45 @@ TEST(HalfPairList, MatchesBruteForceIn3D) {
   expect_brute_force_pairs<3>(3000, 0.1, 0.1, 4);
   expect_brute_force_pairs<3>(3000, 0.1, 0.13, 5);
   expect_brute_force_pairs<3>(300, 0.6, 0.6, 6); // one or two cells per axis
+}
+
+// The listed pairs, each with the stripe it is listed in, in list order.
+std::vector<std::tuple<std::size_t, std::uint32_t, std::uint32_t>>
+listed_in_order(const HalfPairList& pairs) {
+  std::vector<std::tuple<std::size_t, std::uint32_t, std::uint32_t>> listed;
+  for (std::size_t s = 0; s < pairs.stripes().size(); ++s) {
+    const HalfPairList::Stripe& stripe = pairs.stripes()[s];
+    for (std::uint32_t local = 0; local < stripe.slot_count; ++local) {
+      for (std::uint32_t i = stripe.offsets[local]; i < stripe.offsets[local + 1]; ++i) {
+        listed.emplace_back(s, stripe.first_slot + local, stripe.partners[i]);
+      }
+    }
+  }
+  return listed;
+}
+
+TEST(HalfPairList, FilteredCopyKeepsExactlyTheWantedPairsInTheirOrder) {
+  const CellOrdered<2> points = cell_ordered_points<2>(3000, Box<2>{{0, 0}, {1, 1}}, 0.05, 8);
+  HalfPairList all;
+  all.build<2>(points.cells, revsph::view_of<2>(points.slot_points), 0.05);
+  // Slots divisible by three stand for the fixed particles: pairs of two of them are dropped.
+  const auto keep = [](std::uint32_t a, std::uint32_t b) { return a % 3 != 0 || b % 3 != 0; };
+  HalfPairList kept;
+  kept.assign_filtered(all, [](std::uint32_t, std::uint32_t) { return false; });
+  EXPECT_EQ(kept.pair_count(), 0u);
+  kept.assign_filtered(all, keep); // reuses the emptied copy's stripes
+  auto expected = listed_in_order(all);
+  std::erase_if(expected,
+                [&](const auto& pair) { return !keep(std::get<1>(pair), std::get<2>(pair)); });
+  ASSERT_GT(expected.size(), 0u);
+  ASSERT_LT(expected.size(), all.pair_count());
+  EXPECT_EQ(listed_in_order(kept), expected);
+  EXPECT_EQ(kept.pair_count(), expected.size());
+  ASSERT_EQ(kept.stripes().size(), all.stripes().size());
+  for (std::size_t s = 0; s < all.stripes().size(); ++s) {
+    EXPECT_EQ(kept.stripes()[s].first_slot, all.stripes()[s].first_slot);
+    EXPECT_EQ(kept.stripes()[s].slot_count, all.stripes()[s].slot_count);
+  }
 }
 
 TEST(HalfPairList, RejectsARadiusBeyondTheCellSize) {
