@@ -141,6 +141,7 @@ def main():
     parser.add_argument("--out", default=str(REPO / "models" / "superfluid" / "cases"))
     args = parser.parse_args()
     path = Path(args.out) / f"{args.name}.toml"
+    path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(case_text(args.n, args.name, args.power, args.reversible))
     print(f"wrote {path}")
 

@@ -1,0 +1,355 @@
+#!/usr/bin/python3
+"""The superfluid fountain effect (paper 3 sec. III.C, Figs. 8-12): the jet speed against eq. (31)
+at 60 and 80 W/m and two resolutions, the temperature and pressure fields, the cell's
+temperature in time, and the relative jet speed against the Reynolds number (eq. 33).
+
+Usage: /usr/bin/python3 tools/plots/superfluid_fountain.py [--make-runs] [--runs DIR] [--out DIR]
+           [--revsph PATH] [--threads N] [--only NAME ...]
+
+--make-runs writes each run's case with tools/plots/superfluid_fountain_case.py (dr = d / N)
+into RUNS/cases and runs it into RUNS/NAME (default RUNS = out/superfluid), snapshots every
+2.5 ms; a run that stopped early (a session's end) is continued from its last snapshot into
+RUNS/NAME-2, NAME-3, ... (`revsph run --from`), so repeating the command chains it to the end.
+The runs (viscosity mu; Re = W / (T0 s0 mu), eq. 33):
+  fountain-n4-w60, fountain-n4-w80          N = 4, mu = 1e-4 (Table I)
+  fountain-n6-w60, fountain-n6-w80          N = 6
+  fountain-n4-w80-mu3e-4, -mu1e-3           N = 4, Re about 480 and 145 (Fig. 11)
+  fountain-n4-w80-start                     N = 4, to t = 1 ms, snapshots every 0.25 ms (Fig. 10)
+Writes into --out (default docs/figures):
+  superfluid_fountain_jet.png   jet speed in time against eq. (31) (Fig. 8)
+  superfluid_fountain_fields.png coflow speed and pressure at the end (Fig. 9)
+  superfluid_fountain_start.png temperature in the cell in the first millisecond (Fig. 10)
+  superfluid_fountain_re.png    the cell's temperature in time; v_jet / v_ideal against Re (Fig. 11)
+  superfluid_fountain_frames.png temperature and the fountain's shape every 37.5 ms (Fig. 12)
+  superfluid_fountain.csv       per run: N, W, mu, Re, mean jet speed over t > 0.2 s, eq. (31)
+  superfluid_fountain_jet.csv   per run and snapshot interval: t, jet speed, eq. (31), cell T
+  superfluid_fountain.md        the numbers (also printed)
+
+The jet speed is the net volume (m / rho) of the particles crossing y = 33.7 mm within the
+capillary's mouth (|x| < 2.3 mm, its walls included) between snapshots, over the interval and the
+capillary's width d = 1.55 mm; eq. (31) uses the mean T, s and rho of the cell (|x| < 8 mm,
+3 mm < y < 16.7 mm, above the superleak) and the heater's power at that time (its ramp).
+"""
+
+import subprocess
+import sys
+from pathlib import Path
+
+import h5py
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from revsph_runs import REPO, figure_parser, find_revsph, save_figure, write_report  # noqa: E402
+
+D_CAPILLARY = 1.55e-3
+JET_HEIGHT = 33.7e-3
+MOUTH_HALF_WIDTH = 2.3e-3
+CELL = ((-8e-3, 8e-3), (3e-3, 16.7e-3))
+T0, S0 = 1.65, 335.0
+RAMP = 0.02
+AVERAGE_FROM = 0.2
+RUNS = {
+    "fountain-n4-w60": dict(n=4, power=60.0, mu=1e-4),
+    "fountain-n4-w80": dict(n=4, power=80.0, mu=1e-4),
+    "fountain-n6-w60": dict(n=6, power=60.0, mu=1e-4),
+    "fountain-n6-w80": dict(n=6, power=80.0, mu=1e-4),
+    "fountain-n4-w80-mu3e-4": dict(n=4, power=80.0, mu=3e-4),
+    "fountain-n4-w80-mu1e-3": dict(n=4, power=80.0, mu=1e-3),
+    "fountain-n4-w80-start": dict(n=4, power=80.0, mu=1e-4, t_end=1e-3, every=2.5e-4),
+}
+
+
+def reynolds(run):
+    return run["power"] / (T0 * S0 * run["mu"])  # eq. (33)
+
+
+def time_step(n):
+    return 0.1 * 5.6 * (D_CAPILLARY / n) / 40.0  # courant * support / u1
+
+
+def segments(runs, name):
+    """The run's directories in order: NAME, NAME-2, NAME-3, ..."""
+    found = [runs / name] if (runs / name).is_dir() else []
+    k = 2
+    while (runs / f"{name}-{k}").is_dir():
+        found.append(runs / f"{name}-{k}")
+        k += 1
+    return found
+
+
+def snapshot_files(runs, name):
+    """Every snapshot of the run over its segments, one per step, in step order."""
+    by_step = {}
+    for directory in segments(runs, name):
+        for path in sorted((directory / "snapshots").glob("step_*.h5")):
+            by_step[int(path.stem.split("_")[1])] = path
+    return [by_step[s] for s in sorted(by_step)]
+
+
+def snapshot_time(path):
+    with h5py.File(path) as f:
+        return float(f.attrs["time"])
+
+
+def make_run(runs, name, revsph, threads):
+    """Starts the run, or continues it from its last snapshot if it stopped before its end."""
+    run = RUNS[name]
+    t_end = run.get("t_end", 0.3)
+    every = max(1, round(run.get("every", 2.5e-3) / time_step(run["n"])))
+    files = snapshot_files(runs, name)
+    if files and snapshot_time(files[-1]) >= t_end - 0.5 * time_step(run["n"]):
+        return
+    if files:
+        out = runs / f"{name}-{len(segments(runs, name)) + 1}"
+        command = [str(revsph), "run", "--from", str(files[-1])]
+    else:
+        cases = runs / "cases"
+        subprocess.run([sys.executable, str(Path(__file__).with_name("superfluid_fountain_case.py")),
+                        str(run["n"]), name, repr(run["power"]), "--out", str(cases)], check=True)
+        out = runs / name
+        command = [str(revsph), "run", str(cases / f"{name}.toml"),
+                   "--set", f"physics.viscosity={run['mu']!r}",
+                   "--set", f"output.snapshot_every={every}"]
+    command += ["--t-end", repr(t_end), "--out", str(out), "--force"]
+    if threads:
+        command += ["--threads", threads]
+    print("+", " ".join(command), flush=True)
+    subprocess.run(command, check=True)
+
+
+def read_snapshot(path):
+    with h5py.File(path) as f:
+        fluid = f["particles/fluid"]
+        data = {key: fluid[key][...] for key in
+                ("position", "mass", "density", "temperature", "mean_entropy", "pressure",
+                 "mean_velocity")}
+        data["time"] = float(f.attrs["time"])
+        data["solid"] = np.concatenate([f[f"particles/{kind}/position"][...]
+                                        for kind in ("dummy", "wall")])
+    return data
+
+
+def in_cell(x):
+    (x0, x1), (y0, y1) = CELL
+    return (x[:, 0] > x0) & (x[:, 0] < x1) & (x[:, 1] > y0) & (x[:, 1] < y1)
+
+
+def series(runs, name):
+    """Per snapshot: time, cell means of T, s, rho; per interval: crossed volume."""
+    run = RUNS[name]
+    times, temperature, ideal, crossed = [], [], [], []
+    previous = None
+    for path in snapshot_files(runs, name):
+        s = read_snapshot(path)
+        cell = in_cell(s["position"])
+        weight = s["mass"][cell]
+        mean = {k: np.average(s[k][cell], weights=weight)
+                for k in ("temperature", "mean_entropy", "density")}
+        power = run["power"] * min(s["time"] / RAMP, 1.0)
+        times.append(s["time"])
+        temperature.append(mean["temperature"])
+        # Eq. (31): v = W / (T s rho d).
+        ideal.append(power / (mean["temperature"] * mean["mean_entropy"] * mean["density"]
+                              * D_CAPILLARY))
+        if previous is not None:
+            y0, y1 = previous["position"][:, 1], s["position"][:, 1]
+            up = (y0 < JET_HEIGHT) & (y1 >= JET_HEIGHT) & (
+                np.abs(previous["position"][:, 0]) < MOUTH_HALF_WIDTH)
+            down = (y0 >= JET_HEIGHT) & (y1 < JET_HEIGHT) & (
+                np.abs(s["position"][:, 0]) < MOUTH_HALF_WIDTH)
+            volume = s["mass"] / s["density"]
+            crossed.append(volume[up].sum() - volume[down].sum())
+        previous = s
+    return np.array(times), np.array(temperature), np.array(ideal), np.array(crossed)
+
+
+def jet_summary(runs, name):
+    t, temperature, ideal, crossed = series(runs, name)
+    late = t[:-1] >= AVERAGE_FROM - 1e-9  # intervals starting at or after 0.2 s
+    span = t[1:][late][-1] - t[:-1][late][0]
+    mean_jet = crossed[late].sum() / (span * D_CAPILLARY)
+    # Eq. (31) averaged over the same intervals (trapezoid on the snapshots).
+    mid_ideal = 0.5 * (ideal[:-1] + ideal[1:])
+    mean_ideal = np.sum(mid_ideal[late] * np.diff(t)[late]) / span
+    return t, temperature, ideal, crossed, mean_jet, mean_ideal
+
+
+def moving_jet(t, crossed, window):
+    """Jet speed over windows of `window` snapshot intervals, at their centres."""
+    k = max(1, window)
+    volume = np.convolve(crossed, np.ones(k), mode="valid")
+    duration = t[k:] - t[:-k]
+    centre = 0.5 * (t[k:] + t[:-k])
+    return centre, volume / (duration * D_CAPILLARY)
+
+
+def scatter_field(ax, s, values, label, cmap, vmin=None, vmax=None, region=None, size=0.6):
+    ax.scatter(s["solid"][:, 0] * 1e3, s["solid"][:, 1] * 1e3, s=size / 2, c="0.75", lw=0)
+    x = s["position"]
+    keep = np.ones(len(x), bool) if region is None else region(x)
+    image = ax.scatter(x[keep, 0] * 1e3, x[keep, 1] * 1e3, s=size, c=values[keep], cmap=cmap,
+                       vmin=vmin, vmax=vmax, lw=0)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (mm)")
+    plt.colorbar(image, ax=ax, label=label, shrink=0.8)
+    return image
+
+
+def fig_jet(runs, out, report, available):
+    fig, axes = plt.subplots(1, 2, figsize=(13, 4.5), sharey=False)
+    rows, jet_rows = [], {k: [] for k in ("run", "t_start", "t_end", "v_jet", "v_ideal",
+                                          "cell_temperature")}
+    for name in available:
+        run = RUNS[name]
+        if "t_end" in run:
+            continue
+        if snapshot_time(snapshot_files(runs, name)[-1]) < AVERAGE_FROM + 0.02:
+            report.append((f"{name}: not yet past t = {AVERAGE_FROM + 0.02} s", "skipped"))
+            continue
+        t, temperature, ideal, crossed, mean_jet, mean_ideal = jet_summary(runs, name)
+        deficit = 100.0 * (1.0 - mean_jet / mean_ideal)
+        rows.append((name, run["n"], run["power"], run["mu"], reynolds(run), mean_jet, mean_ideal,
+                     deficit, t[-1]))
+        report.append((f"{name}: mean jet speed over t > {AVERAGE_FROM} s (m/s)",
+                       f"{mean_jet:.4f} against eq. (31) {mean_ideal:.4f}: {deficit:.2f} % below "
+                       f"(Re {reynolds(run):.0f}; paper at W = 60, 80: 1.95 %, 2.38 % below)"))
+        speed = crossed / (np.diff(t) * D_CAPILLARY)
+        for i in range(len(crossed)):
+            for key, value in zip(jet_rows, (name, t[i], t[i + 1], speed[i],
+                                             0.5 * (ideal[i] + ideal[i + 1]), temperature[i + 1])):
+                jet_rows[key].append(value)
+        if run["mu"] != 1e-4:
+            continue
+        ax = axes[0 if run["power"] == 60.0 else 1]
+        centre, smooth = moving_jet(t, crossed, 8)
+        ax.plot(centre, smooth, label=f"SPH, dr = d/{run['n']} (20 ms windows)")
+        ax.plot(t, ideal, "--", label=f"eq. (31), dr = d/{run['n']}")
+        ax.axvline(AVERAGE_FROM, color="0.6", lw=0.8)
+        ax.set_title(f"W = {run['power']:.0f} W/m")
+    for ax in axes:
+        ax.set_xlabel("t (s)")
+        ax.set_ylabel("jet speed (m/s)")
+        ax.legend(fontsize=8)
+    save_figure(fig, out / "superfluid_fountain_jet.png")
+    columns = ("run", "N", "power_W_per_m", "viscosity", "Re", "mean_jet_speed",
+               "eq31_speed", "deficit_percent", "t_end")
+    with open(out / "superfluid_fountain.csv", "w") as f:
+        f.write(",".join(columns) + "\n")
+        for row in rows:
+            f.write(",".join(str(v) if isinstance(v, str) else f"{v:.6g}" for v in row) + "\n")
+    names = jet_rows.pop("run")
+    with open(out / "superfluid_fountain_jet.csv", "w") as f:
+        f.write("run," + ",".join(jet_rows) + "\n")
+        for i, name in enumerate(names):
+            f.write(name + "," + ",".join(f"{jet_rows[k][i]:.8g}" for k in jet_rows) + "\n")
+    return rows
+
+
+def finest(available, power):
+    candidates = [n for n in available if RUNS[n]["power"] == power and RUNS[n]["mu"] == 1e-4
+                  and "t_end" not in RUNS[n]]
+    return max(candidates, key=lambda n: RUNS[n]["n"]) if candidates else None
+
+
+def fig_fields(runs, out, report, available):
+    names = [n for n in (finest(available, 60.0), finest(available, 80.0)) if n]
+    if not names:
+        return
+    fig, axes = plt.subplots(2, len(names), figsize=(6 * len(names), 10), squeeze=False)
+    for column, name in enumerate(names):
+        s = read_snapshot(snapshot_files(runs, name)[-1])
+        speed = np.linalg.norm(s["mean_velocity"], axis=1)
+        scatter_field(axes[0, column], s, speed, "|v| (m/s)", "viridis", 0.0, 1.0)
+        axes[0, column].set_title(f"{name}, t = {s['time']:.3f} s")
+        scatter_field(axes[1, column], s, s["pressure"], "p (Pa)", "coolwarm", -60.0, 100.0)
+    save_figure(fig, out / "superfluid_fountain_fields.png")
+
+
+def fig_start(runs, out, report, available):
+    if "fountain-n4-w80-start" not in available:
+        return
+    files = snapshot_files(runs, "fountain-n4-w80-start")[1:5]
+    fig, axes = plt.subplots(1, len(files), figsize=(4.2 * len(files), 4))
+    for ax, path in zip(np.atleast_1d(axes), files):
+        s = read_snapshot(path)
+        scatter_field(ax, s, (s["temperature"] - T0) * 1e6, "T - T0 (uK)", "inferno",
+                      region=lambda x: (np.abs(x[:, 0]) < 9e-3) & (x[:, 1] < 18e-3), size=12)
+        ax.set_xlim(-9, 9)
+        ax.set_ylim(-6, 18)
+        ax.set_title(f"t = {s['time'] * 1e3:.2f} ms")
+    save_figure(fig, out / "superfluid_fountain_start.png")
+
+
+def fig_reynolds(runs, out, report, rows, available):
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.3))
+    for name in available:
+        run = RUNS[name]
+        if run["power"] == 80.0 and run["mu"] == 1e-4 and "t_end" not in run:
+            t, temperature, *_ = series(runs, name)
+            axes[0].plot(t, (temperature - T0) * 1e3, label=f"dr = d/{run['n']}")
+    axes[0].set_xlabel("t (s)")
+    axes[0].set_ylabel("cell T - T0 (mK)")
+    axes[0].set_title("W = 80 W/m")
+    axes[0].legend()
+    scan = [r for r in rows if r[2] == 80.0 and r[1] == 4]
+    if scan:
+        re = np.array([r[4] for r in scan])
+        ratio = np.array([r[5] / r[6] for r in scan])
+        axes[1].plot(re, ratio, "o-")
+        for value, r in zip(re, ratio):
+            report.append((f"v_jet / v_ideal at Re {value:.0f} (W = 80, dr = d/4)", f"{r:.4f}"))
+    axes[1].set_xlabel("Re (eq. 33)")
+    axes[1].set_ylabel("v_jet / v_ideal, t > 0.2 s")
+    axes[1].set_title("W = 80 W/m, dr = d/4")
+    save_figure(fig, out / "superfluid_fountain_re.png")
+
+
+def fig_frames(runs, out, report, available):
+    name = finest(available, 80.0)
+    if not name:
+        return
+    files = snapshot_files(runs, name)
+    times = np.array([snapshot_time(p) for p in files])
+    fig, axes = plt.subplots(2, 4, figsize=(18, 10))
+    for k, ax in enumerate(axes.flat):
+        s = read_snapshot(files[int(np.argmin(np.abs(times - 0.0375 * (k + 1))))])
+        scatter_field(ax, s, (s["temperature"] - T0) * 1e3, "T - T0 (mK)", "inferno", 0.0, None)
+        ax.set_title(f"t = {s['time'] * 1e3:.1f} ms")
+    save_figure(fig, out / "superfluid_fountain_frames.png")
+
+
+def main():
+    parser = figure_parser(__doc__)
+    parser.set_defaults(runs="out/superfluid", out=str(REPO / "docs" / "figures"))
+    parser.add_argument("--only", nargs="+", choices=sorted(RUNS))
+    args = parser.parse_args()
+    runs, out = Path(args.runs), Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    names = args.only or list(RUNS)
+    if args.make_runs:
+        revsph = find_revsph(args.revsph)
+        for name in names:
+            make_run(runs, name, revsph, args.threads)
+    available = [n for n in RUNS if len(snapshot_files(runs, n)) >= 2]
+    if not available:
+        print(f"no fountain runs in {runs} (use --make-runs)")
+        return 1
+    report = []
+    rows = fig_jet(runs, out, report, available)
+    fig_fields(runs, out, report, available)
+    fig_start(runs, out, report, available)
+    fig_reynolds(runs, out, report, rows, available)
+    fig_frames(runs, out, report, available)
+    write_report(out / "superfluid_fountain.md", report)
+    incomplete = [n for n in RUNS if n not in available]
+    if incomplete:
+        print("missing runs:", ", ".join(incomplete))
+    return 0 if not incomplete else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
