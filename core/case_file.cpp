@@ -251,6 +251,19 @@ double CaseFile::positive_number(std::string_view key) const {
   return value;
 }
 
+double CaseFile::non_negative_number_or(std::string_view key, double fallback,
+                                        std::string_view zero_means) const {
+  const double value = number_or(key, fallback);
+  if (!(value >= 0.0 && std::isfinite(value))) {
+    std::string reason = "must be a finite number >= 0";
+    if (!zero_means.empty()) {
+      reason += " (0: " + std::string(zero_means) + ")";
+    }
+    fail(key, reason + " (got " + format_number(value) + ")");
+  }
+  return value;
+}
+
 std::int64_t CaseFile::integer(std::string_view key) const {
   constexpr KeyType type = KeyType::integer;
   declared(key, &type);

@@ -66,6 +66,10 @@ public:
   double number(std::string_view key) const;
   double number_or(std::string_view key, double fallback) const;
   double positive_number(std::string_view key) const;
+  // A finite number >= 0 (a rate, a power, an amplitude), `fallback` if absent; `zero_means`
+  // says in the error what 0 does ("no heater"), if anything.
+  double non_negative_number_or(std::string_view key, double fallback,
+                                std::string_view zero_means = {}) const;
   std::int64_t integer(std::string_view key) const;
   std::int64_t integer_or(std::string_view key, std::int64_t fallback) const;
   std::string string(std::string_view key) const;

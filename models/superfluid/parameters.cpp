@@ -71,16 +71,9 @@ InitialFields read_initial(const CaseFile& case_file, int dimension) {
                    "expected \"sine\" or \"cosine\", got \"" + shape + "\"");
   }
   f.wave_cosine = shape == "cosine";
-  f.random_velocity = case_file.number_or("initial.random_velocity", 0.0);
-  f.random_counterflow = case_file.number_or("initial.random_counterflow", 0.0);
-  f.random_entropy = case_file.number_or("initial.random_entropy", 0.0);
-  for (const auto& [key, value] : {std::pair{"initial.random_velocity", f.random_velocity},
-                                   std::pair{"initial.random_counterflow", f.random_counterflow},
-                                   std::pair{"initial.random_entropy", f.random_entropy}}) {
-    if (!(value >= 0.0 && std::isfinite(value))) {
-      case_file.fail(key, "must be a finite number >= 0");
-    }
-  }
+  f.random_velocity = case_file.non_negative_number_or("initial.random_velocity", 0.0);
+  f.random_counterflow = case_file.non_negative_number_or("initial.random_counterflow", 0.0);
+  f.random_entropy = case_file.non_negative_number_or("initial.random_entropy", 0.0);
   if (case_file.has("initial.hydrostatic_surface")) {
     f.hydrostatic_surface = case_file.number("initial.hydrostatic_surface");
   }
@@ -108,10 +101,7 @@ Vec<D> read_point(const CaseFile& case_file, const char* key, const Box<D>& doma
 template <int D>
 Superleak<D> read_superleak(const CaseFile& case_file, const Box<D>& domain) {
   Superleak<D> s;
-  s.rate = case_file.number_or("superleak.rate", 0.0);
-  if (!(s.rate >= 0.0 && std::isfinite(s.rate))) {
-    case_file.fail("superleak.rate", "must be a finite number >= 0 (0: no superleak)");
-  }
+  s.rate = case_file.non_negative_number_or("superleak.rate", 0.0, "no superleak");
   if (s.rate == 0.0) {
     return s;
   }
@@ -131,19 +121,13 @@ Superleak<D> read_superleak(const CaseFile& case_file, const Box<D>& domain) {
 template <int D>
 Heater<D> read_heater(const CaseFile& case_file, const Box<D>& domain) {
   Heater<D> h;
-  h.power = case_file.number_or("heater.power", 0.0);
-  if (!(h.power >= 0.0 && std::isfinite(h.power))) {
-    case_file.fail("heater.power", "must be a finite number >= 0 (0: no heater)");
-  }
+  h.power = case_file.non_negative_number_or("heater.power", 0.0, "no heater");
   if (h.power == 0.0) {
     return h;
   }
   h.centre = read_point<D>(case_file, "heater.centre", domain);
   h.support = case_file.positive_number("heater.support");
-  h.ramp_time = case_file.number_or("heater.ramp_time", 0.0);
-  if (!(h.ramp_time >= 0.0 && std::isfinite(h.ramp_time))) {
-    case_file.fail("heater.ramp_time", "must be a finite number >= 0");
-  }
+  h.ramp_time = case_file.non_negative_number_or("heater.ramp_time", 0.0, "full power at once");
   return h;
 }
 
@@ -155,13 +139,9 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.helium = read_helium(case_file);
   p.gravity = case_file.number_or("physics.gravity", 0.0);
   p.gravity_reference_height = case_file.number_or("physics.gravity_reference_height", 0.0);
-  for (const auto& [key, target] : {std::pair{"physics.viscosity", &p.viscosity},
-                                    std::pair{"physics.heat_conductivity", &p.heat_conductivity}}) {
-    *target = case_file.number_or(key, 0.0);
-    if (!(*target >= 0.0 && std::isfinite(*target))) {
-      case_file.fail(key, "must be a finite number >= 0");
-    }
-  }
+  p.viscosity = case_file.non_negative_number_or("physics.viscosity", 0.0, "inviscid");
+  p.heat_conductivity =
+      case_file.non_negative_number_or("physics.heat_conductivity", 0.0, "no conduction");
   const ParticleDiscretisation discretisation =
       read_particle_discretisation(case_file, p.helium.first_sound_speed);
   p.dr = discretisation.dr;

@@ -111,8 +111,8 @@ TEST_P(StateDeclaration, EveryFieldIsSavedHashedReversedAndCompared) {
 
 INSTANTIATE_TEST_SUITE_P(SmallBuiltinCases, StateDeclaration,
                          ::testing::ValuesIn(small_builtin_cases()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                           std::string name = info.param;
+                         [](const ::testing::TestParamInfo<std::string>& test_info) {
+                           std::string name = test_info.param;
                            std::replace(name.begin(), name.end(), '-', '_');
                            return name;
                          });
