@@ -20,7 +20,11 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[2]
 MM = 1e-3
 D = 1.55 * MM
-BODY = [(0, 0), (0, 23.7), (17.1, 23.7), (17.1, 16.7), (9.9, 16.7), (9.9, 0)]
+# The L of the issue, (0, 0), (0, 23.7), (17.1, 23.7), (17.1, 16.7), (9.9, 16.7), (9.9, 0), with
+# the disc of radius 4.95 centred at (4.95, 0) that rounds the column's bottom: the column is
+# carried down to y = -4.95 and its two bottom corners rounded with radius 4.95, whose arcs are
+# centred at (4.95, 0) and meet at (4.95, -4.95): the L and the disc's union.
+BODY = [(0, -4.95), (0, 23.7), (17.1, 23.7), (17.1, 16.7), (9.9, 16.7), (9.9, -4.95)]
 RADII = [4.95, 10.7, 0, 2, 2, 4.95]
 CAPILLARY_WALL = [(15.6, 23.7), (15.6, 33.7), (17.1, 33.7), (17.1, 23.7)]
 
