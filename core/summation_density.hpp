@@ -9,6 +9,7 @@
 #include "core/pair_sum.hpp"
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <span>
 
@@ -33,5 +34,31 @@ struct SummationDensityTerm {
     add.raw(0, density_constant[s]);
   }
 };
+
+// sum_b w(|x_a - x_b|) over a full square (cubic) lattice of spacing dr, b = a included: the
+// kernel sum of a unit-mass particle inside a liquid laid on the lattice. A boundary particle
+// whose constant is set from it weighs as if it were inside the liquid, wet or dry.
+template <int D>
+double lattice_kernel_sum(const WendlandQuintic<D>& kernel, double dr) {
+  const int reach = static_cast<int>(kernel.support_radius() / dr) + 1;
+  std::array<int, D> index{};
+  index.fill(-reach);
+  double sum = 0.0;
+  while (true) {
+    double r_squared = 0.0;
+    for (int k = 0; k < D; ++k) {
+      r_squared += (index[k] * dr) * (index[k] * dr);
+    }
+    sum += kernel.value(std::sqrt(r_squared));
+    int k = 0;
+    while (k < D && index[k] == reach) {
+      index[k++] = -reach;
+    }
+    if (k == D) {
+      return sum;
+    }
+    ++index[k];
+  }
+}
 
 } // namespace revsph

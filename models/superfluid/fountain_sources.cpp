@@ -38,8 +38,8 @@ std::string Model<D, Arith>::heater_acts(const Model& model) {
     return "";
   }
   std::ostringstream text;
-  text << "heater (eq. 30, power " << heater.power << (D == 2 ? " W/m" : " W")
-       << ", ramped over " << heater.ramp_time << " s, after each step)";
+  text << "heater (eq. 30, power " << heater.power << (D == 2 ? " W/m" : " W") << ", ramped over "
+       << heater.ramp_time << " s, after each step)";
   return text.str();
 }
 

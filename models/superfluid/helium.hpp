@@ -32,6 +32,16 @@ struct Helium {
   double pressure(double rho) const {
     return first_sound_speed * first_sound_speed * (rho - rest_density);
   }
+  // A boundary particle's (dummy or wall) pressure and energy: eq. (12) and the compressional
+  // term of (15) where it is compressed, zero where it is not. A boundary particle's density
+  // constant is that of a particle inside the liquid (Model::initialise_density_constants), so
+  // a dry one is under-dense; with eq. (12) as it stands it would pull the liquid toward it (up
+  // the capillary's dry walls). e stays continuous with de/drho = 0 at rho0, so the forces are
+  // still the gradient of the energy.
+  double boundary_pressure(double rho) const { return rho > rest_density ? pressure(rho) : 0.0; }
+  double boundary_compressional_energy(double rho) const {
+    return rho > rest_density ? compressional_energy(rho) : 0.0;
+  }
   // de/ds of eq. (15); counterflow_squared = |v_ns|^2.
   double temperature(double s, double counterflow_squared) const {
     return reference_temperature * (1.0 + (s - reference_entropy) / heat_capacity) -

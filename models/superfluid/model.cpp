@@ -58,6 +58,7 @@ void Model<D, Arith>::initialise_density_constants() {
   }
   invalidate_derived();
   update_density();
+  lattice_kernel_sum_ = lattice_kernel_sum(kernel_, parameters_.dr);
   struct Carriers {
     std::size_t set;
     StateField<Raw>* constant;
@@ -69,8 +70,14 @@ void Model<D, Arith>::initialise_density_constants() {
         Carriers{wall_set, &state_.wall.density_constant, &state_.wall.position}}) {
     StateField<Raw>* field = c.constant;
     const std::span<const std::uint32_t> slots = layout_.slots_of_set(c.set);
+    const std::span<const double> mass = layout_.part_of_set(std::span<const double>(mass_), c.set);
     for (std::size_t i = 0; i < slots.size(); ++i) {
-      const double sum = density_sums_.value(0, slots[i]);
+      // A fluid particle starts at the target density (eq. 24). A boundary particle gets the
+      // constant of a particle inside the liquid, whatever surrounds it now: a dry one (the
+      // capillary's walls above the level) would otherwise be made as dense as a wet one, and
+      // the liquid reaching it later would meet a wall at several kPa (README, "Walls").
+      const double sum =
+          c.set == fluid_set ? density_sums_.value(0, slots[i]) : mass[i] * lattice_kernel_sum_;
       // rho0, or the hydrostatic density below a free surface.
       double target = parameters_.helium.rest_density;
       const double surface = parameters_.initial.hydrostatic_surface;
@@ -196,7 +203,8 @@ void Model<D, Arith>::update_density() {
     if (!(rho > 0.0)) {
       layout_.record_fault(faults, s, "density", "density not positive");
     }
-    inputs_.pressure_over_density_squared[s] = he.pressure(rho) / (rho * rho); // eq. (12)
+    const double p = slot_is_fluid_[s] ? he.pressure(rho) : he.boundary_pressure(rho); // (12)
+    inputs_.pressure_over_density_squared[s] = p / (rho * rho);
     inputs_.inverse_density[s] = 1.0 / rho;
   };
   sum_pairs<Arith>(layout_,

@@ -123,6 +123,9 @@ private:
   std::vector<std::uint8_t> is_fluid_;
   std::vector<std::uint8_t> kind_; // CarrierKind per carrier (dissipation_terms.hpp)
   bool density_valid_ = false;
+  // sum_b w(x_a - x_b) over a full square lattice of spacing dr (b = a included): a unit-mass
+  // particle's kernel sum inside the liquid at the start.
+  double lattice_kernel_sum_ = 0.0;
   SlotLayout<D> layout_;
   static constexpr std::size_t fluid_set = 0;
   static constexpr std::size_t dummy_set = 1;

@@ -68,13 +68,15 @@ EnergyBudget Model<D, Arith>::energy() {
                       parameters_.gravity_reference_height);
   }
   for (std::size_t d = 0; d < dummy.size(); ++d) {
-    compressional += dummy_mass[d] * he.compressional_energy(density_sums_.value(0, dummy[d]));
+    compressional +=
+        dummy_mass[d] * he.boundary_compressional_energy(density_sums_.value(0, dummy[d]));
   }
   const std::span<const std::uint32_t> wall = layout_.slots_of_set(wall_set);
   const std::span<const double> wall_mass =
       layout_.part_of_set(std::span<const double>(mass_), wall_set);
   for (std::size_t w = 0; w < wall.size(); ++w) {
-    compressional += wall_mass[w] * he.compressional_energy(density_sums_.value(0, wall[w]));
+    compressional +=
+        wall_mass[w] * he.boundary_compressional_energy(density_sums_.value(0, wall[w]));
   }
   return EnergyBudget{{{"kinetic", kinetic},
                        {"counterflow", counterflow},
