@@ -49,6 +49,7 @@ D_CAPILLARY = 1.55e-3
 JET_HEIGHT = 33.7e-3
 MOUTH_HALF_WIDTH = 2.3e-3
 CELL = ((-8e-3, 8e-3), (3e-3, 16.7e-3))
+BELOW = ((-8e-3, 8e-3), (-10e-3, -3e-3))  # the bath under the cell, below the superleak
 T0, S0 = 1.65, 335.0
 RAMP = 0.02
 AVERAGE_FROM = 0.2
@@ -133,19 +134,22 @@ def read_snapshot(path):
     return data
 
 
-def in_cell(x):
-    (x0, x1), (y0, y1) = CELL
+def in_box(x, box):
+    (x0, x1), (y0, y1) = box
     return (x[:, 0] > x0) & (x[:, 0] < x1) & (x[:, 1] > y0) & (x[:, 1] < y1)
 
 
 def series(runs, name):
-    """Per snapshot: time, cell means of T, s, rho; per interval: crossed volume."""
+    """Per snapshot: time t, the cell's mean T, the mean T under the superleak (below), eq. (31)
+    (ideal); per interval: the volume crossed at the capillary's mouth (crossed)."""
     run = RUNS[name]
-    times, temperature, ideal, crossed = [], [], [], []
+    times, temperature, below, ideal, crossed = [], [], [], [], []
     previous = None
     for path in snapshot_files(runs, name):
         s = read_snapshot(path)
-        cell = in_cell(s["position"])
+        cell = in_box(s["position"], CELL)
+        under = in_box(s["position"], BELOW)
+        below.append(np.average(s["temperature"][under], weights=s["mass"][under]))
         weight = s["mass"][cell]
         mean = {k: np.average(s[k][cell], weights=weight)
                 for k in ("temperature", "mean_entropy", "density")}
@@ -164,18 +168,22 @@ def series(runs, name):
             volume = s["mass"] / s["density"]
             crossed.append(volume[up].sum() - volume[down].sum())
         previous = s
-    return np.array(times), np.array(temperature), np.array(ideal), np.array(crossed)
+    return {"t": np.array(times), "temperature": np.array(temperature),
+            "below": np.array(below), "ideal": np.array(ideal), "crossed": np.array(crossed)}
 
 
 def jet_summary(runs, name):
-    t, temperature, ideal, crossed = series(runs, name)
+    data = series(runs, name)
+    t, ideal, crossed = data["t"], data["ideal"], data["crossed"]
     late = t[:-1] >= AVERAGE_FROM - 1e-9  # intervals starting at or after 0.2 s
     span = t[1:][late][-1] - t[:-1][late][0]
     mean_jet = crossed[late].sum() / (span * D_CAPILLARY)
     # Eq. (31) averaged over the same intervals (trapezoid on the snapshots).
     mid_ideal = 0.5 * (ideal[:-1] + ideal[1:])
     mean_ideal = np.sum(mid_ideal[late] * np.diff(t)[late]) / span
-    return t, temperature, ideal, crossed, mean_jet, mean_ideal
+    # The temperature jump at the superleak, cell minus below, averaged over the same snapshots.
+    jump = np.mean((data["temperature"] - data["below"])[t >= AVERAGE_FROM - 1e-9])
+    return data, mean_jet, mean_ideal, jump
 
 
 def moving_jet(t, crossed, window):
@@ -210,13 +218,16 @@ def fig_jet(runs, out, report, available):
         if snapshot_time(snapshot_files(runs, name)[-1]) < AVERAGE_FROM + 0.02:
             report.append((f"{name}: not yet past t = {AVERAGE_FROM + 0.02} s", "skipped"))
             continue
-        t, temperature, ideal, crossed, mean_jet, mean_ideal = jet_summary(runs, name)
+        data, mean_jet, mean_ideal, jump = jet_summary(runs, name)
+        t, temperature, ideal, crossed = (data[k] for k in ("t", "temperature", "ideal",
+                                                              "crossed"))
         deficit = 100.0 * (1.0 - mean_jet / mean_ideal)
         rows.append((name, run["n"], run["power"], run["mu"], reynolds(run), mean_jet, mean_ideal,
-                     deficit, t[-1]))
+                     deficit, 1e3 * jump, t[-1]))
         report.append((f"{name}: mean jet speed over t > {AVERAGE_FROM} s (m/s)",
                        f"{mean_jet:.4f} against eq. (31) {mean_ideal:.4f}: {deficit:.2f} % below "
-                       f"(Re {reynolds(run):.0f}; paper at W = 60, 80: 1.95 %, 2.38 % below)"))
+                       f"(Re {reynolds(run):.0f}; paper at W = 60, 80: 1.95 %, 2.38 % below); "
+                       f"T jump at the superleak {1e3 * jump:.3f} mK"))
         speed = crossed / (np.diff(t) * D_CAPILLARY)
         for i in range(len(crossed)):
             for key, value in zip(jet_rows, (name, t[i], t[i + 1], speed[i],
@@ -236,7 +247,7 @@ def fig_jet(runs, out, report, available):
         ax.legend(fontsize=8)
     save_figure(fig, out / "superfluid_fountain_jet.png")
     columns = ("run", "N", "power_W_per_m", "viscosity", "Re", "mean_jet_speed",
-               "eq31_speed", "deficit_percent", "t_end")
+               "eq31_speed", "deficit_percent", "superleak_jump_mK", "t_end")
     with open(out / "superfluid_fountain.csv", "w") as f:
         f.write(",".join(columns) + "\n")
         for row in rows:
@@ -265,7 +276,9 @@ def fig_fields(runs, out, report, available):
         speed = np.linalg.norm(s["mean_velocity"], axis=1)
         scatter_field(axes[0, column], s, speed, "|v| (m/s)", "viridis", 0.0, 1.0)
         axes[0, column].set_title(f"{name}, t = {s['time']:.3f} s")
-        scatter_field(axes[1, column], s, s["pressure"], "p (Pa)", "coolwarm", -60.0, 100.0)
+        scatter_field(axes[1, column], s, s["pressure"], "p (Pa)", "coolwarm", -300.0, 300.0)
+        for ax in axes[:, column]:
+            ax.set_ylim(-12, 70)
     save_figure(fig, out / "superfluid_fountain_fields.png")
 
 
@@ -289,8 +302,11 @@ def fig_reynolds(runs, out, report, rows, available):
     for name in available:
         run = RUNS[name]
         if run["power"] == 80.0 and run["mu"] == 1e-4 and "t_end" not in run:
-            t, temperature, *_ = series(runs, name)
-            axes[0].plot(t, (temperature - T0) * 1e3, label=f"dr = d/{run['n']}")
+            data = series(runs, name)
+            line = axes[0].plot(data["t"], (data["temperature"] - T0) * 1e3,
+                                label=f"cell, dr = d/{run['n']}")[0]
+            axes[0].plot(data["t"], (data["below"] - T0) * 1e3, "--", color=line.get_color(),
+                         label=f"under the superleak, dr = d/{run['n']}")
     axes[0].set_xlabel("t (s)")
     axes[0].set_ylabel("cell T - T0 (mK)")
     axes[0].set_title("W = 80 W/m")
@@ -314,11 +330,19 @@ def fig_frames(runs, out, report, available):
         return
     files = snapshot_files(runs, name)
     times = np.array([snapshot_time(p) for p in files])
-    fig, axes = plt.subplots(2, 4, figsize=(18, 10))
-    for k, ax in enumerate(axes.flat):
-        s = read_snapshot(files[int(np.argmin(np.abs(times - 0.0375 * (k + 1))))])
-        scatter_field(ax, s, (s["temperature"] - T0) * 1e3, "T - T0 (mK)", "inferno", 0.0, None)
-        ax.set_title(f"t = {s['time'] * 1e3:.1f} ms")
+    wanted = [0.0375 * (k + 1) for k in range(8) if 0.0375 * (k + 1) <= times[-1] + 1e-9]
+    frames = [read_snapshot(files[int(np.argmin(np.abs(times - t)))]) for t in wanted]
+    if not frames:
+        return
+    top = max(np.max(s["temperature"]) for s in frames)
+    fig, axes = plt.subplots(2, 4, figsize=(18, 11))
+    for ax, s in zip(axes.flat, frames):
+        scatter_field(ax, s, (s["temperature"] - T0) * 1e3, "T - T0 (mK)", "inferno", 0.0,
+                      (top - T0) * 1e3, size=1.5)
+        ax.set_ylim(-12, 60)
+        ax.set_title(f"{name}, t = {s['time'] * 1e3:.1f} ms")
+    for ax in list(axes.flat)[len(frames):]:
+        ax.axis("off")
     save_figure(fig, out / "superfluid_fountain_frames.png")
 
 
