@@ -109,17 +109,28 @@ def write_report(path, report):
         print(f"{key}: {value}")
 
 
-def figure_parser(doc):
-    """The options every figure script shares (see its docstring)."""
+def figure_parser(doc, runs="out/shtc", out=REPO / "docs" / "figures" / "shtc", only=None):
+    """The options every figure script shares (see its docstring); with `only` (the script's
+    runs), --only NAME ... chooses some of them (chosen_runs)."""
     from docstring_cli import parser_from_docstring
 
     parser = parser_from_docstring(doc)
-    parser.add_argument("--runs", default="out/shtc")
-    parser.add_argument("--out", default=str(REPO / "docs" / "figures" / "shtc"))
+    parser.add_argument("--runs", default=runs)
+    parser.add_argument("--out", default=str(out))
     parser.add_argument("--make-runs", action="store_true")
     parser.add_argument("--revsph")
     parser.add_argument("--threads")
+    if only is not None:
+        parser.add_argument("--only", nargs="*", default=list(only))
     return parser
+
+
+def chosen_runs(parser, args, runs_table):
+    """The runs --only names, in the table's order; an unknown name is a usage error."""
+    unknown = [n for n in args.only if n not in runs_table]
+    if unknown:
+        parser.error(f"--only: unknown run {', '.join(unknown)} (known: {', '.join(runs_table)})")
+    return [n for n in runs_table if n in args.only]
 
 
 def figure_script_main(args, runs_table, makers, report_name):

@@ -32,7 +32,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from revsph_runs import REPO, figure_parser, figure_script_main, read_csv, save_figure, snapshots  # noqa: E402,E501
+from revsph_runs import REPO, chosen_runs, figure_parser, figure_script_main, read_csv, save_figure, snapshots  # noqa: E402,E501
 from shtc_fluids import shepard  # noqa: E402
 
 CASE = REPO / "models" / "superfluid" / "cases" / "superfluid-cavity-re100.toml"
@@ -103,14 +103,9 @@ def make_figures(runs, out, report, names):
 
 
 def main():
-    parser = figure_parser(__doc__)
-    parser.set_defaults(runs="out/superfluid", out=str(REPO / "docs" / "figures"))
-    parser.add_argument("--only", nargs="*", default=list(RUNS))
+    parser = figure_parser(__doc__, "out/superfluid", REPO / "docs" / "figures", RUNS)
     args = parser.parse_args()
-    unknown = [n for n in args.only if n not in RUNS]
-    if unknown:
-        parser.error(f"--only: unknown run {', '.join(unknown)} (known: {', '.join(RUNS)})")
-    names = [n for n in RUNS if n in args.only]
+    names = chosen_runs(parser, args, RUNS)
     return figure_script_main(
         args, {n: command(*RUNS[n]) for n in names},
         [(names, lambda runs, out, report: make_figures(runs, out, report, names))],

@@ -43,7 +43,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from revsph_runs import REPO, figure_parser, find_revsph, save_figure, write_report  # noqa: E402
+from revsph_runs import REPO, chosen_runs, figure_parser, find_revsph, save_figure, write_report  # noqa: E402
 
 D_CAPILLARY = 1.55e-3
 JET_HEIGHT = 33.7e-3
@@ -347,13 +347,11 @@ def fig_frames(runs, out, report, available):
 
 
 def main():
-    parser = figure_parser(__doc__)
-    parser.set_defaults(runs="out/superfluid", out=str(REPO / "docs" / "figures"))
-    parser.add_argument("--only", nargs="+", choices=sorted(RUNS))
+    parser = figure_parser(__doc__, "out/superfluid", REPO / "docs" / "figures", RUNS)
     args = parser.parse_args()
+    names = chosen_runs(parser, args, RUNS)
     runs, out = Path(args.runs), Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    names = args.only or list(RUNS)
     if args.make_runs:
         revsph = find_revsph(args.revsph)
         for name in names:

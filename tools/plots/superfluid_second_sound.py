@@ -41,7 +41,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from revsph_runs import REPO, figure_parser, figure_script_main, read_csv, save_figure  # noqa: E402
+from revsph_runs import REPO, chosen_runs, figure_parser, figure_script_main, read_csv, save_figure  # noqa: E402
 
 CASE = REPO / "models" / "superfluid" / "cases" / "second-sound-small.toml"
 L, S0, U2 = 0.01, 725.5, 18.83
@@ -143,14 +143,9 @@ def make_figures(runs, out, report, names):
 
 
 def main():
-    parser = figure_parser(__doc__)
-    parser.set_defaults(runs="out/superfluid", out=str(REPO / "docs" / "figures"))
-    parser.add_argument("--only", nargs="*", default=list(RUNS))
+    parser = figure_parser(__doc__, "out/superfluid", REPO / "docs" / "figures", RUNS)
     args = parser.parse_args()
-    unknown = [n for n in args.only if n not in RUNS]
-    if unknown:
-        parser.error(f"--only: unknown run {', '.join(unknown)} (known: {', '.join(RUNS)})")
-    names = [n for n in RUNS if n in args.only]
+    names = chosen_runs(parser, args, RUNS)
     table = {n: command(*RUNS[n]) for n in names}
     return figure_script_main(
         args, table,

@@ -1,0 +1,117 @@
+#!/usr/bin/python3
+"""The fountain's jet measurement (tools/plots/superfluid_fountain.py) on snapshots written here,
+whose answers are known:
+
+- a column of particles, as wide as the capillary, rising through y = 33.7 mm at 0.5 m/s gives a
+  jet speed of 0.5 m/s; fluid falling back through the mouth counts against it, fluid crossing
+  outside the mouth not at all;
+- eq. (31) from the cell's mean T, s and rho, with the heater's ramp;
+- a run in two segments (the second restarted from the first's last snapshot, which it writes
+  again) reads as one.
+
+Usage: superfluid_fountain_test.py REVSPH_BINARY [unittest options]   (the binary is not used)
+"""
+
+import os
+import sys
+import unittest
+from pathlib import Path
+
+import h5py
+import numpy as np
+
+from revsph_testing import run_unittests
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools",
+                                "plots"))
+
+import superfluid_fountain as fountain  # noqa: E402
+
+REVSPH = None
+WORK = None
+SPACING = fountain.D_CAPILLARY / 8  # the column: 8 particles across the capillary
+RISE = 0.5                          # m/s
+FALL = -0.2                         # m/s, a blob falling back into the mouth
+
+
+CELL_T, CELL_S, CELL_RHO = 1.66, 340.0, 145.0
+BELOW_T = 1.6585                    # under the superleak: the jump is 1.5 mK
+ROWS = 700                          # rows of the column: it crosses the mouth for 0.26 s
+
+
+def particles(time):
+    """Positions at `time`: a column as wide as the capillary rising through the mouth, a blob
+    falling back into it, a column rising outside it, and blocks in the cell and under the
+    superleak; the same particles in the same order at every time, as in revsph's snapshots."""
+    d = fountain.D_CAPILLARY
+    xs = -d / 2 + SPACING * (np.arange(8) + 0.5)
+    column = [(x, fountain.JET_HEIGHT - (k + 0.5) * SPACING + RISE * time)
+              for k in range(ROWS) for x in xs]
+    falling = [(x, 0.040 + k * SPACING + FALL * time) for k in range(20) for x in xs[2:6]]
+    outside = [(0.010, 0.030 + k * SPACING + RISE * time) for k in range(50)]
+    cell = [(x, y) for x in np.linspace(-0.007, 0.007, 10) for y in np.linspace(0.004, 0.016, 10)]
+    below = [(x, y) for x in np.linspace(0.003, 0.007, 5) for y in np.linspace(-0.009, -0.004, 5)]
+    return np.array(column + falling + outside + cell + below)
+
+
+def write_snapshot(directory, step, time):
+    position = particles(time)
+    n = len(position)
+    (directory / "snapshots").mkdir(parents=True, exist_ok=True)
+    with h5py.File(directory / "snapshots" / f"step_{step:09d}.h5", "w") as f:
+        f.attrs["time"] = time
+        fluid = f.create_group("particles/fluid")
+        fluid["position"] = position
+        fluid["mass"] = np.full(n, CELL_RHO * SPACING**2)
+        fluid["density"] = np.full(n, CELL_RHO)
+        fluid["temperature"] = np.where(fountain.in_box(position, fountain.BELOW), BELOW_T, CELL_T)
+        fluid["mean_entropy"] = np.full(n, CELL_S)
+        fluid["pressure"] = np.zeros(n)
+        fluid["mean_velocity"] = np.zeros((n, 2))
+        for kind in ("dummy", "wall"):
+            f.create_group(f"particles/{kind}")["position"] = np.zeros((1, 2))
+
+
+class FountainJet(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.runs = Path(WORK)
+        name = "fountain-n4-w80"
+        # 0.23 s in two segments, snapshots every 10 ms; the second repeats the first's last.
+        for step in range(0, 13):
+            write_snapshot(cls.runs / name, step, 0.01 * step)
+        for step in range(12, 24):
+            write_snapshot(cls.runs / f"{name}-2", step, 0.01 * step)
+        cls.data = fountain.series(cls.runs, name)
+        cls.summary = fountain.jet_summary(cls.runs, name)
+
+    def test_segments_read_as_one_run(self):
+        self.assertEqual(len(self.data["t"]), 24)
+        self.assertTrue(np.all(np.diff(self.data["t"]) > 0))
+
+    def test_rising_column_is_the_jet_speed_less_what_falls_back(self):
+        speed = self.data["crossed"] / (np.diff(self.data["t"]) * fountain.D_CAPILLARY)
+        # Only whole particles cross: one row of 8 more or less per 10 ms interval.
+        row = 8 * SPACING**2 / (0.01 * fountain.D_CAPILLARY)
+        # The blob falls through the mouth (33.7 mm) between 32 and 50 ms, 4 columns of 8 at
+        # 0.2 m/s: 0.1 m/s off the jet in the intervals from 30 to 50 ms.
+        np.testing.assert_allclose(speed[3:5], RISE - 0.1, atol=row)
+        others = np.r_[speed[:3], speed[6:]]
+        np.testing.assert_allclose(others, RISE, atol=row)
+        _, mean_jet, _, _ = self.summary
+        self.assertAlmostEqual(mean_jet, RISE, delta=row / 2)
+
+    def test_temperature_jump_at_the_superleak(self):
+        _, _, _, jump = self.summary
+        self.assertAlmostEqual(jump, CELL_T - BELOW_T, places=12)
+
+    def test_eq31_uses_the_cell_and_the_heaters_ramp(self):
+        data, _, mean_ideal, _ = self.summary
+        full = 80.0 / (CELL_T * CELL_S * CELL_RHO * fountain.D_CAPILLARY)
+        self.assertAlmostEqual(data["ideal"][-1], full, places=10)
+        self.assertAlmostEqual(data["ideal"][1], 0.5 * full, places=10)  # t = 10 ms of 20
+        self.assertAlmostEqual(mean_ideal, full, places=10)
+
+
+if __name__ == "__main__":
+    run_unittests(globals(), "revsph-fountain-test-")
