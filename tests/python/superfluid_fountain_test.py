@@ -35,7 +35,8 @@ FALL = -0.2                         # m/s, a blob falling back into the mouth
 
 
 CELL_T, CELL_S, CELL_RHO = 1.66, 340.0, 145.0
-BELOW_T = 1.6585                    # under the superleak: the jump is 1.5 mK
+BELOW_T = 1.6585                    # under the superleak: the jump is 1.5 mK at t = 0
+WARMING = 0.01                      # K/s, the cell's (not the bath's) temperature rise
 ROWS = 700                          # rows of the column: it crosses the mouth for 0.26 s
 
 
@@ -64,7 +65,8 @@ def write_snapshot(directory, step, time):
         fluid["position"] = position
         fluid["mass"] = np.full(n, CELL_RHO * SPACING**2)
         fluid["density"] = np.full(n, CELL_RHO)
-        fluid["temperature"] = np.where(fountain.in_box(position, fountain.BELOW), BELOW_T, CELL_T)
+        fluid["temperature"] = np.where(fountain.in_box(position, fountain.BELOW), BELOW_T,
+                                        CELL_T + WARMING * time)
         fluid["mean_entropy"] = np.full(n, CELL_S)
         fluid["pressure"] = np.zeros(n)
         fluid["mean_velocity"] = np.zeros((n, 2))
@@ -98,19 +100,37 @@ class FountainJet(unittest.TestCase):
         np.testing.assert_allclose(speed[3:5], RISE - 0.1, atol=row)
         others = np.r_[speed[:3], speed[6:]]
         np.testing.assert_allclose(others, RISE, atol=row)
-        _, mean_jet, _, _ = self.summary
+        _, mean_jet, _, _, _ = self.summary
         self.assertAlmostEqual(mean_jet, RISE, delta=row / 2)
 
     def test_temperature_jump_at_the_superleak(self):
-        _, _, _, jump = self.summary
-        self.assertAlmostEqual(jump, CELL_T - BELOW_T, places=12)
+        _, _, _, jump, stored = self.summary
+        late = [t for t in 0.01 * np.arange(24) if t >= fountain.AVERAGE_FROM - 1e-9]
+        self.assertAlmostEqual(jump, CELL_T - BELOW_T + WARMING * np.mean(late), places=12)
+
+    def test_heat_kept_by_the_cell(self):
+        _, _, _, _, stored = self.summary
+        late = [t for t in 0.01 * np.arange(24) if t >= fountain.AVERAGE_FROM - 1e-9]
+        # The particles in the cell (|x| < 8 mm, 3 < y < 16.7 mm) and the capillary (|x| < 1.2
+        # mm, up to its top), counted here from the positions.
+        counts = []
+        for t in late:
+            x, y = particles(t).T
+            cell = (np.abs(x) < 8e-3) & (y > 3e-3) & (y < 16.7e-3)
+            capillary = (np.abs(x) < 1.2e-3) & (y > 16.7e-3) & (y < 33.7e-3)
+            counts.append(np.sum(cell | capillary))
+        mass = CELL_RHO * SPACING**2 * np.mean(counts)
+        self.assertAlmostEqual(stored, mass * fountain.HEAT_CAPACITY * WARMING / 80.0, places=10)
 
     def test_eq31_uses_the_cell_and_the_heaters_ramp(self):
-        data, _, mean_ideal, _ = self.summary
-        full = 80.0 / (CELL_T * CELL_S * CELL_RHO * fountain.D_CAPILLARY)
-        self.assertAlmostEqual(data["ideal"][-1], full, places=10)
-        self.assertAlmostEqual(data["ideal"][1], 0.5 * full, places=10)  # t = 10 ms of 20
-        self.assertAlmostEqual(mean_ideal, full, places=10)
+        data, _, mean_ideal, _, _ = self.summary
+        t = 0.01 * np.arange(24)
+        power = 80.0 * np.minimum(t / 0.02, 1.0)
+        ideal = power / ((CELL_T + WARMING * t) * CELL_S * CELL_RHO * fountain.D_CAPILLARY)
+        np.testing.assert_allclose(data["ideal"], ideal, rtol=1e-12)
+        # Its mean over t > 0.2 s: the trapezoid rule on the snapshots 0.20, 0.21, 0.22, 0.23.
+        late = ideal[20:]
+        self.assertAlmostEqual(mean_ideal, np.mean(0.5 * (late[:-1] + late[1:])), places=12)
 
 
 if __name__ == "__main__":

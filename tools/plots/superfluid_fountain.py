@@ -50,6 +50,8 @@ JET_HEIGHT = 33.7e-3
 MOUTH_HALF_WIDTH = 2.3e-3
 CELL = ((-8e-3, 8e-3), (3e-3, 16.7e-3))
 BELOW = ((-8e-3, 8e-3), (-10e-3, -3e-3))  # the bath under the cell, below the superleak
+CAPILLARY = ((-1.2e-3, 1.2e-3), (16.7e-3, JET_HEIGHT))
+HEAT_CAPACITY = 1861.0  # C of Table I (J/(kg K)): ds = C dT / T
 T0, S0 = 1.65, 335.0
 RAMP = 0.02
 AVERAGE_FROM = 0.2
@@ -143,7 +145,7 @@ def series(runs, name):
     """Per snapshot: time t, the cell's mean T, the mean T under the superleak (below), eq. (31)
     (ideal); per interval: the volume crossed at the capillary's mouth (crossed)."""
     run = RUNS[name]
-    times, temperature, below, ideal, crossed = [], [], [], [], []
+    times, temperature, below, ideal, crossed, cell_mass = [], [], [], [], [], []
     previous = None
     for path in snapshot_files(runs, name):
         s = read_snapshot(path)
@@ -151,6 +153,7 @@ def series(runs, name):
         under = in_box(s["position"], BELOW)
         below.append(np.average(s["temperature"][under], weights=s["mass"][under]))
         weight = s["mass"][cell]
+        cell_mass.append(weight.sum() + s["mass"][in_box(s["position"], CAPILLARY)].sum())
         mean = {k: np.average(s[k][cell], weights=weight)
                 for k in ("temperature", "mean_entropy", "density")}
         power = run["power"] * min(s["time"] / RAMP, 1.0)
@@ -169,7 +172,8 @@ def series(runs, name):
             crossed.append(volume[up].sum() - volume[down].sum())
         previous = s
     return {"t": np.array(times), "temperature": np.array(temperature),
-            "below": np.array(below), "ideal": np.array(ideal), "crossed": np.array(crossed)}
+            "below": np.array(below), "ideal": np.array(ideal), "crossed": np.array(crossed),
+            "cell_mass": np.array(cell_mass)}
 
 
 def jet_summary(runs, name):
@@ -182,8 +186,14 @@ def jet_summary(runs, name):
     mid_ideal = 0.5 * (ideal[:-1] + ideal[1:])
     mean_ideal = np.sum(mid_ideal[late] * np.diff(t)[late]) / span
     # The temperature jump at the superleak, cell minus below, averaged over the same snapshots.
-    jump = np.mean((data["temperature"] - data["below"])[t >= AVERAGE_FROM - 1e-9])
-    return data, mean_jet, mean_ideal, jump
+    after = t >= AVERAGE_FROM - 1e-9
+    jump = np.mean((data["temperature"] - data["below"])[after])
+    # The heat the cell keeps: its mass (with the capillary's) times C dT/dt, dT/dt the
+    # least-squares slope of its mean T over the same snapshots, as a fraction of the power:
+    # what eq. (31), a steady state, leaves out.
+    slope = np.polyfit(t[after], data["temperature"][after], 1)[0]
+    stored = np.mean(data["cell_mass"][after]) * HEAT_CAPACITY * slope / RUNS[name]["power"]
+    return data, mean_jet, mean_ideal, jump, stored
 
 
 def moving_jet(t, crossed, window):
@@ -218,16 +228,17 @@ def fig_jet(runs, out, report, available):
         if snapshot_time(snapshot_files(runs, name)[-1]) < AVERAGE_FROM + 0.02:
             report.append((f"{name}: not yet past t = {AVERAGE_FROM + 0.02} s", "skipped"))
             continue
-        data, mean_jet, mean_ideal, jump = jet_summary(runs, name)
+        data, mean_jet, mean_ideal, jump, stored = jet_summary(runs, name)
         t, temperature, ideal, crossed = (data[k] for k in ("t", "temperature", "ideal",
                                                               "crossed"))
         deficit = 100.0 * (1.0 - mean_jet / mean_ideal)
         rows.append((name, run["n"], run["power"], run["mu"], reynolds(run), mean_jet, mean_ideal,
-                     deficit, 1e3 * jump, t[-1]))
+                     deficit, 1e3 * jump, 100.0 * stored, t[-1]))
         report.append((f"{name}: mean jet speed over t > {AVERAGE_FROM} s (m/s)",
                        f"{mean_jet:.4f} against eq. (31) {mean_ideal:.4f}: {deficit:.2f} % below "
                        f"(Re {reynolds(run):.0f}; paper at W = 60, 80: 1.95 %, 2.38 % below); "
-                       f"T jump at the superleak {1e3 * jump:.3f} mK"))
+                       f"T jump at the superleak {1e3 * jump:.3f} mK; the cell keeps "
+                       f"{100.0 * stored:.1f} % of the power"))
         speed = crossed / (np.diff(t) * D_CAPILLARY)
         for i in range(len(crossed)):
             for key, value in zip(jet_rows, (name, t[i], t[i + 1], speed[i],
@@ -247,7 +258,8 @@ def fig_jet(runs, out, report, available):
         ax.legend(fontsize=8)
     save_figure(fig, out / "superfluid_fountain_jet.png")
     columns = ("run", "N", "power_W_per_m", "viscosity", "Re", "mean_jet_speed",
-               "eq31_speed", "deficit_percent", "superleak_jump_mK", "t_end")
+               "eq31_speed", "deficit_percent", "superleak_jump_mK", "stored_percent",
+               "t_end")
     with open(out / "superfluid_fountain.csv", "w") as f:
         f.write(",".join(columns) + "\n")
         for row in rows:
