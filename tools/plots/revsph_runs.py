@@ -23,10 +23,16 @@ def find_revsph(given):
     sys.exit("no revsph binary: build it or pass --revsph")
 
 
+def run_exists(run):
+    """A finished run (summary.json) or one a session's end cut short (snapshots, continued by
+    segments NAME-2, ... with `revsph run --from`): either is read, neither is made again."""
+    return (run / "summary.json").is_file() or any((run / "snapshots").glob("step_*.h5"))
+
+
 def make_missing_runs(runs, commands, revsph, threads=None):
-    """Runs `revsph ARGS --out RUNS/NAME --force` for each NAME whose summary.json is missing."""
+    """Runs `revsph ARGS --out RUNS/NAME --force` for each NAME that does not exist yet."""
     for name, arguments in commands.items():
-        if (runs / name / "summary.json").is_file():
+        if run_exists(runs / name):
             continue
         command = [str(revsph), *arguments, "--out", str(runs / name), "--force"]
         if threads:
@@ -36,7 +42,7 @@ def make_missing_runs(runs, commands, revsph, threads=None):
 
 
 def missing_runs(runs, names):
-    return [n for n in names if not (runs / n / "summary.json").is_file()]
+    return [n for n in names if not run_exists(runs / n)]
 
 
 def save_figure(fig, path, dpi=110):
