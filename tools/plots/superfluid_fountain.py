@@ -51,6 +51,7 @@ MOUTH_HALF_WIDTH = 2.3e-3
 CELL = ((-8e-3, 8e-3), (3e-3, 16.7e-3))
 BELOW = ((-8e-3, 8e-3), (-10e-3, -3e-3))  # the bath under the cell, below the superleak
 CAPILLARY = ((-1.2e-3, 1.2e-3), (16.7e-3, JET_HEIGHT))
+MOUTH = ((-1.2e-3, 1.2e-3), (JET_HEIGHT - 3e-3, JET_HEIGHT))  # the capillary's last 3 mm
 HEAT_CAPACITY = 1861.0  # C of Table I (J/(kg K)): ds = C dT / T
 T0, S0 = 1.65, 335.0
 RAMP = 0.02
@@ -129,7 +130,7 @@ def read_snapshot(path):
         fluid = f["particles/fluid"]
         data = {key: fluid[key][...] for key in
                 ("position", "mass", "density", "temperature", "mean_entropy", "pressure",
-                 "mean_velocity")}
+                 "mean_velocity", "normal_velocity")}
         data["time"] = float(f.attrs["time"])
         data["solid"] = np.concatenate([f[f"particles/{kind}/position"][...]
                                         for kind in ("dummy", "wall")])
@@ -146,6 +147,7 @@ def series(runs, name):
     (ideal); per interval: the volume crossed at the capillary's mouth (crossed)."""
     run = RUNS[name]
     times, temperature, below, ideal, crossed, cell_mass = [], [], [], [], [], []
+    mouth_v, mouth_vn = [], []
     previous = None
     for path in snapshot_files(runs, name):
         s = read_snapshot(path)
@@ -154,6 +156,9 @@ def series(runs, name):
         below.append(np.average(s["temperature"][under], weights=s["mass"][under]))
         weight = s["mass"][cell]
         cell_mass.append(weight.sum() + s["mass"][in_box(s["position"], CAPILLARY)].sum())
+        mouth = in_box(s["position"], MOUTH)
+        mouth_v.append(np.sum(s["mean_velocity"][mouth, 1]))
+        mouth_vn.append(np.sum(s["normal_velocity"][mouth, 1]))
         mean = {k: np.average(s[k][cell], weights=weight)
                 for k in ("temperature", "mean_entropy", "density")}
         power = run["power"] * min(s["time"] / RAMP, 1.0)
@@ -173,7 +178,8 @@ def series(runs, name):
         previous = s
     return {"t": np.array(times), "temperature": np.array(temperature),
             "below": np.array(below), "ideal": np.array(ideal), "crossed": np.array(crossed),
-            "cell_mass": np.array(cell_mass)}
+            "cell_mass": np.array(cell_mass), "mouth_v": np.array(mouth_v),
+            "mouth_vn": np.array(mouth_vn)}
 
 
 def jet_summary(runs, name):
@@ -193,7 +199,10 @@ def jet_summary(runs, name):
     # what eq. (31), a steady state, leaves out.
     slope = np.polyfit(t[after], data["temperature"][after], 1)[0]
     stored = np.mean(data["cell_mass"][after]) * HEAT_CAPACITY * slope / RUNS[name]["power"]
-    return data, mean_jet, mean_ideal, jump, stored
+    # The entropy leaves with the normal fluid (flux rho s v_n): v_n / v in the capillary's last
+    # 3 mm above 1 is a counterflow that carries heat out with less mass.
+    counterflow = np.sum(data["mouth_vn"][after]) / np.sum(data["mouth_v"][after])
+    return data, mean_jet, mean_ideal, jump, stored, counterflow
 
 
 def moving_jet(t, crossed, window):
@@ -228,17 +237,21 @@ def fig_jet(runs, out, report, available):
         if snapshot_time(snapshot_files(runs, name)[-1]) < AVERAGE_FROM + 0.02:
             report.append((f"{name}: not yet past t = {AVERAGE_FROM + 0.02} s", "skipped"))
             continue
-        data, mean_jet, mean_ideal, jump, stored = jet_summary(runs, name)
+        data, mean_jet, mean_ideal, jump, stored, counterflow = jet_summary(runs, name)
+        # The heat balance of the cell, eq. (32) with what it keeps: W = (heat up the jet,
+        # carried at v_n) + (kept) + (the rest: through the superleak and the walls).
+        rest = 1.0 - stored - mean_jet * counterflow / mean_ideal
         t, temperature, ideal, crossed = (data[k] for k in ("t", "temperature", "ideal",
                                                               "crossed"))
         deficit = 100.0 * (1.0 - mean_jet / mean_ideal)
         rows.append((name, run["n"], run["power"], run["mu"], reynolds(run), mean_jet, mean_ideal,
-                     deficit, 1e3 * jump, 100.0 * stored, t[-1]))
+                     deficit, 1e3 * jump, 100.0 * stored, counterflow, 100.0 * rest, t[-1]))
         report.append((f"{name}: mean jet speed over t > {AVERAGE_FROM} s (m/s)",
                        f"{mean_jet:.4f} against eq. (31) {mean_ideal:.4f}: {deficit:.2f} % below "
                        f"(Re {reynolds(run):.0f}; paper at W = 60, 80: 1.95 %, 2.38 % below); "
                        f"T jump at the superleak {1e3 * jump:.3f} mK; the cell keeps "
-                       f"{100.0 * stored:.1f} % of the power"))
+                       f"{100.0 * stored:.1f} % of the power; v_n / v at the mouth "
+                       f"{counterflow:.3f}; the rest (superleak, walls) {100.0 * rest:.1f} %"))
         speed = crossed / (np.diff(t) * D_CAPILLARY)
         for i in range(len(crossed)):
             for key, value in zip(jet_rows, (name, t[i], t[i + 1], speed[i],
@@ -259,7 +272,7 @@ def fig_jet(runs, out, report, available):
     save_figure(fig, out / "superfluid_fountain_jet.png")
     columns = ("run", "N", "power_W_per_m", "viscosity", "Re", "mean_jet_speed",
                "eq31_speed", "deficit_percent", "superleak_jump_mK", "stored_percent",
-               "t_end")
+               "mouth_vn_over_v", "rest_percent", "t_end")
     with open(out / "superfluid_fountain.csv", "w") as f:
         f.write(",".join(columns) + "\n")
         for row in rows:
