@@ -53,6 +53,8 @@ BELOW = ((-8e-3, 8e-3), (-10e-3, -3e-3))  # the bath under the cell, below the s
 CAPILLARY = ((-1.2e-3, 1.2e-3), (16.7e-3, JET_HEIGHT))
 MOUTH = ((-1.2e-3, 1.2e-3), (JET_HEIGHT - 3e-3, JET_HEIGHT))  # the capillary's last 3 mm
 HEAT_CAPACITY = 1861.0  # C of Table I (J/(kg K)): ds = C dT / T
+CHI_N0, CHI_SLOPE = 0.1934, 5.851e-4  # chi_n = chi_n0 + chi' (s - s0), eq. (8), Table I
+SUPERLEAK_PLANE = 1e-3                # the superleak's mid-plane (y)
 T0, S0 = 1.65, 335.0
 RAMP = 0.02
 AVERAGE_FROM = 0.2
@@ -130,7 +132,7 @@ def read_snapshot(path):
         fluid = f["particles/fluid"]
         data = {key: fluid[key][...] for key in
                 ("position", "mass", "density", "temperature", "mean_entropy", "pressure",
-                 "mean_velocity", "normal_velocity")}
+                 "mean_velocity", "normal_velocity", "mean_superflow_velocity")}
         data["time"] = float(f.attrs["time"])
         data["solid"] = np.concatenate([f[f"particles/{kind}/position"][...]
                                         for kind in ("dummy", "wall")])
@@ -180,6 +182,49 @@ def series(runs, name):
             "below": np.array(below), "ideal": np.array(ideal), "crossed": np.array(crossed),
             "cell_mass": np.array(cell_mass), "mouth_v": np.array(mouth_v),
             "mouth_vn": np.array(mouth_vn)}
+
+
+def pair_entropy_flux(s, plane, support):
+    """The entropy per second the reversible pair term of eq. (19) carries up through y = plane
+    (|x| < 8.5 mm) at a snapshot: -sum m_a m_b (w'/r) (J_a + J_b) . x_ab over the pairs with a
+    above and b below, J = s (chi_s / chi_n) (v - v_s) / rho, the model's Wendland kernel."""
+    x = s["position"]
+    near = np.where((np.abs(x[:, 0]) < 8.5e-3) & (np.abs(x[:, 1] - plane) < support))[0]
+    above = near[x[near, 1] >= plane]
+    below = near[x[near, 1] < plane]
+    chi_n = CHI_N0 + CHI_SLOPE * (s["mean_entropy"] - S0)
+    flux = (s["mean_entropy"] * (1.0 - chi_n) / (chi_n * s["density"]))[:, None] * (
+        s["mean_velocity"] - s["mean_superflow_velocity"])
+    x_ab = x[above][:, None, :] - x[below][None, :, :]
+    q = np.minimum(np.linalg.norm(x_ab, axis=2) / support, 1.0)
+    # w = 7 / (pi H^2) (1 - q)^4 (1 + 4 q), H the support: w'/r = -140 (1 - q)^3 / (pi H^4).
+    slope = -140.0 * (1.0 - q) ** 3 / (np.pi * support**4)
+    j_sum = flux[above][:, None, :] + flux[below][None, :, :]
+    m_ab = s["mass"][above][:, None] * s["mass"][below][None, :]
+    return -np.sum(m_ab * slope * np.sum(j_sum * x_ab, axis=2))
+
+
+def superleak_balance(runs, name):
+    """The entropy through the superleak's mid-plane over t > 0.2 s, per second: by the pair term
+    (mean over the snapshots) and by the particles crossing it (between snapshots)."""
+    support = 5.6 * D_CAPILLARY / RUNS[name]["n"]
+    pair, carried, duration = [], 0.0, 0.0
+    previous = None
+    for path in snapshot_files(runs, name):
+        if snapshot_time(path) < AVERAGE_FROM - 1e-9:
+            continue
+        s = read_snapshot(path)
+        pair.append(pair_entropy_flux(s, SUPERLEAK_PLANE, support))
+        if previous is not None:
+            y0, y1 = previous["position"][:, 1], s["position"][:, 1]
+            inside = np.abs(s["position"][:, 0]) < 8.5e-3
+            up = (y0 < SUPERLEAK_PLANE) & (y1 >= SUPERLEAK_PLANE) & inside
+            down = (y0 >= SUPERLEAK_PLANE) & (y1 < SUPERLEAK_PLANE) & inside
+            ms = s["mass"] * s["mean_entropy"]
+            carried += ms[up].sum() - ms[down].sum()
+            duration += s["time"] - previous["time"]
+        previous = s
+    return np.mean(pair), carried / duration
 
 
 def jet_summary(runs, name):
@@ -243,6 +288,8 @@ def fig_jet(runs, out, report, available):
         rest = 1.0 - stored - mean_jet * counterflow / mean_ideal
         t, temperature, ideal, crossed = (data[k] for k in ("t", "temperature", "ideal",
                                                               "crossed"))
+        pair, carried = superleak_balance(runs, name)
+        entropy_input = run["power"] / np.mean(temperature[t >= AVERAGE_FROM - 1e-9])
         deficit = 100.0 * (1.0 - mean_jet / mean_ideal)
         rows.append((name, run["n"], run["power"], run["mu"], reynolds(run), mean_jet, mean_ideal,
                      deficit, 1e3 * jump, 100.0 * stored, counterflow, 100.0 * rest, t[-1]))
@@ -252,6 +299,9 @@ def fig_jet(runs, out, report, available):
                        f"T jump at the superleak {1e3 * jump:.3f} mK; the cell keeps "
                        f"{100.0 * stored:.1f} % of the power; v_n / v at the mouth "
                        f"{counterflow:.3f}; the rest (superleak, walls) {100.0 * rest:.1f} %"))
+        report.append((f"{name}: entropy up through the superleak's mid-plane, J/(K m s)",
+                       f"pair term {pair:.2f}, particles {carried:.2f}, net {pair + carried:.2f} "
+                       f"({100.0 * (pair + carried) / entropy_input:.1f} % of W / T)"))
         speed = crossed / (np.diff(t) * D_CAPILLARY)
         for i in range(len(crossed)):
             for key, value in zip(jet_rows, (name, t[i], t[i + 1], speed[i],
