@@ -74,6 +74,7 @@ def write_snapshot(directory, step, time):
         velocity[: 8 * ROWS, 1] = RISE
         fluid["mean_velocity"] = velocity
         fluid["normal_velocity"] = 1.1 * velocity
+        fluid["mean_superflow_velocity"] = velocity
         for kind in ("dummy", "wall"):
             f.create_group(f"particles/{kind}")["position"] = np.zeros((1, 2))
 
