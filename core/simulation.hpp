@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -80,6 +81,17 @@ concept HasTimedDiagnostics = requires(M& model, double time) {
   { model.diagnostics(time) } -> std::same_as<std::vector<EnergyTerm>>;
 };
 
+// Optional: energy the model exchanged with the outside since the run began (a heater's input,
+// heat through a cooler's walls), kept outside the particles' state. A snapshot carries these
+// accounts so that a run continued from it (`revsph run --from`) keeps its energy budget; the
+// restore throws std::invalid_argument on a name the model does not keep.
+template <class M>
+concept HasEnergyAccounts = requires(M& model, const M& const_model,
+                                     const std::vector<EnergyTerm>& accounts) {
+  { const_model.energy_accounts() } -> std::same_as<std::vector<EnergyTerm>>;
+  model.restore_energy_accounts(accounts);
+};
+
 // Optional: operations after each full step, outside the palindrome (core/step_composition.hpp).
 template <class M>
 concept HasStepHooks = requires {
@@ -111,6 +123,9 @@ public:
   virtual void derived_views(const ViewSink& sink) = 0;
   // Empty unless the model reports diagnostics.
   virtual std::vector<EnergyTerm> diagnostics() = 0;
+  // Empty unless the model keeps energy accounts (HasEnergyAccounts).
+  virtual std::vector<EnergyTerm> energy_accounts() const = 0;
+  virtual void restore_energy_accounts(const std::vector<EnergyTerm>& accounts) = 0;
 
   // Single sub-steps, to check each one's reversibility on its own.
   virtual std::vector<std::string> substep_names() const = 0;
@@ -172,6 +187,22 @@ public:
       return attributing_faults([&] { return model_.diagnostics(); });
     } else {
       return {};
+    }
+  }
+
+  std::vector<EnergyTerm> energy_accounts() const override {
+    if constexpr (HasEnergyAccounts<M>) {
+      return model_.energy_accounts();
+    } else {
+      return {};
+    }
+  }
+  void restore_energy_accounts(const std::vector<EnergyTerm>& accounts) override {
+    if constexpr (HasEnergyAccounts<M>) {
+      model_.restore_energy_accounts(accounts);
+    } else if (!accounts.empty()) {
+      throw std::invalid_argument("energy account '" + accounts.front().name +
+                                  "' given, but model " + info_.model + " keeps none");
     }
   }
 

@@ -135,6 +135,14 @@ void write_metadata(hid_t file, const SnapshotMetadata& m, const StateSnapshot& 
   if (m.reference_energy) {
     write_double_attribute(file, "reference_energy", *m.reference_energy);
   }
+  if (!m.energy_accounts.empty()) {
+    std::vector<std::string> names;
+    for (const EnergyTerm& account : m.energy_accounts) {
+      names.push_back(account.name);
+      write_double_attribute(file, "energy_account:" + account.name, account.value);
+    }
+    write_strings_attribute(file, "energy_accounts", names);
+  }
   write_string_attribute(file, "state_hash", m.state_hash);
   if (!m.derived_fields_error.empty()) {
     write_string_attribute(file, "derived_fields_error", m.derived_fields_error);
@@ -169,6 +177,11 @@ SnapshotMetadata read_metadata(hid_t file) {
   m.dt = read_double_attribute(file, "dt");
   if (has_attribute(file, "reference_energy")) {
     m.reference_energy = read_double_attribute(file, "reference_energy");
+  }
+  if (has_attribute(file, "energy_accounts")) {
+    for (const std::string& name : read_strings_attribute(file, "energy_accounts")) {
+      m.energy_accounts.push_back({name, read_double_attribute(file, "energy_account:" + name)});
+    }
   }
   m.state_hash = read_string_attribute(file, "state_hash");
   if (has_attribute(file, "derived_fields_error")) {

@@ -5,7 +5,8 @@
 //   /                        attributes: format, format_version, model, dimension, arithmetic,
 //                            case_name, case_source, case_text, overrides, step, time, dt,
 //                            reference_energy (if known), state_hash, field_order, code_version,
-//                            git_commit, build_type, build_flags
+//                            git_commit, build_type, build_flags; energy_accounts (names) and
+//                            energy_account:NAME (values) if the model keeps energy accounts
 //   /state/SET/VARIABLE      int64 (particles, components) or (particles,): the raw integers
 //                            (IEEE bit patterns for float state); attributes unit, parity,
 //                            components, scale_exponent, evolved, raw_kind
@@ -16,6 +17,7 @@
 // The layout follows each model's state declaration; nothing in here is written per model.
 
 #include "core/arithmetic.hpp"
+#include "core/energy.hpp"
 #include "core/particle_view.hpp"
 #include "core/state_snapshot.hpp"
 #include "core/xdmf.hpp"
@@ -52,6 +54,9 @@ struct SnapshotMetadata {
   // Total energy at the first step of the run this state descends from (through restarts), so
   // that a restarted run reports its energy error against the original E(0).
   std::optional<double> reference_energy;
+  // Energy exchanged with the outside so far (a heater's input, say; HasEnergyAccounts in
+  // core/simulation.hpp), which the energy budget of a restarted run goes on from.
+  std::vector<EnergyTerm> energy_accounts;
   std::string state_hash;
   // Why the derived fields (density, forces, …) are missing, if they could not be computed for
   // this state (a restored state whose forces are not finite); empty normally.

@@ -53,6 +53,10 @@ public:
   // particles of (s - s_exact) / (A s0): eq. 27 before its maximum over time) and the mean
   // entropy of the particle nearest to (L/4, L/4) with eq. (25) there (Fig. 6).
   std::vector<EnergyTerm> diagnostics(double time);
+  // The wall exchange and the heater's input so far, carried by snapshots into restarted runs
+  // (core/simulation.hpp, HasEnergyAccounts).
+  std::vector<EnergyTerm> energy_accounts() const;
+  void restore_energy_accounts(const std::vector<EnergyTerm>& accounts);
   void invalidate_derived() {
     density_valid_ = false;
     constants_valid_ = false;
@@ -134,10 +138,10 @@ private:
   std::vector<Raw> slot_density_constant_;
   std::vector<std::uint8_t> slot_is_fluid_;
   std::vector<std::uint8_t> slot_kind_;
-  // Energy the walls gave the fluid in dissipation sub-steps since the simulation was built (lid
-  // work, heat from or to a cooler): the energy budget's wall_exchange term is minus this.
+  // Energy the walls gave the fluid in dissipation sub-steps since the run began (lid work, heat
+  // from or to a cooler): the energy budget's wall_exchange term is minus this.
   double exchanged_energy_ = 0.0;
-  double heater_energy_ = 0.0; // the heater's input since the simulation was built
+  double heater_energy_ = 0.0; // the heater's input since the run began
   std::vector<std::int8_t> slot_side_;
   PairSums<Arith, 1> density_sums_;
   HalfPairList fluid_pairs_; // the layout's pairs with a fluid particle on one side at least

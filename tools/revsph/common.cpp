@@ -60,11 +60,20 @@ LoadedCase load_from_snapshot(const CaseOptions& options) {
   }
   try {
     loaded.simulation->restore_state(snapshot.state);
+    loaded.simulation->restore_energy_accounts(metadata.energy_accounts);
   } catch (const std::invalid_argument& mismatch) {
     throw SnapshotError(options.from_snapshot +
                         ": does not fit the model its case describes: " + mismatch.what());
   }
   loaded.simulation->set_steps_taken(metadata.step);
+  if (metadata.energy_accounts.empty() && !loaded.simulation->energy_accounts().empty() &&
+      snapshot.metadata.reference_energy) {
+    // Written before snapshots kept the energy exchanged with the outside: the budget can only
+    // start again here.
+    std::cout << "note: " << options.from_snapshot
+              << " carries no energy accounts; the energy error is measured from its state\n";
+    snapshot.metadata.reference_energy.reset();
+  }
   loaded.from_snapshot = std::move(snapshot);
   return loaded;
 }

@@ -73,6 +73,7 @@ void RunOutput::write_snapshot(Simulation& simulation) {
   metadata.step = step;
   metadata.time = simulation.time();
   metadata.state_hash = state_hash(state);
+  metadata.energy_accounts = simulation.energy_accounts();
   char name[64];
   std::snprintf(name, sizeof name, "step_%09lld.h5", static_cast<long long>(step));
   const fs::path relative = fs::path("snapshots") / name;
