@@ -5,8 +5,10 @@
 // initial density; it avoids integrating the continuity equation, and the density is then a
 // function of the positions only (what makes the pressure force a kick).
 
+#include "core/fault.hpp"
 #include "core/kernel_wendland.hpp"
 #include "core/pair_sum.hpp"
+#include "core/state_field.hpp"
 
 #include <array>
 #include <cmath>
@@ -58,6 +60,17 @@ double lattice_kernel_sum(const WendlandQuintic<D>& kernel, double dr) {
       return sum;
     }
     ++index[k];
+  }
+}
+
+// C_a = wanted - sum into particle i's density constant; a constant that does not fit its scale
+// is the setup's fault on that particle.
+template <class Arith>
+void set_density_constant(StateField<typename Arith::Raw>& field, std::size_t i, double wanted,
+                          double sum) {
+  if (!Arith::try_from_real(wanted - sum, field.info().scale, field.at(0, i))) {
+    throw SimulationFault(
+        {field.info().particle_set, i, "density_constant", "does not fit its scale"}, 0);
   }
 }
 

@@ -4,6 +4,7 @@
 #include "core/dimension.hpp"
 #include "core/particle_blocks.hpp"
 #include "core/run_settings.hpp"
+#include "core/state_fill.hpp"
 #include "fixedpoint/conversion.hpp"
 #include "models/entropic/model.hpp"
 
@@ -27,31 +28,6 @@ double bytes_per_particle(int dimension, double support_radius_over_dr) {
 }
 // Masses are constants of the setup; 52 bits keep their double view exact.
 constexpr int mass_fraction_bits = 52;
-
-template <int D>
-void fill_vectors(const CaseFile& case_file, const std::vector<Vec<D>>& values,
-                  StateField<std::int64_t>& field, const char* what) {
-  field.resize(values.size());
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    for (int k = 0; k < D; ++k) {
-      if (!fixedpoint::try_to_fixed(values[i][k], field.info().scale, field.at(k, i))) {
-        case_file.fail("particles", std::string("a particle ") + what +
-                                        " does not fit its fixed-point scale (see [fixed_point])");
-      }
-    }
-  }
-}
-
-void fill_scalars(const CaseFile& case_file, const char* key, const std::vector<double>& values,
-                  StateField<std::int64_t>& field, const char* what) {
-  field.resize(values.size());
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    if (!fixedpoint::try_to_fixed(values[i], field.info().scale, field.at(0, i))) {
-      case_file.fail(key,
-                     std::string("a particle ") + what + " does not fit its fixed-point scale");
-    }
-  }
-}
 
 // initial.temperature_gradient and initial.temperature_perturbation: at the initial density
 // T ∝ e^(sigma / c_V) for both gas laws (equation_of_state.hpp), so a temperature T is
@@ -180,20 +156,22 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   state.gas.mass.set_scale(fixedpoint::Scale::covering(largest_mass, mass_fraction_bits));
   state.gas.entropy_flux.set_scale(parameters.entropy_flux_scale);
   state.wall.position.set_scale(parameters.position_scale);
-  fill_vectors<D>(case_file, gas_positions, state.gas.position, "position");
+  fill_vector_field<FixedArithmetic, D>(case_file, "particles", gas_positions, state.gas.position);
   state.gas.momentum.resize(gas_positions.size());     // at rest
   state.gas.entropy_flux.resize(gas_positions.size()); // w = 0
-  fill_scalars(case_file, "fixed_point.entropy_exponent", gas_entropies, state.gas.entropy,
-               "entropy");
-  fill_scalars(case_file, "initial.density", gas_masses, state.gas.mass, "mass");
-  fill_vectors<D>(case_file, wall_positions, state.wall.position, "position");
+  fill_scalar_field<FixedArithmetic>(case_file, "fixed_point.entropy_exponent", gas_entropies,
+                                     state.gas.entropy);
+  fill_scalar_field<FixedArithmetic>(case_file, "initial.density", gas_masses, state.gas.mass);
+  fill_vector_field<FixedArithmetic, D>(case_file, "particles", wall_positions,
+                                        state.wall.position);
   state.dummy.position.set_scale(parameters.position_scale);
   state.dummy.entropy.set_scale(parameters.entropy_scale);
   state.dummy.mass.set_scale(state.gas.mass.info().scale);
-  fill_vectors<D>(case_file, dummy_positions, state.dummy.position, "position");
-  fill_scalars(case_file, "fixed_point.entropy_exponent", dummy_entropies, state.dummy.entropy,
-               "entropy");
-  fill_scalars(case_file, "initial.density", dummy_masses, state.dummy.mass, "mass");
+  fill_vector_field<FixedArithmetic, D>(case_file, "particles", dummy_positions,
+                                        state.dummy.position);
+  fill_scalar_field<FixedArithmetic>(case_file, "fixed_point.entropy_exponent", dummy_entropies,
+                                     state.dummy.entropy);
+  fill_scalar_field<FixedArithmetic>(case_file, "initial.density", dummy_masses, state.dummy.mass);
   state.thermal.position.set_scale(parameters.position_scale);
   state.thermal.entropy.set_scale(parameters.entropy_scale);
   state.thermal.mass.set_scale(state.gas.mass.info().scale);
@@ -202,12 +180,14 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
           ? 1.0
           : *std::max_element(thermal_temperatures.begin(), thermal_temperatures.end()),
       52));
-  fill_vectors<D>(case_file, thermal_positions, state.thermal.position, "position");
-  fill_scalars(case_file, "fixed_point.entropy_exponent", thermal_entropies, state.thermal.entropy,
-               "entropy");
-  fill_scalars(case_file, "initial.density", thermal_masses, state.thermal.mass, "mass");
-  fill_scalars(case_file, "particles", thermal_temperatures, state.thermal.temperature,
-               "temperature");
+  fill_vector_field<FixedArithmetic, D>(case_file, "particles", thermal_positions,
+                                        state.thermal.position);
+  fill_scalar_field<FixedArithmetic>(case_file, "fixed_point.entropy_exponent", thermal_entropies,
+                                     state.thermal.entropy);
+  fill_scalar_field<FixedArithmetic>(case_file, "initial.density", thermal_masses,
+                                     state.thermal.mass);
+  fill_scalar_field<FixedArithmetic>(case_file, "particles", thermal_temperatures,
+                                     state.thermal.temperature);
 
   SimulationInfo info;
   info.case_name = case_name(case_file);

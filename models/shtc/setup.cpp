@@ -4,6 +4,7 @@
 #include "core/dimension.hpp"
 #include "core/particle_blocks.hpp"
 #include "core/run_settings.hpp"
+#include "core/state_fill.hpp"
 #include "models/shtc/model.hpp"
 
 #include <algorithm>
@@ -43,20 +44,6 @@ Vec<D> initial_velocity(const Parameters<D>& p, const Vec<D>& x) {
     }
   }
   return v;
-}
-
-template <int D>
-void fill_vectors(const CaseFile& case_file, const std::vector<Vec<D>>& values,
-                  StateField<std::int64_t>& field, const char* what) {
-  field.resize(values.size());
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    for (int k = 0; k < D; ++k) {
-      if (!fixedpoint::try_to_fixed(values[i][k], field.info().scale, field.at(k, i))) {
-        case_file.fail("particles", std::string("a particle ") + what +
-                                        " does not fit its fixed-point scale (see [fixed_point])");
-      }
-    }
-  }
 }
 
 // A = I for every particle: the material starts undistorted.
@@ -156,11 +143,15 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   state.material.position.set_scale(parameters.position_scale);
   state.material.velocity.set_scale(parameters.velocity_scale);
   state.boundary.position.set_scale(parameters.position_scale);
-  fill_vectors<D>(case_file, material_positions, state.material.position, "position");
-  fill_vectors<D>(case_file, velocities, state.material.velocity, "velocity");
-  fill_vectors<D>(case_file, boundary_positions, state.boundary.position, "position");
+  fill_vector_field<FixedArithmetic, D>(case_file, "particles", material_positions,
+                                        state.material.position);
+  fill_vector_field<FixedArithmetic, D>(case_file, "particles", velocities,
+                                        state.material.velocity);
+  fill_vector_field<FixedArithmetic, D>(case_file, "particles", boundary_positions,
+                                        state.boundary.position);
   state.boundary.wall_velocity.set_scale(parameters.velocity_scale);
-  fill_vectors<D>(case_file, boundary_velocities, state.boundary.wall_velocity, "wall velocity");
+  fill_vector_field<FixedArithmetic, D>(case_file, "particles", boundary_velocities,
+                                        state.boundary.wall_velocity);
   const bool moving_walls = any_wall_moves(state);
   state.boundary.drive_time.set_scale(parameters.drive_time_scale);
   state.boundary.drive_time.resize(boundary_positions.size());

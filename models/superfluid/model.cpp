@@ -86,10 +86,7 @@ void Model<D, Arith>::initialise_density_constants() {
         const double u1 = parameters_.helium.first_sound_speed;
         target *= 1.0 + parameters_.gravity * (surface - y) / (u1 * u1);
       }
-      if (!Arith::try_from_real(target - sum, field->info().scale, field->at(0, i))) {
-        throw SimulationFault(
-            {field->info().particle_set, i, "density_constant", "does not fit its scale"}, 0);
-      }
+      set_density_constant<Arith>(*field, i, target, sum);
     }
   }
   invalidate_derived();

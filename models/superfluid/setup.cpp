@@ -4,6 +4,7 @@
 #include "core/dimension.hpp"
 #include "core/particle_blocks.hpp"
 #include "core/run_settings.hpp"
+#include "core/state_fill.hpp"
 #include "models/superfluid/model.hpp"
 
 #include <algorithm>
@@ -82,32 +83,6 @@ InitialCopy<D> initial_copy(const CaseFile& case_file, const Parameters<D>& para
   return copy;
 }
 
-template <class Arith, int D>
-void fill_vectors(const CaseFile& case_file, const char* key, const std::vector<Vec<D>>& values,
-                  StateField<typename Arith::Raw>& field) {
-  field.resize(values.size());
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    for (int k = 0; k < D; ++k) {
-      if (!Arith::try_from_real(values[i][k], field.info().scale, field.at(k, i))) {
-        case_file.fail(key, "a particle's " + field.info().name +
-                                " does not fit its fixed-point scale (see [fixed_point])");
-      }
-    }
-  }
-}
-
-template <class Arith>
-void fill_scalars(const CaseFile& case_file, const char* key, const std::vector<double>& values,
-                  StateField<typename Arith::Raw>& field) {
-  field.resize(values.size());
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    if (!Arith::try_from_real(values[i], field.info().scale, field.at(0, i))) {
-      case_file.fail(key, "a particle's " + field.info().name +
-                              " does not fit its fixed-point scale (see [fixed_point])");
-    }
-  }
-}
-
 template <int D, class Arith>
 std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const SimulationOptions& options) {
   using Raw = typename Arith::Raw;
@@ -178,26 +153,26 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   state.wall.mass.set_scale(mass_scale);
   state.wall.density_constant.set_scale(parameters.density_scale);
 
-  fill_vectors<Arith, D>(case_file, "particles", fluid_positions, fluid.position);
+  fill_vector_field<Arith, D>(case_file, "particles", fluid_positions, fluid.position);
   // Both copies start equal, raw for raw.
   for (StateField<Raw>* field : {&fluid.velocity, &fluid.velocity_copy}) {
-    fill_vectors<Arith, D>(case_file, "initial.random_velocity", initial.velocity, *field);
+    fill_vector_field<Arith, D>(case_file, "initial.random_velocity", initial.velocity, *field);
   }
   for (StateField<Raw>* field : {&fluid.superflow_velocity, &fluid.superflow_velocity_copy}) {
-    fill_vectors<Arith, D>(case_file, "initial.random_counterflow", initial.superflow_velocity,
-                           *field);
+    fill_vector_field<Arith, D>(case_file, "initial.random_counterflow", initial.superflow_velocity,
+                                *field);
   }
   for (StateField<Raw>* field : {&fluid.entropy, &fluid.entropy_copy}) {
-    fill_scalars<Arith>(case_file, "physics.reference_entropy", initial.entropy, *field);
+    fill_scalar_field<Arith>(case_file, "physics.reference_entropy", initial.entropy, *field);
   }
-  fill_scalars<Arith>(case_file, "physics.rest_density", fluid_masses, fluid.mass);
+  fill_scalar_field<Arith>(case_file, "physics.rest_density", fluid_masses, fluid.mass);
   fluid.density_constant.resize(fluid_positions.size());
-  fill_vectors<Arith, D>(case_file, "particles", dummy_positions, state.dummy.position);
-  fill_scalars<Arith>(case_file, "physics.rest_density", dummy_masses, state.dummy.mass);
+  fill_vector_field<Arith, D>(case_file, "particles", dummy_positions, state.dummy.position);
+  fill_scalar_field<Arith>(case_file, "physics.rest_density", dummy_masses, state.dummy.mass);
   state.dummy.density_constant.resize(dummy_positions.size());
-  fill_vectors<Arith, D>(case_file, "particles", wall_positions, state.wall.position);
-  fill_vectors<Arith, D>(case_file, "particles", wall_velocities, state.wall.velocity);
-  fill_scalars<Arith>(case_file, "physics.rest_density", wall_masses, state.wall.mass);
+  fill_vector_field<Arith, D>(case_file, "particles", wall_positions, state.wall.position);
+  fill_vector_field<Arith, D>(case_file, "particles", wall_velocities, state.wall.velocity);
+  fill_scalar_field<Arith>(case_file, "physics.rest_density", wall_masses, state.wall.mass);
   state.wall.density_constant.resize(wall_positions.size());
 
   SimulationInfo info;

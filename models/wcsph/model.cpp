@@ -54,10 +54,7 @@ void Model<D, Arith>::initialise_density_constants(std::span<const double> targe
     const std::span<const double> wanted = layout_.part_of_set(target, set);
     const std::span<const double> rho = of_set(density(), set);
     for (std::size_t i = 0; i < rho.size(); ++i) {
-      if (!Arith::try_from_real(wanted[i] - rho[i], field->info().scale, field->at(0, i))) {
-        throw SimulationFault(
-            {field->info().particle_set, i, "density_constant", "does not fit its scale"}, 0);
-      }
+      set_density_constant<Arith>(*field, i, wanted[i], rho[i]);
     }
   }
   invalidate_derived();

@@ -4,6 +4,7 @@
 #include "core/dimension.hpp"
 #include "core/particle_blocks.hpp"
 #include "core/run_settings.hpp"
+#include "core/state_fill.hpp"
 #include "models/wcsph/gresho.hpp"
 #include "models/wcsph/model.hpp"
 
@@ -136,29 +137,6 @@ void correct_fluid_positions(const CaseFile& case_file, const Parameters<D>& par
   report_out.emplace_back("initial_state_correction.linear_iterations", linear_iterations);
 }
 
-template <class Arith, int D>
-void fill_vectors(const CaseFile& case_file, const std::string& key,
-                  const std::vector<Vec<D>>& values, StateField<typename Arith::Raw>& field,
-                  const char* what) {
-  field.resize(values.size());
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    for (int k = 0; k < D; ++k) {
-      if (!Arith::try_from_real(values[i][k], field.info().scale, field.at(k, i))) {
-        case_file.fail(key, std::string("a particle ") + what +
-                                " does not fit its fixed-point scale (see [fixed_point])");
-      }
-    }
-  }
-}
-
-template <class Arith>
-void fill_scalars(const std::vector<double>& values, StateField<typename Arith::Raw>& field) {
-  field.resize(values.size());
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    Arith::try_from_real(values[i], field.info().scale, field.at(0, i));
-  }
-}
-
 template <int D, class Arith>
 std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const SimulationOptions& options) {
   using Raw = typename Arith::Raw;
@@ -221,14 +199,13 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   state.dummy.position.set_scale(parameters.position_scale);
   state.dummy.mass.set_scale(mass_scale);
   state.dummy.density_constant.set_scale(parameters.density_scale);
-  fill_vectors<Arith, D>(case_file, "particles", fluid_positions, state.fluid.position, "position");
-  fill_vectors<Arith, D>(case_file, "initial.field", initial.velocity, state.fluid.velocity,
-                         "velocity");
-  fill_scalars<Arith>(fluid_masses, state.fluid.mass);
+  fill_vector_field<Arith, D>(case_file, "particles", fluid_positions, state.fluid.position);
+  fill_vector_field<Arith, D>(case_file, "initial.field", initial.velocity, state.fluid.velocity);
+  fill_scalar_field<Arith>(case_file, "physics.rest_density", fluid_masses, state.fluid.mass);
   state.fluid.density_constant.resize(fluid_positions.size());
-  fill_vectors<Arith, D>(case_file, "particles", wall_positions, state.wall.position, "position");
-  fill_vectors<Arith, D>(case_file, "particles", dummy_positions, state.dummy.position, "position");
-  fill_scalars<Arith>(dummy_masses, state.dummy.mass);
+  fill_vector_field<Arith, D>(case_file, "particles", wall_positions, state.wall.position);
+  fill_vector_field<Arith, D>(case_file, "particles", dummy_positions, state.dummy.position);
+  fill_scalar_field<Arith>(case_file, "physics.rest_density", dummy_masses, state.dummy.mass);
   state.dummy.density_constant.resize(dummy_positions.size());
 
   SimulationInfo info;
