@@ -6,6 +6,9 @@ whose answers are known:
   jet speed of 0.5 m/s; fluid falling back through the mouth counts against it, fluid crossing
   outside the mouth not at all;
 - eq. (31) from the cell's mean T, s and rho, with the heater's ramp;
+- the entropy the pair term of eq. (19) carries through the superleak's mid-plane, on a lattice
+  with a uniform J: rho^2 J (W - I), W the strip's width (17 mm) and I its edges' loss, the
+  continuum integral of the Wendland kernel (computed here by quadrature, not by pairs);
 - a run in two segments (the second restarted from the first's last snapshot, which it writes
   again) reads as one.
 
@@ -140,6 +143,44 @@ class FountainJet(unittest.TestCase):
         # Its mean over t > 0.2 s: the trapezoid rule on the snapshots 0.20, 0.21, 0.22, 0.23.
         late = ideal[20:]
         self.assertAlmostEqual(mean_ideal, np.mean(0.5 * (late[:-1] + late[1:])), places=12)
+
+
+class PairEntropyFluxTest(unittest.TestCase):
+    def test_uniform_flux_through_the_plane_is_rho_squared_j_times_the_width(self):
+        n = 12
+        dr = fountain.D_CAPILLARY / n
+        support = 5.6 * dr
+        rho, u = 145.0, 0.02
+        # A square lattice across x in (-12, 12) mm, its rows symmetric about the plane.
+        xs = np.arange(-12e-3 + dr / 2, 12e-3, dr)
+        ys = fountain.SUPERLEAK_PLANE + dr * (np.arange(-8, 8) + 0.5)
+        x, y = np.meshgrid(xs, ys)
+        count = x.size
+        velocity = np.zeros((count, 2))
+        velocity[:, 1] = u
+        snapshot = {"position": np.column_stack([x.ravel(), y.ravel()]),
+                    "mass": np.full(count, rho * dr * dr), "density": np.full(count, rho),
+                    "mean_entropy": np.full(count, fountain.S0), "mean_velocity": velocity,
+                    "mean_superflow_velocity": np.zeros((count, 2))}
+        chi_n = fountain.CHI_N0
+        j = fountain.S0 * (1.0 - chi_n) / (chi_n * rho) * u  # J = s (chi_s / chi_n) u / rho
+        # I = int (-w') r^3 dr * int sin^2 |cos| dtheta (= 4/3): the pairs the strip's edges cut.
+        r = np.linspace(0.0, support, 20001)
+        q = r / support
+        w_slope = -140.0 * q * (1.0 - q) ** 3 / (np.pi * support**3)  # w'(r), 2D Wendland C2
+        f = -w_slope * r**3
+        edge = np.sum(0.5 * (f[1:] + f[:-1]) * np.diff(r)) * 4.0 / 3.0
+        # The strip |x| < 8.5 mm holds whole lattice columns, each dr wide.
+        width = np.sum(np.abs(xs) < 8.5e-3) * dr
+        expected = rho**2 * j * (width - edge)
+        measured = fountain.pair_entropy_flux(snapshot, fountain.SUPERLEAK_PLANE, support)
+        # The lattice sum of a kernel 5.6 spacings wide matches its integral to 3e-4 here.
+        self.assertAlmostEqual(measured / expected, 1.0, delta=1e-3)
+        # Reversed flow, reversed flux.
+        snapshot["mean_velocity"] *= -1.0
+        self.assertAlmostEqual(
+            fountain.pair_entropy_flux(snapshot, fountain.SUPERLEAK_PLANE, support), -measured,
+            delta=1e-9 * abs(measured))
 
 
 if __name__ == "__main__":
