@@ -114,6 +114,7 @@ std::string base_case_of(std::string_view model) {
   return model == "wcsph"        ? "dambreak-small"
          : model == "entropic"   ? "expansion-small"
          : model == "superfluid" ? "second-sound-small"
+         : model == "two_fluid"  ? "rayleigh-taylor-small"
                                  : "cavity-re100-small";
 }
 

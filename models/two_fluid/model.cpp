@@ -1,0 +1,214 @@
+#include "models/two_fluid/model.hpp"
+
+#include "core/verlet.hpp"
+#include "models/two_fluid/helium_ii.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace revsph::two_fluid {
+
+namespace {
+
+template <int D>
+std::array<SummedQuantity, D> momentum_quantities(const fixedpoint::Scale& scale) {
+  std::array<SummedQuantity, D> quantities{};
+  quantities.fill({"momentum", scale});
+  return quantities;
+}
+
+} // namespace
+
+template <int D, class Arith>
+Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, Raw> state)
+    : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
+      kernel_(parameters_.support_radius),
+      layout_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
+              {{"superfluid", state_.superfluid.position.count()},
+               {"normal", state_.normal.position.count()},
+               {"wall", state_.wall.position.count()}}),
+      number_density_sums_(SummedQuantity{"number_density", parameters_.density_scale}),
+      impulse_sums_(momentum_quantities<D>(parameters_.momentum_scale)) {}
+
+template <int D, class Arith>
+std::span<const Substep<Model<D, Arith>>> Model<D, Arith>::palindrome() {
+  static constexpr Substep<Model> sequence[] = {
+      {"kick", 0.5, &Model::kick_substep},
+      {"drift", 1.0, &Model::drift_substep},
+      {"kick", 0.5, &Model::kick_substep},
+  };
+  return sequence;
+}
+
+template <int D, class Arith>
+double Model<D, Arith>::pressure(double density, double rest) const {
+  const Parameters<D>& p = parameters_;
+  const double b = rest * p.sound_speed * p.sound_speed / p.tait_exponent;
+  return b * (std::pow(density / rest, p.tait_exponent) - 1.0) + p.background_pressure;
+}
+
+template <int D, class Arith>
+double Model<D, Arith>::internal_energy(double density, double rest) const {
+  // e = B / (rho_k (gamma - 1)) ((rho / rho_k)^(gamma - 1) - 1) + (B - p_b)(1 / rho - 1 / rho_k):
+  // de/drho = (B (rho / rho_k)^gamma - B + p_b) / rho^2 = p / rho^2.
+  const Parameters<D>& p = parameters_;
+  const double gamma = p.tait_exponent;
+  const double b = rest * p.sound_speed * p.sound_speed / gamma;
+  const double power = gamma == 1.0 ? std::log(density / rest)
+                                    : (std::pow(density / rest, gamma - 1.0) - 1.0) / (gamma - 1.0);
+  return b / rest * power + (b - p.background_pressure) * (1.0 / density - 1.0 / rest);
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::update_constants() {
+  if (constants_valid_) {
+    return;
+  }
+  mass_ =
+      CarrierField<Arith>{&state_.superfluid.mass, &state_.normal.mass, &state_.wall.mass}.reals();
+  temperature_ = CarrierField<Arith>{&state_.superfluid.temperature, &state_.normal.temperature,
+                                     &state_.wall.temperature}
+                     .reals();
+  spin_ =
+      CarrierField<Arith>{&state_.superfluid.spin, &state_.normal.spin, &state_.wall.spin}.reals();
+  const std::size_t n = mass_.size();
+  moves_.assign(n, 1);
+  rest_density_.assign(n, parameters_.normal_density);
+  theta_factor_.assign(n, 0.0);
+  const std::span<std::uint8_t> walls = layout_.part_of_set(std::span(moves_), wall_set);
+  std::fill(walls.begin(), walls.end(), 0);
+  const std::span<double> superfluid_rest =
+      layout_.part_of_set(std::span(rest_density_), superfluid_set);
+  std::fill(superfluid_rest.begin(), superfluid_rest.end(), parameters_.superfluid_density);
+  // Eq. (41): sigma = C_e S(T) / rho_ref; theta' / rho = sigma for the superfluid (28) and
+  // -sigma rho_s / rho_n for the normal fluid (sec. IV.3).
+  const Thermomechanical& t = parameters_.thermomechanical;
+  if (t.entropy_scale > 0.0) {
+    for (const std::size_t set : {superfluid_set, normal_set}) {
+      const double kind = set == superfluid_set
+                              ? 1.0
+                              : -parameters_.superfluid_density / parameters_.normal_density;
+      const std::span<const double> temperature =
+          layout_.part_of_set(std::span<const double>(temperature_), set);
+      const std::span<double> factor = layout_.part_of_set(std::span(theta_factor_), set);
+      for (std::size_t i = 0; i < factor.size(); ++i) {
+        factor[i] = kind * t.entropy_scale *
+                    phonon_roton_entropy(temperature[i], t.first_sound_speed) / t.reference_density;
+      }
+    }
+  }
+  constants_valid_ = true;
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::update_density() {
+  if (density_valid_) {
+    return;
+  }
+  update_constants();
+  ImpulseInputs& in = inputs_;
+  layout_.build(carrier_position(), parameters_.support_radius, Gathered<double>{mass_, &in.mass},
+                Gathered<double>{temperature_, &slot_temperature_},
+                Gathered<double>{spin_, &in.spin},
+                Gathered<double>{rest_density_, &slot_rest_density_},
+                Gathered<double>{theta_factor_, &slot_theta_factor_},
+                Gathered<std::uint8_t>{moves_, &in.moves});
+  const std::size_t slots = layout_.slot_count();
+  for (std::vector<double>* v :
+       {&in.volume, &in.density, &in.pressure, &in.temperature_term, &in.thermomechanical}) {
+    v->resize(slots);
+  }
+  FaultRecorder faults;
+  const auto inputs_of_slot = [&](std::uint32_t s) {
+    const double n = number_density_sums_.value(0, s);
+    if (!(n > 0.0)) {
+      layout_.record_fault(faults, s, "density", "number density not positive");
+      return;
+    }
+    const double rho = in.mass[s] * n; // eq. (36)
+    in.volume[s] = 1.0 / n;
+    in.density[s] = rho;
+    in.pressure[s] = pressure(rho, slot_rest_density_[s]);
+    in.temperature_term[s] = slot_temperature_[s] / (rho * rho);
+    in.thermomechanical[s] = rho * slot_theta_factor_[s]; // theta' of eqs. (28, 31)
+  };
+  sum_pairs<Arith>(layout_, NumberDensityTerm<D>{kernel_}, number_density_sums_, {},
+                   inputs_of_slot);
+  faults.throw_if_any();
+  density_valid_ = true;
+  impulses_valid_ = false;
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::update_impulses(double tau) {
+  update_density();
+  if (impulses_valid_ && impulse_tau_ == tau) {
+    return;
+  }
+  const Parameters<D>& p = parameters_;
+  const ImpulseTerm<D> term{kernel_,
+                            inputs_,
+                            p.pressure_form,
+                            p.rotational_viscosity,
+                            p.gravity,
+                            tau,
+                            p.thermomechanical.entropy_scale > 0.0,
+                            D == 2 && p.rotational_viscosity > 0.0 && p.spin != 0.0};
+  sum_pairs<Arith>(layout_, term, impulse_sums_);
+  impulse_tau_ = tau;
+  impulses_valid_ = true;
+}
+
+template <int D, class Arith>
+template <class Field>
+void Model<D, Arith>::add_impulses(Field& momentum, std::size_t set, FaultRecorder& faults) {
+  // p += the exact total of the particle's rounded pair impulses, no rounding of its own: a
+  // reversed kick subtracts bit for bit what this one added.
+  add_pair_totals<Arith>(momentum, impulse_sums_, 0, layout_.slots_of_set(set), faults);
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::kick(double dt) {
+  update_impulses(dt);
+  FaultRecorder faults;
+  add_impulses(state_.superfluid.momentum, superfluid_set, faults);
+  add_impulses(state_.normal.momentum, normal_set, faults);
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::drift(double dt) {
+  update_constants();
+  FaultRecorder faults;
+  for_each_moving([&](auto& kind, std::size_t set) {
+    const std::span<const double> mass = layout_.part_of_set(std::span<const double>(mass_), set);
+    const auto& x_scale = kind.position.info().scale;
+    const auto& p_scale = kind.momentum.info().scale;
+    const std::size_t n = kind.position.count();
+    // x += round(dt p / m): dt (-p) / m is -(dt p / m) bit for bit, so the drift is odd in p.
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      for (int k = 0; k < D; ++k) {
+        const double velocity = Arith::real(kind.momentum.at(k, i), p_scale) / mass[i];
+        if (!Arith::try_increment(kind.position.at(k, i), dt * velocity, x_scale)) {
+          faults.record(i, kind.position.info().particle_set.c_str(), "position",
+                        "overflow or non-finite value in a drift");
+        }
+      }
+    }
+    faults.throw_if_any();
+  });
+  density_valid_ = false;
+  impulses_valid_ = false;
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::reverse_time() {
+  apply_time_reversal<Arith>(state_);
+}
+
+template class Model<2, FixedArithmetic>;
+template class Model<3, FixedArithmetic>;
+template class Model<2, FloatArithmetic>;
+template class Model<3, FloatArithmetic>;
+
+} // namespace revsph::two_fluid

@@ -1,0 +1,102 @@
+#pragma once
+// Tsuzuki's two-fluid helium II (paper 5): superfluid and normal particles with a position-only
+// conservative core (number density 36, Tait pressure in three forms, thermomechanical force 27,
+// spin term 40, gravity) integrated by velocity Verlet in momentum form, bitwise reversible in
+// fixed point: kick(dt/2) drift(dt) kick(dt/2).
+
+#include "core/carrier_field.hpp"
+#include "core/energy.hpp"
+#include "core/kernel_wendland.hpp"
+#include "core/pair_sum.hpp"
+#include "core/particle_view.hpp"
+#include "core/simulation.hpp"
+#include "core/slot_layout.hpp"
+#include "core/step_composition.hpp"
+#include "models/two_fluid/pair_terms.hpp"
+#include "models/two_fluid/parameters.hpp"
+#include "models/two_fluid/state.hpp"
+
+#include <span>
+#include <vector>
+
+namespace revsph::two_fluid {
+
+template <int D, class Arith>
+class Model {
+public:
+  using Raw = typename Arith::Raw;
+
+  Model(Parameters<D> parameters, SimulationInfo info, State<D, Raw> state);
+
+  static std::span<const Substep<Model>> palindrome();
+
+  State<D, Raw>& state() { return state_; }
+  const SimulationInfo& info() const { return info_; }
+  const Parameters<D>& parameters() const { return parameters_; }
+  // Kinetic sum |p|^2 / 2m, internal sum m e(rho) over every particle (walls included: their
+  // density moves with the fluid), gravitational sum m g (y - y_ref).
+  EnergyBudget energy();
+  void derived_views(const ViewSink& sink);
+  void invalidate_derived() {
+    density_valid_ = false;
+    impulses_valid_ = false;
+    constants_valid_ = false;
+  }
+  void reverse_time();
+
+  void kick(double dt);
+  void drift(double dt);
+
+  // The kinds in the layout's order.
+  static constexpr std::size_t superfluid_set = 0;
+  static constexpr std::size_t normal_set = 1;
+  static constexpr std::size_t wall_set = 2;
+
+private:
+  static void kick_substep(Model& model, double dt) { model.kick(dt); }
+  static void drift_substep(Model& model, double dt) { model.drift(dt); }
+  CarrierField<Arith> carrier_position() const {
+    return {&state_.superfluid.position, &state_.normal.position, &state_.wall.position};
+  }
+  // f(kind, set) for the superfluid and the normal particles (different types).
+  template <class F>
+  void for_each_moving(F&& f) {
+    f(state_.superfluid, superfluid_set);
+    f(state_.normal, normal_set);
+  }
+  // Masses, temperatures, spins and the entropy's factor, gathered once.
+  void update_constants();
+  // The layout, the number density and every per-slot input of the impulses.
+  void update_density();
+  void update_impulses(double tau);
+  // Tait: p = B ((rho / rho_k)^gamma - 1) + p_b, B = rho_k c^2 / gamma, and its energy per mass
+  // e with de/drho = p / rho^2, e(rho_k) = 0.
+  double pressure(double density, double rest) const;
+  double internal_energy(double density, double rest) const;
+  template <class Field>
+  void add_impulses(Field& momentum, std::size_t set, FaultRecorder& faults);
+
+  Parameters<D> parameters_;
+  SimulationInfo info_;
+  State<D, Raw> state_;
+  WendlandQuintic<D> kernel_;
+  SlotLayout<D> layout_;
+
+  bool constants_valid_ = false;
+  std::vector<double> mass_, temperature_, spin_, rest_density_, theta_factor_;
+  std::vector<std::uint8_t> moves_;
+  bool density_valid_ = false;
+  PairSums<Arith, 1> number_density_sums_;
+  ImpulseInputs inputs_; // by slot
+  std::vector<double> slot_temperature_, slot_spin_, slot_rest_density_, slot_theta_factor_;
+  bool impulses_valid_ = false;
+  double impulse_tau_ = 0.0;
+  PairSums<Arith, D> impulse_sums_;
+};
+
+extern template class Model<2, FixedArithmetic>;
+extern template class Model<3, FixedArithmetic>;
+extern template class Model<2, FloatArithmetic>;
+extern template class Model<3, FloatArithmetic>;
+
+} // namespace revsph::two_fluid

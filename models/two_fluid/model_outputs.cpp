@@ -1,0 +1,72 @@
+// The two-fluid model's energy budget and its physical views for snapshots.
+#include "models/two_fluid/model.hpp"
+
+namespace revsph::two_fluid {
+
+template <int D, class Arith>
+EnergyBudget Model<D, Arith>::energy() {
+  update_density();
+  const ImpulseInputs& in = inputs_;
+  double kinetic = 0.0, internal = 0.0, gravitational = 0.0;
+  for_each_moving([&](const auto& kind, std::size_t set) {
+    const std::span<const double> mass = layout_.part_of_set(std::span<const double>(mass_), set);
+    const auto& p_scale = kind.momentum.info().scale;
+    const auto& x_scale = kind.position.info().scale;
+    for (std::size_t i = 0; i < mass.size(); ++i) {
+      double p_squared = 0.0;
+      for (int k = 0; k < D; ++k) {
+        const double p = Arith::real(kind.momentum.at(k, i), p_scale);
+        p_squared += p * p;
+      }
+      kinetic += 0.5 * p_squared / mass[i];
+      const double y = Arith::real(kind.position.at(D - 1, i), x_scale);
+      gravitational += mass[i] * parameters_.gravity * (y - parameters_.gravity_reference_height);
+    }
+  });
+  // Every particle's m e(rho), walls included, in slot order (a fixed order for a given
+  // layout: the total is reported, not evolved).
+  for (std::size_t s = 0; s < layout_.slot_count(); ++s) {
+    internal += in.mass[s] * internal_energy(in.density[s], slot_rest_density_[s]);
+  }
+  return EnergyBudget{
+      {{"kinetic", kinetic}, {"internal", internal}, {"gravitational", gravitational}}};
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::derived_views(const ViewSink& sink) {
+  update_density();
+  const ImpulseInputs& in = inputs_;
+  auto density_and_pressure = [&](std::size_t set) {
+    const std::string name = layout_.sets()[set].name;
+    const std::span<const std::uint32_t> slots = layout_.slots_of_set(set);
+    std::vector<double> density(slots.size()), pressure(slots.size());
+    for (std::size_t i = 0; i < slots.size(); ++i) {
+      density[i] = in.density[slots[i]];
+      pressure[i] = in.pressure[slots[i]];
+    }
+    sink(ParticleView{name, "density", "kg/m^3", 1, std::move(density)});
+    sink(ParticleView{name, "pressure", "Pa", 1, std::move(pressure)});
+  };
+  for_each_moving([&](const auto& kind, std::size_t set) {
+    density_and_pressure(set);
+    const std::span<const double> mass = layout_.part_of_set(std::span<const double>(mass_), set);
+    const std::size_t n = mass.size();
+    std::vector<double> velocity(D * n);
+    for (int k = 0; k < D; ++k) {
+      for (std::size_t i = 0; i < n; ++i) {
+        velocity[k * n + i] =
+            Arith::real(kind.momentum.at(k, i), kind.momentum.info().scale) / mass[i];
+      }
+    }
+    sink(ParticleView{std::string(layout_.sets()[set].name), "velocity", "m/s", D,
+                      std::move(velocity)});
+  });
+  density_and_pressure(wall_set);
+}
+
+template class Model<2, FixedArithmetic>;
+template class Model<3, FixedArithmetic>;
+template class Model<2, FloatArithmetic>;
+template class Model<3, FloatArithmetic>;
+
+} // namespace revsph::two_fluid

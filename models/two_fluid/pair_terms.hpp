@@ -1,0 +1,134 @@
+#pragma once
+// The position-only pair terms of the two-fluid model (paper 5), run by core's one pair loop
+// (core/pair_sum.hpp): the number density (36) and the kick's impulses (pressure 26 / 37-38 /
+// variational, thermomechanical 27-28, spin 40, gravity). Arrays are indexed by slot (every
+// particle, walls included, in cell order).
+
+#include "core/kernel_wendland.hpp"
+#include "core/pair_sum.hpp"
+#include "models/two_fluid/parameters.hpp"
+
+#include <array>
+#include <cstdint>
+#include <span>
+
+namespace revsph::two_fluid {
+
+// Eq. (36) without the mass: n_i = sum_j W_ij (j = i included), so that rho_i = m_i n_i and the
+// particle's volume is V_i = 1 / n_i.
+template <int D>
+struct NumberDensityTerm {
+  static constexpr int width = 1;
+  const WendlandQuintic<D>& kernel;
+
+  void pair(const PairGeometry<D>& p, std::array<double, 1>& to_a,
+            std::array<double, 1>& to_b) const {
+    to_a[0] = to_b[0] = kernel.value(p.r);
+  }
+  template <class Add>
+  void self(std::uint32_t, Add& add) const {
+    add(0, kernel.value(0.0));
+  }
+};
+
+// Per-slot inputs of the impulses, from the number density.
+struct ImpulseInputs {
+  std::vector<double> mass;             // m
+  std::vector<double> volume;           // V = 1 / n
+  std::vector<double> density;          // rho = m n
+  std::vector<double> pressure;         // Tait + background
+  std::vector<double> temperature_term; // T / rho^2
+  std::vector<double> thermomechanical; // theta' = rho sigma, times -rho_s / rho_n if normal
+  std::vector<double> spin;             // omega (about z; 2D)
+  std::vector<std::uint8_t> moves;      // 0 for walls: they receive nothing
+};
+
+// The impulse tau f_ab of one pair, rounded once per particle at the momentum scale:
+//   pressure   f_a = -Phi_ab grad_a W_ab, f_b = -f_a, with Phi_ab
+//                hu_adams (37-38): (V_a^2 + V_b^2) (rho_a p_b + rho_b p_a) / (rho_a + rho_b)
+//                standard (26):    m_a m_b (p_a / rho_a^2 + p_b / rho_b^2)
+//                variational:      V_a^2 p_a + V_b^2 p_b
+//   thermomechanical (27): f_a = m_a theta'_a m_b (T_a / rho_a^2 + T_b / rho_b^2) grad_a W_ab,
+//                f_b likewise with theta'_b (not antisymmetric, README);
+//   spin (39-40): f_a = 2 eta_r V_a V_b grad_a W_ab x (omega_a + omega_b) z, f_b = -f_a;
+//   gravity: -tau m g along the last axis (self).
+// The antisymmetric parts are summed before the rounding, so b's share is the exact negative of
+// a's where the thermomechanical term is off.
+template <int D>
+struct ImpulseTerm {
+  static constexpr int width = D;
+  const WendlandQuintic<D>& kernel;
+  const ImpulseInputs& in;
+  PressureForm form;
+  double rotational_viscosity;
+  double gravity;
+  double tau;
+  bool thermomechanical_on;
+  bool spin_on;
+
+  bool receives(std::uint32_t s) const { return in.moves[s] != 0; }
+
+  double pressure_factor(std::uint32_t a, std::uint32_t b) const {
+    switch (form) {
+    case PressureForm::hu_adams: {
+      const double reduced = (in.density[a] * in.pressure[b] + in.density[b] * in.pressure[a]) /
+                             (in.density[a] + in.density[b]);
+      return (in.volume[a] * in.volume[a] + in.volume[b] * in.volume[b]) * reduced;
+    }
+    case PressureForm::standard:
+      return in.mass[a] * in.mass[b] *
+             (in.pressure[a] / (in.density[a] * in.density[a]) +
+              in.pressure[b] / (in.density[b] * in.density[b]));
+    case PressureForm::variational:
+      return in.volume[a] * in.volume[a] * in.pressure[a] +
+             in.volume[b] * in.volume[b] * in.pressure[b];
+    }
+    return 0.0;
+  }
+
+  void pair(const PairGeometry<D>& p, std::array<double, D>& to_a,
+            std::array<double, D>& to_b) const {
+    const std::uint32_t a = p.a;
+    const std::uint32_t b = p.b;
+    // grad_a W_ab = (W'(r) / r) x_ab, finite for coincident particles.
+    const double slope = tau * kernel.derivative_over_r(p.r);
+    std::array<double, D> gradient{};
+    for (int k = 0; k < D; ++k) {
+      gradient[k] = slope * p.x_ab[k];
+    }
+    const double phi = pressure_factor(a, b);
+    for (int k = 0; k < D; ++k) {
+      to_a[k] = -phi * gradient[k];
+    }
+    if (spin_on) {
+      const double factor =
+          2.0 * rotational_viscosity * in.volume[a] * in.volume[b] * (in.spin[a] + in.spin[b]);
+      if constexpr (D == 2) {
+        to_a[0] += factor * gradient[1]; // grad W x omega z = (g_y, -g_x) omega
+        to_a[1] += -factor * gradient[0];
+      }
+    }
+    for (int k = 0; k < D; ++k) {
+      to_b[k] = -to_a[k];
+    }
+    if (thermomechanical_on) {
+      const double pair_factor =
+          in.mass[a] * in.mass[b] * (in.temperature_term[a] + in.temperature_term[b]);
+      const double on_a = pair_factor * in.thermomechanical[a];
+      const double on_b = -pair_factor * in.thermomechanical[b]; // grad_b W_ba = -grad_a W_ab
+      for (int k = 0; k < D; ++k) {
+        to_a[k] += on_a * gradient[k];
+        to_b[k] += on_b * gradient[k];
+      }
+    }
+  }
+
+  template <class Add>
+  void self(std::uint32_t s, Add& add) const {
+    if (gravity != 0.0 && in.moves[s] != 0) {
+      add(D - 1, -tau * in.mass[s] * gravity);
+    }
+  }
+};
+
+} // namespace revsph::two_fluid

@@ -1,0 +1,200 @@
+#include "models/two_fluid/parameters.hpp"
+
+#include "core/case_values.hpp"
+#include "core/particle_blocks.hpp"
+#include "core/particle_discretisation.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace revsph::two_fluid {
+
+namespace {
+
+PressureForm read_pressure_form(const CaseFile& case_file) {
+  const std::string form = case_file.string_or("pressure.form", "hu_adams");
+  if (form == "hu_adams") {
+    return PressureForm::hu_adams;
+  }
+  if (form == "standard") {
+    return PressureForm::standard;
+  }
+  if (form == "variational") {
+    return PressureForm::variational;
+  }
+  case_file.fail("pressure.form",
+                 "expected \"hu_adams\", \"standard\" or \"variational\", got \"" + form + "\"");
+}
+
+MutualFriction read_mutual_friction(const CaseFile& case_file, double superfluid_density) {
+  MutualFriction f;
+  f.superfluid_density = superfluid_density;
+  f.alpha = case_file.non_negative_number_or("mutual_friction.alpha", 0.0, "no mutual friction");
+  if (f.alpha == 0.0) {
+    return f;
+  }
+  f.circulation_quantum = case_file.positive_number("mutual_friction.circulation_quantum");
+  f.initial_line_density = case_file.positive_number("mutual_friction.initial_line_density");
+  f.vinen_beta =
+      case_file.non_negative_number_or("mutual_friction.vinen_beta", 0.0, "L stays at L0");
+  return f;
+}
+
+} // namespace
+
+template <int D>
+Parameters<D> read_parameters(const CaseFile& case_file) {
+  Parameters<D> p;
+  p.superfluid_density = case_file.positive_number("physics.superfluid_density");
+  p.normal_density = case_file.positive_number("physics.normal_density");
+  p.sound_speed = case_file.positive_number("physics.sound_speed");
+  p.tait_exponent = case_file.number_or("physics.tait_exponent", 7.0);
+  if (!(p.tait_exponent >= 1.0 && p.tait_exponent <= 20.0)) {
+    case_file.fail("physics.tait_exponent", "must be in [1, 20]");
+  }
+  p.background_pressure = case_file.non_negative_number_or("physics.background_pressure", 0.0);
+  p.temperature = case_file.positive_number("physics.temperature");
+  p.gravity = case_file.number_or("physics.gravity", 0.0);
+  p.gravity_reference_height = case_file.number_or("physics.gravity_reference_height", 0.0);
+  p.pressure_form = read_pressure_form(case_file);
+
+  Thermomechanical& t = p.thermomechanical;
+  t.entropy_scale =
+      case_file.non_negative_number_or("thermomechanical.entropy_scale", 0.0, "no force");
+  if (t.entropy_scale > 0.0) {
+    t.first_sound_speed = case_file.positive_number("thermomechanical.first_sound_speed");
+    t.reference_density = case_file.number_or("thermomechanical.reference_density",
+                                              p.superfluid_density + p.normal_density);
+    require_positive_finite(case_file, "thermomechanical.reference_density",
+                            "the reference density", t.reference_density);
+  }
+  p.rotational_viscosity =
+      case_file.non_negative_number_or("physics.rotational_viscosity", 0.0, "no spin term");
+  p.normal_viscosity = case_file.non_negative_number_or("physics.normal_viscosity", 0.0);
+  p.mutual_friction = read_mutual_friction(case_file, p.superfluid_density);
+
+  const ParticleDiscretisation discretisation =
+      read_particle_discretisation(case_file, p.sound_speed);
+  p.dr = discretisation.dr;
+  p.support_radius = discretisation.support_radius;
+  p.dt = discretisation.dt;
+  p.cell_size_factor = discretisation.cell_size_factor;
+  // Eq. (40)'s initial spin, C_omega v_max / (0.5 d), held fixed (README).
+  const double spin_coefficient = case_file.non_negative_number_or("spin.coefficient", 0.0);
+  if (spin_coefficient > 0.0) {
+    p.spin = spin_coefficient * case_file.positive_number("spin.max_speed") / (0.5 * p.dr);
+  }
+  p.domain = read_domain<D>(case_file);
+  if (case_file.has("interface.height")) {
+    p.interface.given = true;
+    p.interface.height = case_file.number("interface.height");
+    p.interface.amplitude = case_file.number_or("interface.amplitude", 0.0);
+    p.interface.wavelength = case_file.positive_number("interface.wavelength");
+  }
+
+  // Default scales: positions 52 fraction bits below the domain size; momenta resolve
+  // m c 2^-50 of the heavier kind's particle; number densities dr^-D 2^-48.
+  const double heavier = std::max(p.superfluid_density, p.normal_density) * std::pow(p.dr, D);
+  p.position_scale =
+      scale_or(case_file, "fixed_point.position_exponent", p.domain.max_abs_coordinate(), 52);
+  p.momentum_scale =
+      scale_or(case_file, "fixed_point.momentum_exponent", heavier * p.sound_speed, 50);
+  p.density_scale = scale_or(case_file, "fixed_point.density_exponent", std::pow(p.dr, -D), 48);
+  return p;
+}
+
+const KeyTable& case_keys() {
+  static const KeyTable table = [] {
+    using T = KeyType;
+    KeyTable t("two_fluid");
+    t.add({"dimension", T::integer, "-", "required", "2 or 3"});
+    t.add({"physics.superfluid_density", T::number, "kg/m^3", "required",
+           "rho_s: reference density of the superfluid particles (Tait, mass rho_s dr^D); "
+           "> 0"});
+    t.add({"physics.normal_density", T::number, "kg/m^3", "required",
+           "rho_n: reference density of the normal and wall particles; > 0"});
+    t.add({"physics.sound_speed", T::number, "m/s", "required",
+           "c of the Tait equation p = rho_k c^2 / gamma ((rho / rho_k)^gamma - 1) (not given "
+           "by the paper: a numerical speed, 10 times the largest expected flow speed); > 0"});
+    t.add({"physics.tait_exponent", T::number, "1", "7", "gamma of the Tait equation, 1 to 20"});
+    t.add({"physics.background_pressure", T::number, "Pa", "0",
+           "added to every Tait pressure (keeps a closed box's top in compression); >= 0"});
+    t.add({"physics.temperature", T::number, "K", "required",
+           "T0: every particle's temperature, kept (sec. IV.4); > 0"});
+    t.add({"physics.gravity", T::number, "m/s^2", "0",
+           "gravitational acceleration g along minus the last axis"});
+    t.add({"physics.gravity_reference_height", T::number, "m", "0",
+           "height of zero gravitational energy (shifts the reported energy only)"});
+    t.add({"physics.rotational_viscosity", T::number, "Pa s", "0",
+           "eta_r of eq. (39): the spin term 2 eta_r curl omega (eq. 40), with the viscosity "
+           "eta_bar + eta_r; >= 0"});
+    t.add({"physics.normal_viscosity", T::number, "Pa s", "0",
+           "eta_bar = eta_n of eqs. (34, 39), on normal and wall particles; >= 0; "
+           "irreversible"});
+    t.add({"pressure.form",
+           T::string,
+           "-",
+           "\"hu_adams\"",
+           "\"hu_adams\": eqs. (37-38); \"standard\": eq. (26); \"variational\": the gradient "
+           "of sum m e(rho) (README)",
+           {"hu_adams", "standard", "variational"}});
+    t.add({"thermomechanical.entropy_scale", T::number, "1", "0",
+           "C_e of eq. (41): sigma = C_e S(T) / reference_density, S of eq. (21); >= 0 (0: no "
+           "thermomechanical force)"});
+    t.add({"thermomechanical.first_sound_speed", T::number, "m/s", "required with a scale",
+           "c of eq. (21) (the phonons' sound speed); > 0"});
+    t.add({"thermomechanical.reference_density", T::number, "kg/m^3",
+           "superfluid_density + normal_density",
+           "turns eq. (21)'s entropy per volume into sigma per mass; > 0"});
+    t.add({"spin.coefficient", T::number, "1", "0",
+           "C_omega of sec. IV.2: every fluid particle's spin is C_omega max_speed / (0.5 dr), "
+           "held fixed; >= 0"});
+    t.add({"spin.max_speed", T::number, "m/s", "required with a coefficient",
+           "v_max of sec. IV.2; > 0"});
+    t.add({"mutual_friction.alpha", T::number, "1", "0",
+           "alpha of eq. (8); >= 0 (0: no mutual friction); irreversible"});
+    t.add({"mutual_friction.circulation_quantum", T::number, "m^2/s", "required with alpha",
+           "kappa = h / m4 of eq. (8); > 0"});
+    t.add({"mutual_friction.initial_line_density", T::number, "1/m^2", "required with alpha",
+           "L0 of eq. (9); > 0"});
+    t.add({"mutual_friction.vinen_beta", T::number, "m^2/s", "0",
+           "beta_v of eq. (9): 1 / L(t) = 1 / L0 + beta_v t; >= 0"});
+    t.add({"interface.height", T::number, "m", "none",
+           "with it, the particles of superfluid and normal blocks are superfluid above "
+           "y = height - amplitude sin(2 pi x / wavelength) and normal below (sec. V.1)"});
+    t.add({"interface.amplitude", T::number, "m", "0", "the interface's amplitude"});
+    t.add({"interface.wavelength", T::number, "m", "required with a height",
+           "the interface's wavelength; > 0"});
+    t.add(particle_discretisation_case_keys(
+        "kernel support radius in units of dr (not given by the paper; 3 as Hu & Adams)",
+        "time step as a fraction of support / c (the CFL limit of sec. IV.1)"));
+    t.add(domain_case_keys());
+    t.add(particle_block_case_keys({"superfluid", "normal", "mixed", "wall"}));
+    t.add({"particles[].superfluid_fraction", T::number, "1", "required for kind = \"mixed\"",
+           "share of a mixed block's lattice points that are superfluid (drawn at random, "
+           "sec. V.3); in (0, 1)"});
+    t.add({"particles[].seed", T::integer, "-", "1", "seed of a mixed block's draw; >= 0"});
+    t.add({"particles[].velocity", T::numbers, "m/s", "zero",
+           "velocity of a wall block (a lid), seen by the irreversible terms only"});
+    t.add({"particles[].rotation_rate", T::number, "1/s", "0",
+           "a wall block turning about rotation_centre (counterclockwise): its velocity "
+           "omega x (x - centre), seen by the irreversible terms only"});
+    t.add({"particles[].rotation_centre", T::numbers, "m", "origin",
+           "centre of a turning wall block"});
+    t.add({"fixed_point.position_exponent", T::integer, "-",
+           "covers the domain with 52 fraction bits",
+           "positions are stored as integers times 2^exponent"});
+    t.add({"fixed_point.momentum_exponent", T::integer, "-",
+           "covers max(rho_s, rho_n) dr^D c with 50 fraction bits",
+           "momenta are stored as integers times 2^exponent"});
+    t.add({"fixed_point.density_exponent", T::integer, "-", "covers dr^-D with 48 fraction bits",
+           "scale of the number-density sums sum_j W_ij"});
+    return t;
+  }();
+  return table;
+}
+
+template Parameters<2> read_parameters<2>(const CaseFile&);
+template Parameters<3> read_parameters<3>(const CaseFile&);
+
+} // namespace revsph::two_fluid

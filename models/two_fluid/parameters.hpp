@@ -1,0 +1,82 @@
+#pragma once
+// Parameters of a two-fluid case (paper 5), read from its case file. Every key read is declared
+// in case_keys() (revsph cases --keys two_fluid, docs/case-keys.md). Paper 5 leaves most numbers
+// out: each case file gives its values with their sources (README, "Parameters").
+
+#include "core/case_file.hpp"
+#include "core/case_keys.hpp"
+#include "core/geometry.hpp"
+#include "fixedpoint/scale.hpp"
+#include "models/two_fluid/helium_ii.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+
+namespace revsph::two_fluid {
+
+// The pressure force: eqs. (37-38) (Hu & Adams), eq. (26) (standard), or the gradient of the
+// internal energy (variational; README).
+enum class PressureForm { hu_adams, standard, variational };
+
+// The thermomechanical force (27-28): sigma = entropy_scale * S(T) / reference_density, S of
+// eq. (21) with the first sound speed; normal particles take it times -rho_s / rho_n.
+struct Thermomechanical {
+  double entropy_scale = 0.0;     // C_e of eq. (41); 0: no thermomechanical force
+  double first_sound_speed = 0.0; // c of eq. (21), m/s
+  double reference_density = 0.0; // turns S (per volume) into sigma (per mass), kg/m^3
+};
+
+// A curved interface (sec. V.1): the particles of superfluid and normal blocks are superfluid
+// above y = height - amplitude sin(2 pi x / wavelength) and normal below it.
+struct Interface {
+  bool given = false;
+  double height = 0.0;
+  double amplitude = 0.0;
+  double wavelength = 0.0;
+
+  bool superfluid_at(double x, double y) const {
+    return y > height - amplitude * std::sin(2.0 * std::numbers::pi * x / wavelength);
+  }
+};
+
+template <int D>
+struct Parameters {
+  double superfluid_density = 0.0; // rho_s: the superfluid particles' Tait reference and mass
+  double normal_density = 0.0;     // rho_n: the normal (and wall) particles'
+  double sound_speed = 0.0;        // c of the Tait equation (numerical, not given by the paper)
+  double tait_exponent = 7.0;
+  double background_pressure = 0.0; // added to every Tait pressure (Pa)
+  double temperature = 0.0;         // T0: every particle's temperature (sec. IV.4), K
+  double gravity = 0.0;             // g along minus the last axis, m/s^2
+  double gravity_reference_height = 0.0;
+  PressureForm pressure_form = PressureForm::hu_adams;
+  Thermomechanical thermomechanical;
+  double rotational_viscosity = 0.0; // eta_r of eq. (39): the spin term 2 eta_r curl omega (40)
+  double spin = 0.0;                 // omega of every fluid particle, C_omega v_max / (0.5 dr)
+  // Irreversible terms.
+  double normal_viscosity = 0.0; // eta_bar = eta_n of eqs. (34, 39), Pa s
+  MutualFriction mutual_friction;
+  Interface interface;
+  // [discretisation]
+  double dr = 0.0;
+  double support_radius = 0.0;
+  double dt = 0.0;
+  double cell_size_factor = 1.0;
+  Box<D> domain;
+  // [fixed_point]
+  fixedpoint::Scale position_scale;
+  fixedpoint::Scale momentum_scale;
+  fixedpoint::Scale density_scale; // the number-density sums (sum W, 1/m^D)
+
+  double rest_density(bool superfluid) const {
+    return superfluid ? superfluid_density : normal_density;
+  }
+};
+
+template <int D>
+Parameters<D> read_parameters(const CaseFile& case_file);
+
+const KeyTable& case_keys();
+
+} // namespace revsph::two_fluid

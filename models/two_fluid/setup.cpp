@@ -1,0 +1,194 @@
+#include "models/two_fluid/setup.hpp"
+
+#include "core/case_values.hpp"
+#include "core/dimension.hpp"
+#include "core/particle_blocks.hpp"
+#include "core/run_settings.hpp"
+#include "core/state_fill.hpp"
+#include "models/two_fluid/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+
+namespace revsph::two_fluid {
+
+namespace {
+
+constexpr std::string_view particle_kinds[] = {"superfluid", "normal", "mixed", "wall"};
+// State (2D + 3 values), a dozen per-slot arrays and cell lists, plus neighbours.
+double bytes_per_particle(int dimension, double support_radius_over_dr) {
+  return 300.0 + neighbour_list_bytes(dimension, support_radius_over_dr);
+}
+constexpr int mass_fraction_bits = 52;
+
+// The particles of one kind as the setup collects them.
+template <int D>
+struct KindParticles {
+  std::vector<Vec<D>> position, velocity;
+  std::vector<double> mass;
+};
+
+// A wall block's velocity: `velocity`, or omega x (x - centre) for a turning one (2D).
+template <int D>
+Vec<D> wall_velocity(const CaseFile& case_file, const std::string& key, const Vec<D>& x) {
+  Vec<D> v{};
+  if (case_file.has(key + ".velocity")) {
+    const std::vector<double> given = case_file.numbers(key + ".velocity", D);
+    std::copy(given.begin(), given.end(), v.begin());
+  }
+  const double rate = case_file.number_or(key + ".rotation_rate", 0.0);
+  if (rate != 0.0) {
+    if (D != 2) {
+      case_file.fail(key + ".rotation_rate", "a turning wall is 2D only");
+    }
+    std::vector<double> centre(D, 0.0);
+    if (case_file.has(key + ".rotation_centre")) {
+      centre = case_file.numbers(key + ".rotation_centre", D);
+    }
+    v[0] += -rate * (x[1] - centre[1]);
+    v[1] += rate * (x[0] - centre[0]);
+  }
+  return v;
+}
+
+template <int D, class Arith>
+std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const SimulationOptions& options) {
+  using Raw = typename Arith::Raw;
+  const Parameters<D> parameters = read_parameters<D>(case_file);
+  if (D != 2 && parameters.spin != 0.0) {
+    case_file.fail("spin.coefficient", "the spin term (eq. 40) is implemented in 2D only");
+  }
+  const double reach = parameters.support_radius / parameters.dr;
+  const auto blocks = read_particle_blocks<D>(
+      case_file, parameters.dr, parameters.domain, particle_kinds,
+      {bytes_per_particle(D, reach), options.memory_budget_bytes, neighbour_list_bytes(D, reach)});
+  KindParticles<D> superfluid, normal, wall;
+  for (const auto& block : blocks) {
+    for (const char* wall_only : {".velocity", ".rotation_rate", ".rotation_centre"}) {
+      if (block.kind != "wall" && case_file.has(block.key + wall_only)) {
+        case_file.fail(block.key + wall_only, "only for kind = \"wall\"");
+      }
+    }
+    const std::string fraction_key = block.key + ".superfluid_fraction";
+    if (block.kind != "mixed" && case_file.has(fraction_key)) {
+      case_file.fail(fraction_key, "only for kind = \"mixed\"");
+    }
+    const double volume = block.volume_per_particle;
+    if (block.kind == "wall") {
+      for (const Vec<D>& x : block.positions) {
+        wall.position.push_back(x);
+        wall.velocity.push_back(wall_velocity<D>(case_file, block.key, x));
+        wall.mass.push_back(parameters.normal_density * volume);
+      }
+      continue;
+    }
+    double fraction = block.kind == "superfluid" ? 1.0 : 0.0;
+    std::mt19937_64 generator(1);
+    if (block.kind == "mixed") {
+      fraction = case_file.number(fraction_key);
+      if (!(fraction > 0.0 && fraction < 1.0)) {
+        case_file.fail(fraction_key, "must be in (0, 1)");
+      }
+      const std::int64_t seed = case_file.integer_or(block.key + ".seed", 1);
+      if (seed < 0) {
+        case_file.fail(block.key + ".seed", "must be >= 0");
+      }
+      generator.seed(static_cast<std::uint64_t>(seed));
+    }
+    for (const Vec<D>& x : block.positions) {
+      // Uniform in [0, 1) from the generator's bits: the same draw with every standard library.
+      const bool is_superfluid =
+          block.kind == "mixed" ? static_cast<double>(generator() >> 11) * 0x1.0p-53 < fraction
+          : parameters.interface.given ? parameters.interface.superfluid_at(x[0], x[D - 1])
+                                       : block.kind == "superfluid";
+      KindParticles<D>& kind = is_superfluid ? superfluid : normal;
+      kind.position.push_back(x);
+      kind.mass.push_back(
+          (is_superfluid ? parameters.superfluid_density : parameters.normal_density) * volume);
+    }
+  }
+  if (superfluid.position.empty() && normal.position.empty()) {
+    case_file.fail("particles", "the case has no superfluid or normal particles");
+  }
+  double largest_mass = 0.0;
+  for (const auto* kind : {&superfluid, &normal, &wall}) {
+    for (const double m : kind->mass) {
+      largest_mass = std::max(largest_mass, m);
+    }
+  }
+  require_positive_finite(case_file, "physics.superfluid_density",
+                          "the particle mass (density times lattice cell volume)", largest_mass);
+  const fixedpoint::Scale mass_scale =
+      fixedpoint::Scale::covering(largest_mass, mass_fraction_bits);
+  const fixedpoint::Scale temperature_scale =
+      fixedpoint::Scale::covering(parameters.temperature, 52);
+  const fixedpoint::Scale spin_scale =
+      fixedpoint::Scale::covering(std::max(std::abs(parameters.spin), 1.0), 50);
+
+  State<D, Raw> state;
+  auto fill_moving = [&](auto& set, const KindParticles<D>& kind) {
+    set.position.set_scale(parameters.position_scale);
+    set.momentum.set_scale(parameters.momentum_scale);
+    set.mass.set_scale(mass_scale);
+    set.temperature.set_scale(temperature_scale);
+    set.spin.set_scale(spin_scale);
+    fill_vector_field<Arith, D>(case_file, "particles", kind.position, set.position);
+    set.momentum.resize(kind.position.size()); // at rest
+    fill_scalar_field<Arith>(case_file, "physics.superfluid_density", kind.mass, set.mass);
+    fill_scalar_field<Arith>(case_file, "physics.temperature",
+                             std::vector<double>(kind.position.size(), parameters.temperature),
+                             set.temperature);
+    fill_scalar_field<Arith>(case_file, "spin.coefficient",
+                             std::vector<double>(kind.position.size(), parameters.spin), set.spin);
+  };
+  fill_moving(state.superfluid, superfluid);
+  fill_moving(state.normal, normal);
+  state.wall.position.set_scale(parameters.position_scale);
+  state.wall.velocity.set_scale(
+      fixedpoint::Scale::covering(std::max(parameters.sound_speed, 1.0), 50));
+  state.wall.mass.set_scale(mass_scale);
+  state.wall.temperature.set_scale(temperature_scale);
+  state.wall.spin.set_scale(spin_scale);
+  fill_vector_field<Arith, D>(case_file, "particles", wall.position, state.wall.position);
+  fill_vector_field<Arith, D>(case_file, "particles", wall.velocity, state.wall.velocity);
+  fill_scalar_field<Arith>(case_file, "physics.normal_density", wall.mass, state.wall.mass);
+  fill_scalar_field<Arith>(case_file, "physics.temperature",
+                           std::vector<double>(wall.position.size(), parameters.temperature),
+                           state.wall.temperature);
+  state.wall.spin.resize(wall.position.size()); // walls carry no spin (README)
+
+  SimulationInfo info;
+  info.case_name = case_name(case_file);
+  info.model = "two_fluid";
+  info.dimension = D;
+  info.arithmetic = options.arithmetic;
+  info.dt = parameters.dt;
+  info.setup_report.emplace_back("dt", format_scientific(parameters.dt, 4));
+  if (parameters.thermomechanical.entropy_scale > 0.0) {
+    const Thermomechanical& t = parameters.thermomechanical;
+    info.setup_report.emplace_back(
+        "sigma",
+        format_scientific(t.entropy_scale *
+                              phonon_roton_entropy(parameters.temperature, t.first_sound_speed) /
+                              t.reference_density,
+                          4));
+  }
+  if (parameters.spin != 0.0) {
+    info.setup_report.emplace_back("spin", format_scientific(parameters.spin, 4));
+  }
+  return std::make_unique<ModelSimulation<Model<D, Arith>>>(
+      Model<D, Arith>(parameters, std::move(info), std::move(state)));
+}
+
+} // namespace
+
+std::unique_ptr<Simulation> create(const CaseFile& case_file, const SimulationOptions& options) {
+  return with_dimension<2, 3>(case_file, [&]<int D>() {
+    return with_arithmetic(options.arithmetic,
+                           [&]<class Arith>() { return create_in<D, Arith>(case_file, options); });
+  });
+}
+
+} // namespace revsph::two_fluid
