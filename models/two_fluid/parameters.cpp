@@ -61,7 +61,8 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   Thermomechanical& t = p.thermomechanical;
   t.entropy_scale =
       case_file.non_negative_number_or("thermomechanical.entropy_scale", 0.0, "no force");
-  if (t.entropy_scale > 0.0) {
+  // Read whenever given, so that a case can switch the force off with the scale alone.
+  if (t.entropy_scale > 0.0 || case_file.has("thermomechanical.first_sound_speed")) {
     t.first_sound_speed = case_file.positive_number("thermomechanical.first_sound_speed");
     t.reference_density = case_file.number_or("thermomechanical.reference_density",
                                               p.superfluid_density + p.normal_density);
@@ -81,10 +82,16 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.cell_size_factor = discretisation.cell_size_factor;
   // Eq. (40)'s initial spin, C_omega v_max / (0.5 d), held fixed (README).
   const double spin_coefficient = case_file.non_negative_number_or("spin.coefficient", 0.0);
-  if (spin_coefficient > 0.0) {
+  if (spin_coefficient > 0.0 || case_file.has("spin.max_speed")) {
     p.spin = spin_coefficient * case_file.positive_number("spin.max_speed") / (0.5 * p.dr);
   }
   p.domain = read_domain<D>(case_file);
+  p.random_velocity = case_file.non_negative_number_or("initial.random_velocity", 0.0);
+  const std::int64_t seed = case_file.integer_or("initial.seed", 1);
+  if (seed < 0) {
+    case_file.fail("initial.seed", "must be >= 0");
+  }
+  p.seed = static_cast<std::uint64_t>(seed);
   if (case_file.has("interface.height")) {
     p.interface.given = true;
     p.interface.height = case_file.number("interface.height");
@@ -159,6 +166,10 @@ const KeyTable& case_keys() {
            "L0 of eq. (9); > 0"});
     t.add({"mutual_friction.vinen_beta", T::number, "m^2/s", "0",
            "beta_v of eq. (9): 1 / L(t) = 1 / L0 + beta_v t; >= 0"});
+    t.add({"initial.random_velocity", T::number, "m/s", "0",
+           "each velocity component of every superfluid and normal particle uniform in "
+           "[-value, value] at the start (a test state exercising every term); >= 0"});
+    t.add({"initial.seed", T::integer, "-", "1", "seed of the random velocities; >= 0"});
     t.add({"interface.height", T::number, "m", "none",
            "with it, the particles of superfluid and normal blocks are superfluid above "
            "y = height - amplitude sin(2 pi x / wavelength) and normal below (sec. V.1)"});

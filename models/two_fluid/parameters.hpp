@@ -58,6 +58,8 @@ struct Parameters {
   double normal_viscosity = 0.0; // eta_bar = eta_n of eqs. (34, 39), Pa s
   MutualFriction mutual_friction;
   Interface interface;
+  double random_velocity = 0.0; // each velocity component uniform in [-value, value] at start
+  std::uint64_t seed = 1;
   // [discretisation]
   double dr = 0.0;
   double support_radius = 0.0;

@@ -30,6 +30,25 @@ struct KindParticles {
   std::vector<double> mass;
 };
 
+// Uniform in [-1, 1] from a 64-bit Mersenne twister: the same numbers with every standard
+// library (std::uniform_real_distribution is not specified bit for bit).
+double symmetric_uniform(std::mt19937_64& generator) {
+  return 2.0 * static_cast<double>(generator() >> 11) * 0x1.0p-53 - 1.0;
+}
+
+// p = m v with v's components uniform in [-amplitude, amplitude] (initial.random_velocity).
+template <int D>
+std::vector<Vec<D>> initial_momenta(const KindParticles<D>& kind, double amplitude,
+                                    std::mt19937_64& generator) {
+  std::vector<Vec<D>> momenta(kind.position.size());
+  for (std::size_t i = 0; i < momenta.size(); ++i) {
+    for (int k = 0; k < D && amplitude > 0.0; ++k) {
+      momenta[i][k] = kind.mass[i] * amplitude * symmetric_uniform(generator);
+    }
+  }
+  return momenta;
+}
+
 // A wall block's velocity: `velocity`, or omega x (x - centre) for a turning one (2D).
 template <int D>
 Vec<D> wall_velocity(const CaseFile& case_file, const std::string& key, const Vec<D>& x) {
@@ -128,6 +147,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
       fixedpoint::Scale::covering(std::max(std::abs(parameters.spin), 1.0), 50);
 
   State<D, Raw> state;
+  std::mt19937_64 velocity_generator(parameters.seed);
   auto fill_moving = [&](auto& set, const KindParticles<D>& kind) {
     set.position.set_scale(parameters.position_scale);
     set.momentum.set_scale(parameters.momentum_scale);
@@ -135,7 +155,9 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
     set.temperature.set_scale(temperature_scale);
     set.spin.set_scale(spin_scale);
     fill_vector_field<Arith, D>(case_file, "particles", kind.position, set.position);
-    set.momentum.resize(kind.position.size()); // at rest
+    fill_vector_field<Arith, D>(
+        case_file, "initial.random_velocity",
+        initial_momenta<D>(kind, parameters.random_velocity, velocity_generator), set.momentum);
     fill_scalar_field<Arith>(case_file, "physics.superfluid_density", kind.mass, set.mass);
     fill_scalar_field<Arith>(case_file, "physics.temperature",
                              std::vector<double>(kind.position.size(), parameters.temperature),
