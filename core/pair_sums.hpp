@@ -29,6 +29,14 @@ struct SummedQuantity {
   fixedpoint::Scale scale;
 };
 
+// K components of one quantity (a vector's), all at the same scale.
+template <int K>
+std::array<SummedQuantity, K> components_of(const char* name, const fixedpoint::Scale& scale) {
+  std::array<SummedQuantity, K> quantities{};
+  quantities.fill({name, scale});
+  return quantities;
+}
+
 template <class Arith, int K>
 class PairSums {
   static_assert(K >= 1 && K <= 32, "a pair loop sums 1 to 32 quantities");

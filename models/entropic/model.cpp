@@ -34,20 +34,6 @@ std::array<SummedQuantity, 3> kernel_sum_quantities(const Parameters<D>& paramet
                          fixedpoint::Scale::covering(std::pow(parameters.dr, -D), 48)}};
 }
 
-template <int D>
-std::array<SummedQuantity, D> impulse_quantities(const fixedpoint::Scale& scale) {
-  std::array<SummedQuantity, D> quantities{};
-  quantities.fill({"momentum", scale});
-  return quantities;
-}
-
-template <int D>
-std::array<SummedQuantity, D> flux_quantities(const fixedpoint::Scale& scale) {
-  std::array<SummedQuantity, D> quantities{};
-  quantities.fill({"entropy_flux", scale});
-  return quantities;
-}
-
 // The hottest thermal wall (0 K without thermal walls).
 template <int D>
 double hottest_wall(const State<D>& state) {
@@ -109,9 +95,9 @@ Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state)
       heat_flux_sums_(heat_flux_quantities(parameters_)),
       dissipation_sums_(dissipation_quantities(parameters_)),
       wall_mirror_sums_(wall_mirror_quantities(parameters_, state_)),
-      flux_sums_(flux_quantities<D>(parameters_.entropy_flux_scale)),
+      flux_sums_(components_of<D>("entropy_flux", parameters_.entropy_flux_scale)),
       entropy_exchange_sums_({SummedQuantity{"entropy", state_.gas.entropy.info().scale}}),
-      impulse_sums_(impulse_quantities<D>(parameters_.momentum_scale)) {}
+      impulse_sums_(components_of<D>("momentum", parameters_.momentum_scale)) {}
 
 // sum W T: 4 times the hottest wall over dr^D; sum W v: 4 times the sound speed over dr^D;
 // sum W: the number density; each with 48 bits.

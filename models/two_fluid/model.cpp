@@ -8,17 +8,6 @@
 
 namespace revsph::two_fluid {
 
-namespace {
-
-template <int D>
-std::array<SummedQuantity, D> momentum_quantities(const fixedpoint::Scale& scale) {
-  std::array<SummedQuantity, D> quantities{};
-  quantities.fill({"momentum", scale});
-  return quantities;
-}
-
-} // namespace
-
 template <int D, class Arith>
 Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, Raw> state)
     : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
@@ -28,7 +17,7 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
                {"normal", state_.normal.position.count()},
                {"wall", state_.wall.position.count()}}),
       number_density_sums_(SummedQuantity{"number_density", parameters_.density_scale}),
-      impulse_sums_(momentum_quantities<D>(parameters_.momentum_scale)) {}
+      impulse_sums_(components_of<D>("momentum", parameters_.momentum_scale)) {}
 
 template <int D, class Arith>
 std::span<const Substep<Model<D, Arith>>> Model<D, Arith>::palindrome() {

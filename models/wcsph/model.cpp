@@ -10,18 +10,6 @@
 
 namespace revsph::wcsph {
 
-namespace {
-
-// D copies of one summed quantity's description, for the acceleration's components.
-template <int D>
-std::array<SummedQuantity, D> acceleration_quantities(const fixedpoint::Scale& scale) {
-  std::array<SummedQuantity, D> quantities{};
-  quantities.fill({"acceleration", scale});
-  return quantities;
-}
-
-} // namespace
-
 template <int D, class Arith>
 Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, Raw> state)
     : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
@@ -33,7 +21,7 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
                  parameters_.cell_size_factor,
              state_.wall.position.count(), "wall"),
       density_sums_(SummedQuantity{"density", parameters_.density_scale}),
-      acceleration_sums_(acceleration_quantities<D>(parameters_.acceleration_scale)) {
+      acceleration_sums_(components_of<D>("acceleration", parameters_.acceleration_scale)) {
   if (parameters_.anti_clump_pressure > 0.0) {
     anti_clump_kernel_.emplace(0.5 * parameters_.dr); // App. A: support dr / 2
   }

@@ -4,6 +4,7 @@
 // momentum and total entropy are kept in integers; golden hashes.
 
 #include "core/threads.hpp"
+#include "reversibility_expectations.hpp"
 #include "simulation_fixture.hpp"
 #include "verify/reversibility.hpp"
 
@@ -25,37 +26,22 @@ using revsph::testing::hash_of;
 using revsph::testing::make_simulation;
 using revsph::testing::named_value;
 
-void expect_returns(const std::string& name, std::int64_t steps) {
-  for (const int threads : {1, 2}) {
-    const int previous = revsph::thread_count();
-    revsph::set_thread_count(threads);
-    auto simulation = make_simulation(name);
-    VerifyOptions options;
-    options.steps = steps;
-    const auto report = revsph::verify_reversibility(*simulation, options);
-    EXPECT_TRUE(report.identical())
-        << name << ", " << threads << " threads: " << report.comparison.verdict();
-    EXPECT_NE(report.initial_hash, report.turning_point_hash) << name << " did move";
-    revsph::set_thread_count(previous);
-  }
-}
-
 TEST(Superfluid, RandomDropletReturnsBitwiseOnOneAndTwoThreads) {
-  expect_returns("droplet-small", 2000);
+  revsph::testing::expect_returns_on_one_and_two_threads("droplet-small", 2000);
 }
 
 TEST(Superfluid, SecondSoundReturnsBitwiseOnOneAndTwoThreads) {
-  expect_returns("second-sound-small", 2000);
+  revsph::testing::expect_returns_on_one_and_two_threads("second-sound-small", 2000);
 }
 
 TEST(Superfluid, ThreeDimensionalDropletReturnsBitwise) {
-  expect_returns("droplet-3d-small", 500);
+  revsph::testing::expect_returns_on_one_and_two_threads("droplet-3d-small", 500);
 }
 
 // The reversible core on the fountain's geometry (glass shells, cooler walls, gravity, a free
 // surface) at dr = d / 2: about 1 900 fluid and 2 600 wall and dummy particles.
 TEST(Superfluid, FountainReversibleCoreReturnsBitwiseOnOneAndTwoThreads) {
-  expect_returns("fountain-small", 2000);
+  revsph::testing::expect_returns_on_one_and_two_threads("fountain-small", 2000);
 }
 
 // Each sub-step (drift, copy_one, copy_two) alone, forward then with -dt, on random states: the

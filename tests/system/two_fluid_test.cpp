@@ -5,6 +5,7 @@
 // to second order in dt; golden hashes.
 
 #include "core/threads.hpp"
+#include "reversibility_expectations.hpp"
 #include "simulation_fixture.hpp"
 #include "verify/reversibility.hpp"
 
@@ -23,27 +24,12 @@ using revsph::VerifyOptions;
 using revsph::testing::hash_of;
 using revsph::testing::make_simulation;
 
-void expect_returns(const std::string& name, std::int64_t steps) {
-  for (const int threads : {1, 2}) {
-    const int previous = revsph::thread_count();
-    revsph::set_thread_count(threads);
-    auto simulation = make_simulation(name);
-    VerifyOptions options;
-    options.steps = steps;
-    const auto report = revsph::verify_reversibility(*simulation, options);
-    EXPECT_TRUE(report.identical())
-        << name << ", " << threads << " threads: " << report.comparison.verdict();
-    EXPECT_NE(report.initial_hash, report.turning_point_hash) << name << " did move";
-    revsph::set_thread_count(previous);
-  }
-}
-
 TEST(TwoFluid, RayleighTaylorReturnsBitwiseOnOneAndTwoThreads) {
-  expect_returns("rayleigh-taylor-small", 2000);
+  revsph::testing::expect_returns_on_one_and_two_threads("rayleigh-taylor-small", 2000);
 }
 
 TEST(TwoFluid, RandomMixtureReturnsBitwiseOnOneAndTwoThreads) {
-  expect_returns("two-fluid-mixture-small", 2000);
+  revsph::testing::expect_returns_on_one_and_two_threads("two-fluid-mixture-small", 2000);
 }
 
 // Kick and drift alone, forward then with -dt, on the mixture's random momenta with positions
