@@ -3,6 +3,7 @@
 #include "core/carrier_field.hpp"
 #include "core/case_values.hpp"
 #include "core/state_snapshot.hpp"
+#include "core/verlet.hpp"
 #include "fixedpoint/exact_sum.hpp"
 #include "models/entropic/pair_terms.hpp"
 
@@ -426,23 +427,9 @@ void Model<D>::kick(double dt) {
 template <int D>
 void Model<D>::drift(double dt) {
   update_constants();
-  Field& position = state_.gas.position;
-  const Field& momentum = state_.gas.momentum;
-  const fixedpoint::Scale& x_scale = position.info().scale;
-  const fixedpoint::Scale& m_scale = momentum.info().scale;
-  const std::span<const double> gas_mass = of_gas(mass_);
   FaultRecorder faults;
-  // x += round(dt M / m): dt (-M) / m is -(dt M / m) bit for bit, so the drift is odd in M.
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < position.count(); ++i) {
-    for (int k = 0; k < D; ++k) {
-      const double velocity = fixedpoint::to_real(momentum.at(k, i), m_scale) / gas_mass[i];
-      if (!FixedArithmetic::try_increment(position.at(k, i), dt * velocity, x_scale)) {
-        faults.record(i, "gas", "position", "overflow or non-finite value in a drift");
-      }
-    }
-  }
-  faults.throw_if_any();
+  drift_by_momentum<FixedArithmetic>(state_.gas.position, state_.gas.momentum, of_gas(mass_), dt,
+                                     faults);
   geometry_valid_ = false;
   layout_current_ = false;
 }

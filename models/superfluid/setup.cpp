@@ -3,6 +3,7 @@
 #include "core/case_values.hpp"
 #include "core/dimension.hpp"
 #include "core/particle_blocks.hpp"
+#include "core/portable_random.hpp"
 #include "core/run_settings.hpp"
 #include "core/state_fill.hpp"
 #include "models/superfluid/model.hpp"
@@ -23,12 +24,6 @@ double bytes_per_particle(int dimension, double support_radius_over_dr) {
   return 400.0 + neighbour_list_bytes(dimension, support_radius_over_dr);
 }
 constexpr int mass_fraction_bits = 52;
-
-// Uniform in [-1, 1] from a 64-bit Mersenne twister: the same numbers with every standard
-// library (std::uniform_real_distribution is not specified bit for bit).
-double symmetric_uniform(std::mt19937_64& generator) {
-  return 2.0 * static_cast<double>(generator() >> 11) * 0x1.0p-53 - 1.0;
-}
 
 // Copy 1 of the initial fields: rest at s0, plus the standing wave of eq. (26) and the seeded
 // random perturbations.

@@ -169,23 +169,10 @@ void Model<D, Arith>::drift(double dt) {
   update_constants();
   FaultRecorder faults;
   for_each_moving([&](auto& kind, std::size_t set) {
-    const std::span<const double> mass = layout_.part_of_set(std::span<const double>(mass_), set);
-    const auto& x_scale = kind.position.info().scale;
-    const auto& p_scale = kind.momentum.info().scale;
-    const std::size_t n = kind.position.count();
-    // x += round(dt p / m): dt (-p) / m is -(dt p / m) bit for bit, so the drift is odd in p.
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
-      for (int k = 0; k < D; ++k) {
-        const double velocity = Arith::real(kind.momentum.at(k, i), p_scale) / mass[i];
-        if (!Arith::try_increment(kind.position.at(k, i), dt * velocity, x_scale)) {
-          faults.record(i, kind.position.info().particle_set.c_str(), "position",
-                        "overflow or non-finite value in a drift");
-        }
-      }
-    }
-    faults.throw_if_any();
+    drift_by_momentum<Arith>(kind.position, kind.momentum,
+                             layout_.part_of_set(std::span<const double>(mass_), set), dt, faults);
   });
+
   density_valid_ = false;
   impulses_valid_ = false;
 }

@@ -3,6 +3,7 @@
 #include "core/case_values.hpp"
 #include "core/dimension.hpp"
 #include "core/particle_blocks.hpp"
+#include "core/portable_random.hpp"
 #include "core/run_settings.hpp"
 #include "core/state_fill.hpp"
 #include "models/two_fluid/model.hpp"
@@ -29,12 +30,6 @@ struct KindParticles {
   std::vector<Vec<D>> position, velocity;
   std::vector<double> mass;
 };
-
-// Uniform in [-1, 1] from a 64-bit Mersenne twister: the same numbers with every standard
-// library (std::uniform_real_distribution is not specified bit for bit).
-double symmetric_uniform(std::mt19937_64& generator) {
-  return 2.0 * static_cast<double>(generator() >> 11) * 0x1.0p-53 - 1.0;
-}
 
 // p = m v with v's components uniform in [-amplitude, amplitude] (initial.random_velocity).
 template <int D>
@@ -117,11 +112,10 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
       generator.seed(static_cast<std::uint64_t>(seed));
     }
     for (const Vec<D>& x : block.positions) {
-      // Uniform in [0, 1) from the generator's bits: the same draw with every standard library.
-      const bool is_superfluid =
-          block.kind == "mixed" ? static_cast<double>(generator() >> 11) * 0x1.0p-53 < fraction
-          : parameters.interface.given ? parameters.interface.superfluid_at(x[0], x[D - 1])
-                                       : block.kind == "superfluid";
+      const bool is_superfluid = block.kind == "mixed" ? unit_uniform(generator) < fraction
+                                 : parameters.interface.given
+                                     ? parameters.interface.superfluid_at(x[0], x[D - 1])
+                                     : block.kind == "superfluid";
       KindParticles<D>& kind = is_superfluid ? superfluid : normal;
       kind.position.push_back(x);
       kind.mass.push_back(
