@@ -92,6 +92,14 @@ concept HasEnergyAccounts = requires(M& model, const M& const_model,
   model.restore_energy_accounts(accounts);
 };
 
+// Optional: a model whose terms depend on the time (a decay law, a ramp) is told the time at the
+// start of every step, from the step count, so that a run continued from a snapshot sees the
+// same times as one that never stopped.
+template <class M>
+concept HasClock = requires(M& model, double time) {
+  model.set_time(time);
+};
+
 // Optional: operations after each full step, outside the palindrome (core/step_composition.hpp).
 template <class M>
 concept HasStepHooks = requires {
@@ -157,6 +165,9 @@ public:
     const double dt = model_.info().dt;
     for (std::int64_t s = 0; s < steps; ++s) {
       try {
+        if constexpr (HasClock<M>) {
+          model_.set_time(static_cast<double>(steps_taken_) * dt);
+        }
         apply_step<M>(model_, M::palindrome(), dt);
         for (const StepHook<M>& hook : step_hooks_of<M>()) {
           hook.apply(model_, steps_taken_ + 1);

@@ -17,14 +17,27 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
                {"normal", state_.normal.position.count()},
                {"wall", state_.wall.position.count()}}),
       number_density_sums_(SummedQuantity{"number_density", parameters_.density_scale}),
-      impulse_sums_(components_of<D>("momentum", parameters_.momentum_scale)) {}
+      impulse_sums_(components_of<D>("momentum", parameters_.momentum_scale)),
+      counted_impulse_sums_(components_of<2 * D>("momentum", parameters_.momentum_scale)),
+      normal_weight_sums_(SummedQuantity{"normal_weight", parameters_.density_scale}),
+      dissipation_sums_([this] {
+        std::array<SummedQuantity, D + 2> q{};
+        for (int k = 0; k < D; ++k) {
+          q[k] = {"momentum", parameters_.momentum_scale};
+        }
+        q[D] = {"dissipated", parameters_.energy_scale};
+        q[D + 1] = {"wall_work", parameters_.energy_scale};
+        return q;
+      }()) {}
 
 template <int D, class Arith>
 std::span<const Substep<Model<D, Arith>>> Model<D, Arith>::palindrome() {
   static constexpr Substep<Model> sequence[] = {
+      {"dissipate", 0.5, &Model::dissipate_substep, &Model::dissipation_acts},
       {"kick", 0.5, &Model::kick_substep},
       {"drift", 1.0, &Model::drift_substep},
       {"kick", 0.5, &Model::kick_substep},
+      {"dissipate", 0.5, &Model::dissipate_substep, &Model::dissipation_acts},
   };
   return sequence;
 }
@@ -61,6 +74,11 @@ void Model<D, Arith>::update_constants() {
   spin_ =
       CarrierField<Arith>{&state_.superfluid.spin, &state_.normal.spin, &state_.wall.spin}.reals();
   const std::size_t n = mass_.size();
+  kind_.assign(n, superfluid_kind);
+  for (const std::size_t set : {normal_set, wall_set}) {
+    const std::span<std::uint8_t> part = layout_.part_of_set(std::span(kind_), set);
+    std::fill(part.begin(), part.end(), set == normal_set ? normal_kind : wall_kind);
+  }
   moves_.assign(n, 1);
   rest_density_.assign(n, parameters_.normal_density);
   theta_factor_.assign(n, 0.0);
@@ -101,7 +119,8 @@ void Model<D, Arith>::update_density() {
                 Gathered<double>{spin_, &in.spin},
                 Gathered<double>{rest_density_, &slot_rest_density_},
                 Gathered<double>{theta_factor_, &slot_theta_factor_},
-                Gathered<std::uint8_t>{moves_, &in.moves});
+                Gathered<std::uint8_t>{moves_, &in.moves},
+                Gathered<std::uint8_t>{kind_, &dissipation_inputs_.kind});
   const std::size_t slots = layout_.slot_count();
   for (std::vector<double>* v :
        {&in.volume, &in.density, &in.pressure, &in.temperature_term, &in.thermomechanical}) {
@@ -135,33 +154,59 @@ void Model<D, Arith>::update_impulses(double tau) {
     return;
   }
   const Parameters<D>& p = parameters_;
-  const ImpulseTerm<D> term{kernel_,
-                            inputs_,
-                            p.pressure_form,
-                            p.rotational_viscosity,
-                            p.gravity,
-                            tau,
-                            p.thermomechanical.entropy_scale > 0.0,
-                            D == 2 && p.rotational_viscosity > 0.0 && p.spin != 0.0};
-  sum_pairs<Arith>(layout_, term, impulse_sums_);
+  const bool thermomechanical = p.thermomechanical.entropy_scale > 0.0;
+  const auto term = [&]<bool Counted>(std::bool_constant<Counted>) {
+    return ImpulseTerm<D, Counted>{kernel_,   inputs_, p.pressure_form,  p.rotational_viscosity,
+                                   p.gravity, tau,     thermomechanical, spin_on()};
+  };
+  if (counts_force_work()) {
+    sum_pairs<Arith>(layout_, term(std::true_type{}), counted_impulse_sums_);
+  } else {
+    sum_pairs<Arith>(layout_, term(std::false_type{}), impulse_sums_);
+  }
   impulse_tau_ = tau;
   impulses_valid_ = true;
 }
 
 template <int D, class Arith>
-template <class Field>
-void Model<D, Arith>::add_impulses(Field& momentum, std::size_t set, FaultRecorder& faults) {
+template <class Sums>
+void Model<D, Arith>::add_impulses(const Sums& sums) {
   // p += the exact total of the particle's rounded pair impulses, no rounding of its own: a
   // reversed kick subtracts bit for bit what this one added.
-  add_pair_totals<Arith>(momentum, impulse_sums_, 0, layout_.slots_of_set(set), faults);
+  FaultRecorder faults;
+  for_each_moving([&](auto& kind, std::size_t set) {
+    add_pair_totals<Arith>(kind.momentum, sums, 0, layout_.slots_of_set(set), faults);
+  });
+  faults.throw_if_any();
+  if (!counts_force_work()) {
+    return;
+  }
+  // The work of the non-gradient impulses J: J . (p_before + p_after) / 2m, exact for the
+  // kinetic energy they change; summed in particle order (independent of the threads).
+  for_each_moving([&](const auto& kind, std::size_t set) {
+    const std::span<const std::uint32_t> slots = layout_.slots_of_set(set);
+    const std::span<const double> mass = layout_.part_of_set(std::span<const double>(mass_), set);
+    const auto& p_scale = kind.momentum.info().scale;
+    for (std::size_t i = 0; i < slots.size(); ++i) {
+      double work = 0.0;
+      for (int k = 0; k < D; ++k) {
+        const double after = Arith::real(kind.momentum.at(k, i), p_scale);
+        const double middle = after - 0.5 * sums.value(k, slots[i]);
+        work += sums.value(D + k, slots[i]) * middle;
+      }
+      force_work_ += work / mass[i];
+    }
+  });
 }
 
 template <int D, class Arith>
 void Model<D, Arith>::kick(double dt) {
   update_impulses(dt);
-  FaultRecorder faults;
-  add_impulses(state_.superfluid.momentum, superfluid_set, faults);
-  add_impulses(state_.normal.momentum, normal_set, faults);
+  if (counts_force_work()) {
+    add_impulses(counted_impulse_sums_);
+  } else {
+    add_impulses(impulse_sums_);
+  }
 }
 
 template <int D, class Arith>
@@ -172,6 +217,7 @@ void Model<D, Arith>::drift(double dt) {
     drift_by_momentum<Arith>(kind.position, kind.momentum,
                              layout_.part_of_set(std::span<const double>(mass_), set), dt, faults);
   });
+  faults.throw_if_any();
 
   density_valid_ = false;
   impulses_valid_ = false;

@@ -2,7 +2,9 @@
 // Tsuzuki's two-fluid helium II (paper 5): superfluid and normal particles with a position-only
 // conservative core (number density 36, Tait pressure in three forms, thermomechanical force 27,
 // spin term 40, gravity) integrated by velocity Verlet in momentum form, bitwise reversible in
-// fixed point: kick(dt/2) drift(dt) kick(dt/2).
+// fixed point: kick(dt/2) drift(dt) kick(dt/2). The irreversible part (viscosity 34/39, mutual
+// friction 29/35: dissipation_terms.hpp) is a dissipate(dt/2) sub-step at both ends of the
+// palindrome, a no-op where it is off; the energy it takes is counted (energy accounts).
 
 #include "core/carrier_field.hpp"
 #include "core/energy.hpp"
@@ -12,6 +14,7 @@
 #include "core/simulation.hpp"
 #include "core/slot_layout.hpp"
 #include "core/step_composition.hpp"
+#include "models/two_fluid/dissipation_terms.hpp"
 #include "models/two_fluid/pair_terms.hpp"
 #include "models/two_fluid/parameters.hpp"
 #include "models/two_fluid/state.hpp"
@@ -34,8 +37,13 @@ public:
   const SimulationInfo& info() const { return info_; }
   const Parameters<D>& parameters() const { return parameters_; }
   // Kinetic sum |p|^2 / 2m, internal sum m e(rho) over every particle (walls included: their
-  // density moves with the fluid), gravitational sum m g (y - y_ref).
+  // density moves with the fluid), gravitational sum m g (y - y_ref); then the accounts, so that
+  // the total stays constant: + dissipated, - the walls' work, - the work of the
+  // thermomechanical and spin forces (no gradient of this energy).
   EnergyBudget energy();
+  std::vector<EnergyTerm> energy_accounts() const;
+  void restore_energy_accounts(const std::vector<EnergyTerm>& accounts);
+  void set_time(double time) { time_ = time; }
   void derived_views(const ViewSink& sink);
   void invalidate_derived() {
     density_valid_ = false;
@@ -46,6 +54,8 @@ public:
 
   void kick(double dt);
   void drift(double dt);
+  // Viscosity and mutual friction over tau (irreversible; dissipation.cpp).
+  void dissipate(double tau);
 
   // The kinds in the layout's order.
   static constexpr std::size_t superfluid_set = 0;
@@ -55,6 +65,19 @@ public:
 private:
   static void kick_substep(Model& model, double dt) { model.kick(dt); }
   static void drift_substep(Model& model, double dt) { model.drift(dt); }
+  static void dissipate_substep(Model& model, double dt) { model.dissipate(dt); }
+  static std::string dissipation_acts(const Model& model);
+  // The thermomechanical or the spin force is on: the kick counts their work.
+  bool counts_force_work() const {
+    return parameters_.thermomechanical.entropy_scale > 0.0 || spin_on();
+  }
+  bool spin_on() const {
+    return D == 2 && parameters_.rotational_viscosity > 0.0 && parameters_.spin != 0.0;
+  }
+  double viscosity() const {
+    const Parameters<D>& p = parameters_;
+    return p.normal_viscosity > 0.0 ? p.normal_viscosity + p.rotational_viscosity : 0.0;
+  }
   CarrierField<Arith> carrier_position() const {
     return {&state_.superfluid.position, &state_.normal.position, &state_.wall.position};
   }
@@ -73,8 +96,9 @@ private:
   // e with de/drho = p / rho^2, e(rho_k) = 0.
   double pressure(double density, double rest) const;
   double internal_energy(double density, double rest) const;
-  template <class Field>
-  void add_impulses(Field& momentum, std::size_t set, FaultRecorder& faults);
+  // Adds the kick's impulses and, where counted, the work of the non-gradient forces.
+  template <class Sums>
+  void add_impulses(const Sums& sums);
 
   Parameters<D> parameters_;
   SimulationInfo info_;
@@ -84,6 +108,7 @@ private:
 
   bool constants_valid_ = false;
   std::vector<double> mass_, temperature_, spin_, rest_density_, theta_factor_;
+  std::vector<std::uint8_t> kind_; // SlotKind by carrier
   std::vector<std::uint8_t> moves_;
   bool density_valid_ = false;
   PairSums<Arith, 1> number_density_sums_;
@@ -92,6 +117,17 @@ private:
   bool impulses_valid_ = false;
   double impulse_tau_ = 0.0;
   PairSums<Arith, D> impulse_sums_;
+  PairSums<Arith, 2 * D> counted_impulse_sums_; // impulses, then the non-gradient ones alone
+
+  // The dissipate sub-step.
+  double time_ = 0.0;
+  DissipationInputs dissipation_inputs_;
+  PairSums<Arith, 1> normal_weight_sums_;
+  PairSums<Arith, D + 2> dissipation_sums_;
+  // Accounts since the run began (J, or J/m in 2D).
+  double dissipated_ = 0.0; // by viscosity and mutual friction
+  double wall_work_ = 0.0;  // done by moving walls on the fluid
+  double force_work_ = 0.0; // done by the thermomechanical and spin forces
 };
 
 extern template class Model<2, FixedArithmetic>;

@@ -1,6 +1,8 @@
 // The two-fluid model's energy budget and its physical views for snapshots.
 #include "models/two_fluid/model.hpp"
 
+#include <stdexcept>
+
 namespace revsph::two_fluid {
 
 template <int D, class Arith>
@@ -28,8 +30,32 @@ EnergyBudget Model<D, Arith>::energy() {
   for (std::size_t s = 0; s < layout_.slot_count(); ++s) {
     internal += in.mass[s] * internal_energy(in.density[s], slot_rest_density_[s]);
   }
-  return EnergyBudget{
-      {{"kinetic", kinetic}, {"internal", internal}, {"gravitational", gravitational}}};
+  return EnergyBudget{{{"kinetic", kinetic},
+                       {"internal", internal},
+                       {"gravitational", gravitational},
+                       {"dissipated", dissipated_},
+                       {"wall_work", -wall_work_},
+                       {"force_work", -force_work_}}};
+}
+
+template <int D, class Arith>
+std::vector<EnergyTerm> Model<D, Arith>::energy_accounts() const {
+  return {{"dissipated", dissipated_}, {"wall_work", wall_work_}, {"force_work", force_work_}};
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::restore_energy_accounts(const std::vector<EnergyTerm>& accounts) {
+  for (const EnergyTerm& account : accounts) {
+    if (account.name == "dissipated") {
+      dissipated_ = account.value;
+    } else if (account.name == "wall_work") {
+      wall_work_ = account.value;
+    } else if (account.name == "force_work") {
+      force_work_ = account.value;
+    } else {
+      throw std::invalid_argument("unknown energy account '" + account.name + "'");
+    }
+  }
 }
 
 template <int D, class Arith>

@@ -54,9 +54,11 @@ struct ImpulseInputs {
 //   gravity: -tau m g along the last axis (self).
 // The antisymmetric parts are summed before the rounding, so b's share is the exact negative of
 // a's where the thermomechanical term is off.
-template <int D>
+template <int D, bool Accounted = false>
 struct ImpulseTerm {
-  static constexpr int width = D;
+  // Accounted: components D..2D-1 carry the thermomechanical and spin impulses alone, whose work
+  // the model counts (they are no gradient of an energy it knows).
+  static constexpr int width = Accounted ? 2 * D : D;
   const WendlandQuintic<D>& kernel;
   const ImpulseInputs& in;
   PressureForm form;
@@ -86,8 +88,8 @@ struct ImpulseTerm {
     return 0.0;
   }
 
-  void pair(const PairGeometry<D>& p, std::array<double, D>& to_a,
-            std::array<double, D>& to_b) const {
+  void pair(const PairGeometry<D>& p, std::array<double, width>& to_a,
+            std::array<double, width>& to_b) const {
     const std::uint32_t a = p.a;
     const std::uint32_t b = p.b;
     // grad_a W_ab = (W'(r) / r) x_ab, finite for coincident particles.
@@ -100,16 +102,20 @@ struct ImpulseTerm {
     for (int k = 0; k < D; ++k) {
       to_a[k] = -phi * gradient[k];
     }
+    std::array<double, D> other_a{}, other_b{};
     if (spin_on) {
       const double factor =
           2.0 * rotational_viscosity * in.volume[a] * in.volume[b] * (in.spin[a] + in.spin[b]);
       if constexpr (D == 2) {
-        to_a[0] += factor * gradient[1]; // grad W x omega z = (g_y, -g_x) omega
-        to_a[1] += -factor * gradient[0];
+        other_a[0] = factor * gradient[1]; // grad W x omega z = (g_y, -g_x) omega
+        other_a[1] = -factor * gradient[0];
+        to_a[0] += other_a[0];
+        to_a[1] += other_a[1];
       }
     }
     for (int k = 0; k < D; ++k) {
       to_b[k] = -to_a[k];
+      other_b[k] = -other_a[k];
     }
     if (thermomechanical_on) {
       const double pair_factor =
@@ -119,6 +125,14 @@ struct ImpulseTerm {
       for (int k = 0; k < D; ++k) {
         to_a[k] += on_a * gradient[k];
         to_b[k] += on_b * gradient[k];
+        other_a[k] += on_a * gradient[k];
+        other_b[k] += on_b * gradient[k];
+      }
+    }
+    if constexpr (Accounted) {
+      for (int k = 0; k < D; ++k) {
+        to_a[D + k] = other_a[k];
+        to_b[D + k] = other_b[k];
       }
     }
   }

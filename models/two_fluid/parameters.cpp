@@ -30,7 +30,9 @@ MutualFriction read_mutual_friction(const CaseFile& case_file, double superfluid
   MutualFriction f;
   f.superfluid_density = superfluid_density;
   f.alpha = case_file.non_negative_number_or("mutual_friction.alpha", 0.0, "no mutual friction");
-  if (f.alpha == 0.0) {
+  // Read whenever given, so that a case can switch the friction off with alpha alone.
+  if (f.alpha == 0.0 && !case_file.has("mutual_friction.circulation_quantum") &&
+      !case_file.has("mutual_friction.initial_line_density")) {
     return f;
   }
   f.circulation_quantum = case_file.positive_number("mutual_friction.circulation_quantum");
@@ -38,6 +40,28 @@ MutualFriction read_mutual_friction(const CaseFile& case_file, double superfluid
   f.vinen_beta =
       case_file.non_negative_number_or("mutual_friction.vinen_beta", 0.0, "L stays at L0");
   return f;
+}
+
+// Sec. IV.1: dt below the CFL, diffusion and body-force limits of its ref. [54] (Morris, Fox &
+// Zhu 1997): courant_number h_s / c (read_particle_discretisation), viscous_number h^2 / nu and
+// force_number sqrt(h / g), h = support / 2 the Wendland kernel's smoothing length and nu the
+// normal fluid's (eta_bar + eta_r) / rho_n.
+template <int D>
+void limit_time_step(const CaseFile& case_file, Parameters<D>& p) {
+  const double h = 0.5 * p.support_radius;
+  const double viscous_number = case_file.number_or("discretisation.viscous_number", 0.125);
+  require_positive_finite(case_file, "discretisation.viscous_number", "a time-step factor",
+                          viscous_number);
+  const double force_number = case_file.number_or("discretisation.force_number", 0.25);
+  require_positive_finite(case_file, "discretisation.force_number", "a time-step factor",
+                          force_number);
+  if (p.normal_viscosity > 0.0) {
+    const double nu = (p.normal_viscosity + p.rotational_viscosity) / p.normal_density;
+    p.dt = std::min(p.dt, viscous_number * h * h / nu);
+  }
+  if (p.gravity != 0.0) {
+    p.dt = std::min(p.dt, force_number * std::sqrt(h / std::abs(p.gravity)));
+  }
 }
 
 } // namespace
@@ -73,21 +97,27 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
       case_file.non_negative_number_or("physics.rotational_viscosity", 0.0, "no spin term");
   p.normal_viscosity = case_file.non_negative_number_or("physics.normal_viscosity", 0.0);
   p.mutual_friction = read_mutual_friction(case_file, p.superfluid_density);
-  // Declared with their meaning, but the irreversible sub-step is still to be built (issue 18):
-  // refused rather than silently ignored.
-  if (p.normal_viscosity > 0.0) {
-    case_file.fail("physics.normal_viscosity", "the viscosity of eq. (34) is not built yet");
-  }
-  if (p.mutual_friction.alpha > 0.0) {
-    case_file.fail("mutual_friction.alpha", "the mutual friction of eq. (29) is not built yet");
-  }
-
   const ParticleDiscretisation discretisation =
       read_particle_discretisation(case_file, p.sound_speed);
   p.dr = discretisation.dr;
   p.support_radius = discretisation.support_radius;
   p.dt = discretisation.dt;
+  if (!case_file.has("discretisation.dt")) {
+    limit_time_step(case_file, p);
+  }
   p.cell_size_factor = discretisation.cell_size_factor;
+  // The friction is an explicit exchange: over a half step it must relax the relative velocity
+  // by a small fraction, not overshoot it (C_L / rho is largest at t = 0, where L = L0).
+  if (p.mutual_friction.active()) {
+    const double rate =
+        p.mutual_friction.coefficient(0.0) / std::min(p.superfluid_density, p.normal_density);
+    if (!(rate * p.dt < 0.1)) {
+      case_file.fail("mutual_friction.initial_line_density",
+                     "the friction rate (2/3) alpha kappa L0 rho_s / min(rho_s, rho_n) = " +
+                         std::to_string(rate) + " 1/s relaxes more than 10 % per step of " +
+                         std::to_string(p.dt) + " s");
+    }
+  }
   // Eq. (40)'s initial spin, C_omega v_max / (0.5 d), held fixed (README).
   const double spin_coefficient = case_file.non_negative_number_or("spin.coefficient", 0.0);
   if (spin_coefficient > 0.0 || case_file.has("spin.max_speed")) {
@@ -115,6 +145,8 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.momentum_scale =
       scale_or(case_file, "fixed_point.momentum_exponent", heavier * p.sound_speed, 50);
   p.density_scale = scale_or(case_file, "fixed_point.density_exponent", std::pow(p.dr, -D), 48);
+  p.energy_scale = scale_or(case_file, "fixed_point.energy_exponent",
+                            heavier * p.sound_speed * p.sound_speed, 60);
   return p;
 }
 
@@ -144,8 +176,9 @@ const KeyTable& case_keys() {
            "eta_r of eq. (39): the spin term 2 eta_r curl omega (eq. 40), with the viscosity "
            "eta_bar + eta_r; >= 0"});
     t.add({"physics.normal_viscosity", T::number, "Pa s", "0",
-           "eta_bar = eta_n of eqs. (34, 39), on normal and wall particles; >= 0; "
-           "irreversible"});
+           "eta_bar = eta_n of eqs. (34, 39): the Laplacian viscosity (eta_bar + eta_r) on "
+           "normal-normal and normal-wall pairs; >= 0 (0: no Laplacian viscosity, eta_r's "
+           "share included); irreversible"});
     t.add({"pressure.form",
            T::string,
            "-",
@@ -200,6 +233,11 @@ const KeyTable& case_keys() {
            "omega x (x - centre), seen by the irreversible terms only"});
     t.add({"particles[].rotation_centre", T::numbers, "m", "origin",
            "centre of a turning wall block"});
+    t.add({"discretisation.viscous_number", T::number, "1", "0.125",
+           "dt <= viscous_number h^2 / nu (h = support / 2, nu = (eta_bar + eta_r) / rho_n) "
+           "where dt comes from courant_number (sec. IV.1, Morris et al. 1997); > 0"});
+    t.add({"discretisation.force_number", T::number, "1", "0.25",
+           "dt <= force_number sqrt(h / g) where dt comes from courant_number; > 0"});
     t.add({"fixed_point.position_exponent", T::integer, "-",
            "covers the domain with 52 fraction bits",
            "positions are stored as integers times 2^exponent"});
@@ -208,6 +246,9 @@ const KeyTable& case_keys() {
            "momenta are stored as integers times 2^exponent"});
     t.add({"fixed_point.density_exponent", T::integer, "-", "covers dr^-D with 48 fraction bits",
            "scale of the number-density sums sum_j W_ij"});
+    t.add({"fixed_point.energy_exponent", T::integer, "-",
+           "covers max(rho_s, rho_n) dr^D c^2 with 60 fraction bits",
+           "scale of the dissipated energy and the walls' work summed over pairs (diagnostic)"});
     return t;
   }();
   return table;

@@ -70,6 +70,7 @@ struct Parameters {
   fixedpoint::Scale position_scale;
   fixedpoint::Scale momentum_scale;
   fixedpoint::Scale density_scale; // the number-density sums (sum W, 1/m^D)
+  fixedpoint::Scale energy_scale;  // the dissipation's energy accounts, summed over pairs
 
   double rest_density(bool superfluid) const {
     return superfluid ? superfluid_density : normal_density;

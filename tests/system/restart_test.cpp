@@ -128,6 +128,38 @@ TEST(Restart, EnergyAccountsOfHeaterAndWallsGoOn) {
   EXPECT_LT(restarted.at("relative_error"), 1e-6);
 }
 
+// The two-fluid rotating cylinder: the mutual friction's L(t) decays with the time (eq. 9), and
+// the dissipated energy and the walls' work are the model's accounts. A continued run must take
+// the time from the step count and the accounts from the snapshot: same state, same budget.
+TEST(Restart, TwoFluidFrictionClockAndAccountsGoOn) {
+  TempDirectory directory("revsph-restart-test");
+  const std::int64_t n = 60;
+  RunOptions whole;
+  whole.case_options.case_path = "rotating-cylinder-small";
+  whole.case_options.overrides = {"output.snapshot_every=30", "output.energy_every=30"};
+  whole.out_dir = (directory.path() / "whole").string();
+  whole.steps = n;
+  ASSERT_EQ(run(whole), 0);
+  RunOptions second_half;
+  second_half.case_options.from_snapshot =
+      (directory.path() / "whole" / "snapshots" / snapshot_name(n / 2)).string();
+  second_half.out_dir = (directory.path() / "second").string();
+  second_half.steps = n / 2;
+  ASSERT_EQ(run(second_half), 0);
+
+  const auto uninterrupted_end =
+      revsph::read_checked_snapshot(directory.path() / "whole" / "snapshots" / snapshot_name(n));
+  const auto restarted_end =
+      revsph::read_checked_snapshot(directory.path() / "second" / "snapshots" / snapshot_name(n));
+  EXPECT_EQ(restarted_end.metadata.state_hash, uninterrupted_end.metadata.state_hash);
+  const auto uninterrupted = last_energy_row(directory.path() / "whole" / "energy.csv");
+  const auto restarted = last_energy_row(directory.path() / "second" / "energy.csv");
+  EXPECT_GT(uninterrupted.at("dissipated"), 0.0);
+  for (const char* column : {"dissipated", "wall_work", "force_work", "total"}) {
+    EXPECT_EQ(restarted.at(column), uninterrupted.at(column)) << column;
+  }
+}
+
 TEST(Restart, OverridesOfTheOriginalRunAreKept) {
   TempDirectory directory("revsph-restart-test");
   RunOptions first;

@@ -809,6 +809,18 @@ TEST(CaseFuzz, MutantsOfSecondSoundSmall) {
   fuzz({"second-sound-small", "dr = 3.3333333333333335e-4", "dr = 1.0e-3", 4000, 6});
 }
 
+TEST(CaseFuzz, MutantsOfRotatingCylinderSmall) {
+  // The two-fluid model: a random mixture, turning walls, viscosity, mutual friction, the spin
+  // term; dr 10 um: about 300 fluid and 130 wall particles.
+  fuzz({"rotating-cylinder-small", "dr = 6.25e-6", "dr = 1.0e-5", 4000, 7});
+}
+
+TEST(CaseFuzz, MutantsOfRayleighTaylorSmall) {
+  // The two-fluid model's interface, gravity and its time-step limit; dr 6.25 um: 512 fluid and
+  // about 300 wall particles.
+  fuzz({"rayleigh-taylor-small", "dr = 4.1666666666666667e-6", "dr = 6.25e-6", 4000, 8});
+}
+
 TEST(CaseFuzz, MutantsOfDambreakSmall3D) {
   // dr 0.125: 16 fluid and about 300 wall particles.
   fuzz({"dambreak-3d-small", "dr = 0.025", "dr = 0.125", 8000, 1});

@@ -1,0 +1,90 @@
+// The irreversible sub-step of the two-fluid model (paper 5): the normal fluid's viscosity
+// (eqs. 34, 39) and the mutual friction (eqs. 29, 35) as pair exchanges (dissipation_terms.hpp),
+// with the energy they dissipate and the work of moving walls counted.
+#include "core/verlet.hpp"
+#include "models/two_fluid/model.hpp"
+
+#include <sstream>
+
+namespace revsph::two_fluid {
+
+template <int D, class Arith>
+std::string Model<D, Arith>::dissipation_acts(const Model& model) {
+  const Parameters<D>& p = model.parameters_;
+  std::ostringstream text;
+  if (model.viscosity() > 0.0) {
+    text << "normal-fluid viscosity (eta_bar + eta_r = " << model.viscosity()
+         << " Pa s, eqs. 34, 39)";
+  }
+  if (p.mutual_friction.active()) {
+    text << (text.tellp() > 0 ? " and " : "")
+         << "mutual friction (eqs. 29, 35; C_L(0) = " << p.mutual_friction.coefficient(0.0)
+         << " kg/(m^3 s))";
+  }
+  if (text.tellp() > 0) {
+    text << ", the energy counted as dissipated";
+  }
+  return text.str();
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::dissipate(double tau) {
+  const double friction =
+      parameters_.mutual_friction.active() ? parameters_.mutual_friction.coefficient(time_) : 0.0;
+  if (viscosity() == 0.0 && friction == 0.0) {
+    return;
+  }
+  update_density();
+  DissipationInputs& in = dissipation_inputs_;
+  const std::size_t slots = layout_.slot_count();
+  for (int k = 0; k < D; ++k) {
+    in.velocity[k].resize(slots);
+  }
+  for_each_moving([&](const auto& kind, std::size_t set) {
+    const std::span<const std::uint32_t> slot = layout_.slots_of_set(set);
+    const std::span<const double> mass = layout_.part_of_set(std::span<const double>(mass_), set);
+    const auto& p_scale = kind.momentum.info().scale;
+    for (std::size_t i = 0; i < slot.size(); ++i) {
+      for (int k = 0; k < D; ++k) {
+        in.velocity[k][slot[i]] = Arith::real(kind.momentum.at(k, i), p_scale) / mass[i];
+      }
+    }
+  });
+  const std::span<const std::uint32_t> wall = layout_.slots_of_set(wall_set);
+  const auto& v_scale = state_.wall.velocity.info().scale;
+  for (std::size_t i = 0; i < wall.size(); ++i) {
+    for (int k = 0; k < D; ++k) {
+      in.velocity[k][wall[i]] = Arith::real(state_.wall.velocity.at(k, i), v_scale);
+    }
+  }
+  if (friction > 0.0) {
+    // The weights move with the particles only: the density's layout is this sub-step's.
+    sum_pairs<Arith>(layout_, NormalWeightTerm<D>{kernel_, in.kind}, normal_weight_sums_);
+  }
+  const DissipationTerm<D> term{kernel_,
+                                in,
+                                inputs_.volume,
+                                friction > 0.0 ? normal_weight_sums_.values(0)
+                                               : std::span<const double>{},
+                                viscosity(),
+                                friction,
+                                tau};
+  sum_pairs<Arith>(layout_, term, dissipation_sums_);
+  FaultRecorder faults;
+  for_each_moving([&](auto& kind, std::size_t set) {
+    add_pair_totals<Arith>(kind.momentum, dissipation_sums_, 0, layout_.slots_of_set(set), faults);
+  });
+  faults.throw_if_any();
+  // The accounts, summed in slot order (independent of the threads).
+  for (std::size_t s = 0; s < slots; ++s) {
+    dissipated_ += dissipation_sums_.value(D, s);
+    wall_work_ += dissipation_sums_.value(D + 1, s);
+  }
+}
+
+template class Model<2, FixedArithmetic>;
+template class Model<3, FixedArithmetic>;
+template class Model<2, FloatArithmetic>;
+template class Model<3, FloatArithmetic>;
+
+} // namespace revsph::two_fluid

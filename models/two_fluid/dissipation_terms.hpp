@@ -1,0 +1,122 @@
+#pragma once
+// The velocity-dependent pair terms of the two-fluid model (paper 5): its irreversible part, run
+// by core's one pair loop (core/pair_sum.hpp) in the dissipate sub-step. Arrays are indexed by
+// slot (every particle, walls included, in cell order).
+//
+// Every term is a pair exchange f_a = -K_ab (v_a - v_b), f_b = -f_a with K_ab >= 0, so that
+// total momentum is exact in integers (one rounded impulse, its exact negative for the partner)
+// and the pair's energy changes by -K_ab |v_a - v_b|^2 to first order: the dissipation, counted.
+
+#include "core/kernel_wendland.hpp"
+#include "core/pair_sum.hpp"
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace revsph::two_fluid {
+
+// The kinds, in the layout's set order (model.hpp).
+enum SlotKind : std::uint8_t { superfluid_kind = 0, normal_kind = 1, wall_kind = 2 };
+
+// The denominator of eq. (29): w_a = sum over the normal particles j near a of W_aj, the weight of
+// the normal-velocity average a superfluid particle feels. Walls are frozen normal fluid and
+// count (sec. V.3: "both normal and superfluid components have frictional forces against the
+// normal fluid particles forming the wall").
+template <int D>
+struct NormalWeightTerm {
+  static constexpr int width = 1;
+  const WendlandQuintic<D>& kernel;
+  std::span<const std::uint8_t> kind;
+
+  bool receives(std::uint32_t s) const { return kind[s] == superfluid_kind; }
+  void pair(const PairGeometry<D>& p, std::array<double, 1>& to_a,
+            std::array<double, 1>& to_b) const {
+    const double w = kernel.value(p.r);
+    to_a[0] = kind[p.b] != superfluid_kind ? w : 0.0;
+    to_b[0] = kind[p.a] != superfluid_kind ? w : 0.0;
+  }
+};
+
+// Per-slot inputs of the dissipation.
+struct DissipationInputs {
+  std::vector<std::uint8_t> kind;              // SlotKind
+  std::array<std::vector<double>, 3> velocity; // p / m, or the wall's velocity
+};
+
+// The impulses of the dissipate sub-step over tau, and what they dissipate:
+//   viscosity (34, times 2: README), normal-normal and normal-wall pairs:
+//     K_ab = -2 tau (eta + eta_r) V_a V_b W'(r) / r   (eq. 39's eta_bar + eta_r on the Laplacian)
+//   mutual friction (29, 35 with the reaction's sign fixed: README), superfluid a - normal or
+//   wall b:
+//     K_ab = tau C_L V_a W_ab / w_a
+// Components 0..D-1: the impulse; D: the pair's dissipation K_ab |v_a - v_b|^2, shared equally
+// (all of it to the fluid particle against a wall); D + 1: the work the wall did on the fluid
+// particle, f_a . v_wall (walls move nothing but give no-slip).
+template <int D>
+struct DissipationTerm {
+  static constexpr int width = D + 2;
+  const WendlandQuintic<D>& kernel;
+  const DissipationInputs& in;
+  std::span<const double> volume;        // V = 1 / n (eq. 36)
+  std::span<const double> normal_weight; // w of eq. (29), superfluid slots
+  double viscosity;                      // eta + eta_r, Pa s
+  double friction;                       // C_L of eq. (29) at this time, kg/(m^3 s)
+  double tau;
+
+  bool receives(std::uint32_t s) const { return in.kind[s] != wall_kind; }
+
+  double coupling(std::uint32_t a, std::uint32_t b, double r) const {
+    const std::uint8_t ka = in.kind[a];
+    const std::uint8_t kb = in.kind[b];
+    const bool a_normal = ka != superfluid_kind; // normal or wall
+    const bool b_normal = kb != superfluid_kind;
+    if (a_normal && b_normal) {
+      if (viscosity == 0.0 || (ka == wall_kind && kb == wall_kind)) {
+        return 0.0;
+      }
+      return -2.0 * tau * viscosity * volume[a] * volume[b] * kernel.derivative_over_r(r);
+    }
+    if (friction == 0.0 || a_normal == b_normal) {
+      return 0.0; // superfluid pairs: no viscosity (the superfluid is inviscid)
+    }
+    const std::uint32_t s = ka == superfluid_kind ? a : b;
+    if (!(normal_weight[s] > 0.0)) {
+      return 0.0; // every normal neighbour on the kernel's edge: W = 0 there
+    }
+    return tau * friction * volume[s] * kernel.value(r) / normal_weight[s];
+  }
+
+  void pair(const PairGeometry<D>& p, std::array<double, D + 2>& to_a,
+            std::array<double, D + 2>& to_b) const {
+    const std::uint32_t a = p.a;
+    const std::uint32_t b = p.b;
+    const double k_ab = coupling(a, b, p.r);
+    double dissipated = 0.0;
+    for (int k = 0; k < D; ++k) {
+      const double relative = in.velocity[k][a] - in.velocity[k][b];
+      to_a[k] = -k_ab * relative;
+      to_b[k] = -to_a[k];
+      dissipated += k_ab * relative * relative;
+    }
+    to_a[D + 1] = to_b[D + 1] = 0.0;
+    if (in.kind[b] == wall_kind) {
+      to_a[D] = dissipated;
+      to_b[D] = 0.0;
+      for (int k = 0; k < D; ++k) {
+        to_a[D + 1] += to_a[k] * in.velocity[k][b];
+      }
+    } else if (in.kind[a] == wall_kind) {
+      to_a[D] = 0.0;
+      to_b[D] = dissipated;
+      for (int k = 0; k < D; ++k) {
+        to_b[D + 1] += to_b[k] * in.velocity[k][a];
+      }
+    } else {
+      to_a[D] = to_b[D] = 0.5 * dissipated;
+    }
+  }
+};
+
+} // namespace revsph::two_fluid

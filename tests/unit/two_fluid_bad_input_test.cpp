@@ -1,0 +1,85 @@
+// Bad input to the two-fluid model (issue 18): each defect of a built-in case ends the run with
+// the one-line error "file: key: reason", exit status 2, and no output written.
+
+#include "case_text.hpp"
+#include "cli_sandbox.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace {
+
+using revsph::testing::error_prefix;
+using revsph::testing::expect_clean_rejection;
+using revsph::testing::replaced_once;
+using revsph::testing::Sandbox;
+
+struct Defect {
+  const char* name;
+  const char* builtin_case;
+  const char* from; // a line of the case replaced by `to` ("" for none)
+  const char* to;
+  const char* set; // a --set argument ("" for none)
+  const char* key; // the key the error names
+  const char* reason;
+};
+
+std::vector<Defect> defects() {
+  constexpr const char* cylinder = "rotating-cylinder-small";
+  constexpr const char* mixture = "two-fluid-mixture-small";
+  return {
+      {"superfluid_fraction_above_one", mixture, "", "", "particles[0].superfluid_fraction=1.2",
+       "particles[0].superfluid_fraction", "must be in (0, 1)"},
+      {"superfluid_fraction_zero", cylinder, "", "", "particles[0].superfluid_fraction=0",
+       "particles[0].superfluid_fraction", "must be in (0, 1)"},
+      {"superfluid_fraction_on_a_wall", cylinder, "", "", "particles[1].superfluid_fraction=0.5",
+       "particles[1].superfluid_fraction", "only for kind = \"mixed\""},
+      {"negative_friction_coefficient", cylinder, "", "", "mutual_friction.alpha=-0.1",
+       "mutual_friction.alpha", "must be a finite number >= 0"},
+      {"friction_without_circulation", cylinder, "circulation_quantum = 9.9693e-8", "", "",
+       "mutual_friction.circulation_quantum", "missing required key"},
+      {"friction_too_strong_for_the_step", cylinder, "", "",
+       "mutual_friction.initial_line_density=1e14", "mutual_friction.initial_line_density",
+       "relaxes more than 10 % per step"},
+      {"negative_temperature", cylinder, "", "", "physics.temperature=-1.6", "physics.temperature",
+       "must be > 0"},
+      {"negative_viscosity", cylinder, "", "", "physics.normal_viscosity=-1e-6",
+       "physics.normal_viscosity", "must be a finite number >= 0"},
+      {"unknown_particle_kind", cylinder, "kind = \"mixed\"", "kind = \"vortex\"", "",
+       "particles[0].kind", "unknown particle kind \"vortex\""},
+      {"unknown_pressure_form", mixture, "", "", "pressure.form=riemann", "pressure.form",
+       "expected \"hu_adams\", \"standard\" or \"variational\", got \"riemann\""},
+      {"spin_without_max_speed", mixture, "max_speed = 0.05", "", "", "spin.max_speed",
+       "missing required key"},
+  };
+}
+
+class TwoFluidBadInput : public ::testing::TestWithParam<Defect> {};
+
+TEST_P(TwoFluidBadInput, RunExitsWithOneLineAndWritesNothing) {
+  const Defect& defect = GetParam();
+  Sandbox sandbox;
+  std::string text = revsph::testing::builtin_case_text(defect.builtin_case);
+  if (std::string(defect.from).size() > 0) {
+    text = replaced_once(text, defect.from, defect.to);
+  }
+  const auto case_path = sandbox.write_case(text);
+  std::vector<std::string> arguments{
+      "run", case_path.string(), "--out", sandbox.out().string(), "--steps", "1"};
+  if (std::string(defect.set).size() > 0) {
+    arguments.insert(arguments.end(), {"--set", defect.set});
+  }
+  const auto result = sandbox.revsph(arguments);
+  expect_clean_rejection(
+      sandbox, result, {"case.toml"},
+      {defect.reason, error_prefix + case_path.string() + ": " + defect.key + ": "});
+}
+
+INSTANTIATE_TEST_SUITE_P(Defects, TwoFluidBadInput, ::testing::ValuesIn(defects()),
+                         [](const ::testing::TestParamInfo<Defect>& param_info) {
+                           return std::string(param_info.param.name);
+                         });
+
+} // namespace
