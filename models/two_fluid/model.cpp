@@ -121,6 +121,10 @@ void Model<D, Arith>::update_density() {
                 Gathered<double>{theta_factor_, &slot_theta_factor_},
                 Gathered<std::uint8_t>{moves_, &in.moves},
                 Gathered<std::uint8_t>{kind_, &dissipation_inputs_.kind});
+  in.viscous.resize(dissipation_inputs_.kind.size());
+  for (std::size_t s = 0; s < in.viscous.size(); ++s) {
+    in.viscous[s] = dissipation_inputs_.kind[s] != superfluid_kind;
+  }
   const std::size_t slots = layout_.slot_count();
   for (std::vector<double>* v :
        {&in.volume, &in.density, &in.pressure, &in.temperature_term, &in.thermomechanical}) {

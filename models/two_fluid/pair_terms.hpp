@@ -40,6 +40,7 @@ struct ImpulseInputs {
   std::vector<double> temperature_term; // T / rho^2
   std::vector<double> thermomechanical; // theta' = rho sigma, times -rho_s / rho_n if normal
   std::vector<double> spin;             // omega (about z; 2D)
+  std::vector<std::uint8_t> viscous;    // 1 for normal and wall particles: the spin term's pairs
   std::vector<std::uint8_t> moves;      // 0 for walls: they receive nothing
 };
 
@@ -50,7 +51,9 @@ struct ImpulseInputs {
 //                variational:      V_a^2 p_a + V_b^2 p_b
 //   thermomechanical (27): f_a = m_a theta'_a m_b (T_a / rho_a^2 + T_b / rho_b^2) grad_a W_ab,
 //                f_b likewise with theta'_b (not antisymmetric, README);
-//   spin (39-40): f_a = 2 eta_r V_a V_b grad_a W_ab x (omega_a + omega_b) z, f_b = -f_a;
+//   spin (39-40): f_a = 2 eta_r V_a V_b grad_a W_ab x (omega_a + omega_b) z, f_b = -f_a, on
+//                normal-normal and normal-wall pairs (it extends the normal fluid's viscosity,
+//                sec. IV.2; the superfluid is inviscid);
 //   gravity: -tau m g along the last axis (self).
 // The antisymmetric parts are summed before the rounding, so b's share is the exact negative of
 // a's where the thermomechanical term is off.
@@ -103,7 +106,7 @@ struct ImpulseTerm {
       to_a[k] = -phi * gradient[k];
     }
     std::array<double, D> other_a{}, other_b{};
-    if (spin_on) {
+    if (spin_on && in.viscous[a] != 0 && in.viscous[b] != 0) {
       const double factor =
           2.0 * rotational_viscosity * in.volume[a] * in.volume[b] * (in.spin[a] + in.spin[b]);
       if constexpr (D == 2) {
