@@ -1,0 +1,114 @@
+"""Rayleigh-Taylor with Tsuzuki's two-fluid model (paper 5 sec. V.1, Fig. 5), its classical
+limit: the early growth rate of a small cosine perturbation against sqrt(A k g).
+
+Usage: /usr/bin/python3 tools/plots/two_fluid_rayleigh_taylor.py [--make-runs] [--runs DIR]
+           [--out DIR] [--revsph PATH] [--threads N] [--only NAME ...]
+
+--make-runs runs models/two_fluid/cases/rayleigh-taylor-linear.toml (superfluid above normal
+fluid, the two-fluid couplings off, 96 x 192 particles, amplitude 1 um, to 5 ms; half a minute
+on one thread) into RUNS/NAME (default RUNS = out/two_fluid). Runs:
+  rt-linear-n96     the case as it is (L_x / dr = 96)
+  rt-linear-n192    dr halved (L_x / dr = 192; about 5 minutes on one thread)
+Writes into --out (default docs/figures):
+  two_fluid_rayleigh_taylor_growth.png  the interface's sin(k x) amplitude against t with the
+                                        fitted a0 cosh(sigma t) and the classical curve
+  two_fluid_rayleigh_taylor_growth.csv  run, t, amplitude
+  two_fluid_rayleigh_taylor.md          sigma per run against sqrt(A k g) (also printed)
+
+The interface height in each of 24 columns is the midpoint between the lowest superfluid and the
+highest normal particle there; its amplitude is the sin(k x) coefficient over the box (the box is
+shifted by L_x / 4, so that is the box's cosine mode). Linear theory for an interface released
+from rest: a(t) = a0 cosh(sigma t), sigma = sqrt(A k g), A = (rho_s - rho_n) / (rho_s + rho_n).
+The fit takes the snapshots while k |a| < 0.15 (small slope: nonlinear terms below (k a)^2 = 2 %).
+"""
+
+import csv
+import sys
+from pathlib import Path
+
+import h5py
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from scipy.optimize import curve_fit  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from revsph_runs import REPO, chosen_runs, figure_parser, figure_script_main, save_figure, snapshots  # noqa: E402,E501
+
+CASE = REPO / "models" / "two_fluid" / "cases" / "rayleigh-taylor-linear.toml"
+RHO_S, RHO_N, G = 121.102, 24.105, 9.8
+L_X, HEIGHT, X0 = 1.0e-4, 1.0e-4, -2.5e-5
+K = 2.0 * np.pi / L_X
+ATWOOD = (RHO_S - RHO_N) / (RHO_S + RHO_N)
+SIGMA = np.sqrt(ATWOOD * K * G)
+LINEAR_SLOPE = 0.15
+RUNS = {"rt-linear-n96": 96, "rt-linear-n192": 192}
+
+
+def command(n):
+    dr = L_X / n
+    return ["run", str(CASE), "--set", f"discretisation.dr={dr!r}",
+            "--set", f"output.snapshot_every={max(1, round(80 * n / 96))}"]
+
+
+def interface_amplitude(path):
+    with h5py.File(path) as f:
+        time = float(f.attrs["time"])
+        superfluid = f["particles/superfluid/position"][...]
+        normal = f["particles/normal/position"][...]
+    edges = np.linspace(X0, X0 + L_X, 25)
+    centres = 0.5 * (edges[1:] + edges[:-1])
+    heights = []
+    for left, right in zip(edges[:-1], edges[1:]):
+        above = superfluid[(superfluid[:, 0] >= left) & (superfluid[:, 0] < right), 1]
+        below = normal[(normal[:, 0] >= left) & (normal[:, 0] < right), 1]
+        heights.append(0.5 * (above.min() + below.max()))
+    heights = np.array(heights)
+    return time, 2.0 * np.mean((heights - heights.mean()) * np.sin(K * centres))
+
+
+def make_figures(runs, out, report, names):
+    fig, axis = plt.subplots(figsize=(7, 4.5))
+    rows = []
+    for name in names:
+        series = np.array([interface_amplitude(p) for p in snapshots(runs / name)])
+        t, a = series[:, 0], series[:, 1]
+        linear = np.abs(a) * K < LINEAR_SLOPE
+        (a0, sigma), _ = curve_fit(lambda s, a0, rate: a0 * np.cosh(rate * s), t[linear],
+                                   a[linear], p0=[a[0], SIGMA])
+        rows += [(name, ti, ai) for ti, ai in zip(t, a)]
+        line = axis.plot(t * 1e3, np.abs(a) * 1e6, "o", ms=3, label=f"{name}")
+        axis.plot(t[linear] * 1e3, np.abs(a0 * np.cosh(sigma * t[linear])) * 1e6, "-",
+                  color=line[0].get_color(), label=f"fit: sigma = {sigma:.0f} 1/s")
+        axis.plot(t * 1e3, np.abs(a0 * np.cosh(SIGMA * t)) * 1e6, ":", color="k")
+        report.append((f"{name}: sigma from a0 cosh(sigma t) while k|a| < {LINEAR_SLOPE} "
+                       f"({int(linear.sum())} snapshots, to t = {t[linear].max() * 1e3:.2f} ms)",
+                       f"{sigma:.1f} 1/s, {100 * (sigma / SIGMA - 1):+.1f} % against "
+                       f"sqrt(A k g) = {SIGMA:.1f}"))
+    axis.plot([], [], ":", color="k", label=f"a0 cosh(sqrt(A k g) t), sqrt(A k g) = {SIGMA:.0f} 1/s")
+    axis.axhline(LINEAR_SLOPE / K * 1e6, color="grey", lw=0.8, ls="--", label="k a = 0.15")
+    axis.set(yscale="log", xlabel="t (ms)", ylabel="interface amplitude |a| (um)",
+             title=f"Rayleigh-Taylor, couplings off: A = {ATWOOD:.3f}, k = 2 pi / L_x")
+    axis.legend(fontsize=7)
+    fig.tight_layout()
+    save_figure(fig, out / "two_fluid_rayleigh_taylor_growth.png")
+    with open(out / "two_fluid_rayleigh_taylor_growth.csv", "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["run", "time", "amplitude"])
+        writer.writerows([r[0], f"{r[1]:.8g}", f"{r[2]:.8g}"] for r in rows)
+
+
+def main():
+    parser = figure_parser(__doc__, "out/two_fluid", REPO / "docs" / "figures", RUNS)
+    args = parser.parse_args()
+    names = chosen_runs(parser, args, RUNS)
+    return figure_script_main(
+        args, {n: command(RUNS[n]) for n in names},
+        [(names, lambda runs, out, report: make_figures(runs, out, report, names))],
+        "two_fluid_rayleigh_taylor.md")
+
+
+if __name__ == "__main__":
+    sys.exit(main())
