@@ -21,6 +21,14 @@ std::string Model<D, Arith>::dissipation_acts(const Model& model) {
          << "mutual friction (eqs. 29, 35; C_L(0) = " << p.mutual_friction.coefficient(0.0)
          << " kg/(m^3 s))";
   }
+  if (p.contact.collision) {
+    text << (text.tellp() > 0 ? " and " : "")
+         << "pair collisions for r < dr (ref. [40], e = " << p.contact.restitution << ")";
+  }
+  if (p.contact.riemann) {
+    text << (text.tellp() > 0 ? " and " : "")
+         << "pairwise Riemann dissipation for r < dr (ref. [41])";
+  }
   if (text.tellp() > 0) {
     text << ", the energy counted as dissipated";
   }
@@ -31,7 +39,8 @@ template <int D, class Arith>
 void Model<D, Arith>::dissipate(double tau) {
   const double friction =
       parameters_.mutual_friction.active() ? parameters_.mutual_friction.coefficient(time_) : 0.0;
-  if (viscosity() == 0.0 && friction == 0.0) {
+  const Contact& contact = parameters_.contact;
+  if (viscosity() == 0.0 && friction == 0.0 && !contact.any()) {
     return;
   }
   update_density();
@@ -61,25 +70,44 @@ void Model<D, Arith>::dissipate(double tau) {
     // The weights move with the particles only: the density's layout is this sub-step's.
     sum_pairs<Arith>(layout_, NormalWeightTerm<D>{kernel_, in.kind}, normal_weight_sums_);
   }
-  const DissipationTerm<D> term{kernel_,
-                                in,
-                                inputs_.volume,
-                                friction > 0.0 ? normal_weight_sums_.values(0)
-                                               : std::span<const double>{},
-                                viscosity(),
-                                friction,
-                                tau};
+  const DissipationTerm<D> term{
+      kernel_,
+      in,
+      inputs_.volume,
+      friction > 0.0 ? normal_weight_sums_.values(0) : std::span<const double>{},
+      viscosity(),
+      friction,
+      {contact.any() ? parameters_.dr : 0.0, contact.collision, contact.restitution,
+       contact.riemann, contact.limiter, parameters_.sound_speed, inputs_.mass, inputs_.density},
+      tau};
   sum_pairs<Arith>(layout_, term, dissipation_sums_);
   FaultRecorder faults;
   for_each_moving([&](auto& kind, std::size_t set) {
     add_pair_totals<Arith>(kind.momentum, dissipation_sums_, 0, layout_.slots_of_set(set), faults);
   });
   faults.throw_if_any();
-  // The accounts, summed in slot order (independent of the threads).
-  for (std::size_t s = 0; s < slots; ++s) {
-    dissipated_ += dissipation_sums_.value(D, s);
-    wall_work_ += dissipation_sums_.value(D + 1, s);
-  }
+  // The accounts, summed in particle order (independent of the threads): the walls' work, and
+  // as dissipated what the sub-step took beyond it, from the kinetic energy each particle's
+  // applied (rounded) impulse J changed: J . (p_before + p_after) / 2m.
+  double wall_work = 0.0;
+  double kinetic_change = 0.0;
+  for_each_moving([&](const auto& kind, std::size_t set) {
+    const std::span<const std::uint32_t> slot = layout_.slots_of_set(set);
+    const std::span<const double> mass = layout_.part_of_set(std::span<const double>(mass_), set);
+    const auto& p_scale = kind.momentum.info().scale;
+    for (std::size_t i = 0; i < slot.size(); ++i) {
+      double change = 0.0;
+      for (int k = 0; k < D; ++k) {
+        const double impulse = dissipation_sums_.value(k, slot[i]);
+        const double after = Arith::real(kind.momentum.at(k, i), p_scale);
+        change += impulse * (after - 0.5 * impulse);
+      }
+      kinetic_change += change / mass[i];
+      wall_work += dissipation_sums_.value(D, slot[i]);
+    }
+  });
+  wall_work_ += wall_work;
+  dissipated_ += wall_work - kinetic_change;
 }
 
 template class Model<2, FixedArithmetic>;

@@ -3,13 +3,15 @@
 // by core's one pair loop (core/pair_sum.hpp) in the dissipate sub-step. Arrays are indexed by
 // slot (every particle, walls included, in cell order).
 //
-// Every term is a pair exchange f_a = -K_ab (v_a - v_b), f_b = -f_a with K_ab >= 0, so that
-// total momentum is exact in integers (one rounded impulse, its exact negative for the partner)
-// and the pair's energy changes by -K_ab |v_a - v_b|^2 to first order: the dissipation, counted.
+// Every term is a pair exchange f_a = -K_ab (v_a - v_b) (or its part along x_ab), f_b = -f_a
+// with K_ab >= 0, so that total momentum is exact in integers (one rounded impulse, its exact
+// negative for the partner) and the pair's energy changes by -K_ab |v_a - v_b|^2 to first
+// order. The model counts what the sub-step removed exactly, from the momenta (dissipation.cpp).
 
 #include "core/kernel_wendland.hpp"
 #include "core/pair_sum.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <span>
@@ -45,24 +47,45 @@ struct DissipationInputs {
   std::array<std::vector<double>, 3> velocity; // p / m, or the wall's velocity
 };
 
+// The two stabilising pair terms of sec. IV.1 for pairs closer than the initial spacing d, both
+// acting only on approaching pairs, along n = x_ab / r (parameters.hpp, Contact):
+//   collision ([40], Shakibaeinia & Jin 2012): the impulse -(1 + e) mu (v_ab . n) n, mu the
+//     reduced mass (the fluid particle's own against a wall), which turns the normal approach
+//     of an isolated pair into a separation at e times its speed;
+//   Riemann ([41], Zhang, Hu & Adams 2017): the dissipative part of their low-dissipation
+//     pair pressure, P_d = beta rho_a rho_b / (rho_a + rho_b) (U_L - U_R), U_L - U_R =
+//     -v_ab . n, beta = min(limiter (U_L - U_R), c), in the pair force -2 V_a V_b P_d grad W:
+//     K_ab = -2 tau V_a V_b beta rho~ W'(r) >= 0 and the impulse -K_ab (v_ab . n) n.
+struct ContactInputs {
+  double distance = 0.0; // d; 0: both off
+  bool collision = false;
+  double restitution = 0.0;
+  bool riemann = false;
+  double limiter = 0.0;
+  double sound_speed = 0.0;
+  std::span<const double> mass;
+  std::span<const double> density;
+};
+
 // The impulses of the dissipate sub-step over tau, and what they dissipate:
 //   viscosity (34, times 2: README), normal-normal and normal-wall pairs:
 //     K_ab = -2 tau (eta + eta_r) V_a V_b W'(r) / r   (eq. 39's eta_bar + eta_r on the Laplacian)
 //   mutual friction (29, 35 with the reaction's sign fixed: README), superfluid a - normal or
 //   wall b:
 //     K_ab = tau C_L V_a W_ab / w_a
-// Components 0..D-1: the impulse; D: the pair's dissipation K_ab |v_a - v_b|^2, shared equally
-// (all of it to the fluid particle against a wall); D + 1: the work the wall did on the fluid
-// particle, f_a . v_wall (walls move nothing but give no-slip).
+//   and the contact terms above.
+// Components 0..D-1: the impulse; D: the work the wall did on the fluid particle, f_a . v_wall
+// (walls move nothing but give no-slip).
 template <int D>
 struct DissipationTerm {
-  static constexpr int width = D + 2;
+  static constexpr int width = D + 1;
   const WendlandQuintic<D>& kernel;
   const DissipationInputs& in;
   std::span<const double> volume;        // V = 1 / n (eq. 36)
   std::span<const double> normal_weight; // w of eq. (29), superfluid slots
   double viscosity;                      // eta + eta_r, Pa s
   double friction;                       // C_L of eq. (29) at this time, kg/(m^3 s)
+  ContactInputs contact;
   double tau;
 
   bool receives(std::uint32_t s) const { return in.kind[s] != wall_kind; }
@@ -88,33 +111,61 @@ struct DissipationTerm {
     return tau * friction * volume[s] * kernel.value(r) / normal_weight[s];
   }
 
-  void pair(const PairGeometry<D>& p, std::array<double, D + 2>& to_a,
-            std::array<double, D + 2>& to_b) const {
+  // The contact terms' impulse added to f.
+  void add_contact(const PairGeometry<D>& p, const std::array<double, D>& relative,
+                   std::array<double, D + 1>& f) const {
+    const std::uint32_t a = p.a;
+    const std::uint32_t b = p.b;
+    double approach = 0.0; // v_ab . n, negative when approaching
+    for (int k = 0; k < D; ++k) {
+      approach += relative[k] * p.x_ab[k] / p.r;
+    }
+    if (!(approach < 0.0) || (in.kind[a] == wall_kind && in.kind[b] == wall_kind)) {
+      return;
+    }
+    double impulse = 0.0; // along n, on a
+    if (contact.riemann) {
+      const double beta = std::min(contact.limiter * -approach, contact.sound_speed);
+      const double rho_a = contact.density[a];
+      const double rho_b = contact.density[b];
+      const double k_ab = -2.0 * tau * volume[a] * volume[b] * beta * rho_a * rho_b /
+                          (rho_a + rho_b) * kernel.derivative(p.r);
+      impulse -= k_ab * approach;
+    }
+    if (contact.collision) {
+      const double m_a = contact.mass[a];
+      const double m_b = contact.mass[b];
+      const double reduced = in.kind[b] == wall_kind   ? m_a
+                             : in.kind[a] == wall_kind ? m_b
+                                                       : m_a * m_b / (m_a + m_b);
+      impulse -= (1.0 + contact.restitution) * reduced * approach;
+    }
+    for (int k = 0; k < D; ++k) {
+      f[k] += impulse * p.x_ab[k] / p.r;
+    }
+  }
+
+  void pair(const PairGeometry<D>& p, std::array<double, D + 1>& to_a,
+            std::array<double, D + 1>& to_b) const {
     const std::uint32_t a = p.a;
     const std::uint32_t b = p.b;
     const double k_ab = coupling(a, b, p.r);
-    double dissipated = 0.0;
+    std::array<double, D> relative{};
     for (int k = 0; k < D; ++k) {
-      const double relative = in.velocity[k][a] - in.velocity[k][b];
-      to_a[k] = -k_ab * relative;
-      to_b[k] = -to_a[k];
-      dissipated += k_ab * relative * relative;
+      relative[k] = in.velocity[k][a] - in.velocity[k][b];
+      to_a[k] = -k_ab * relative[k];
     }
-    to_a[D + 1] = to_b[D + 1] = 0.0;
-    if (in.kind[b] == wall_kind) {
-      to_a[D] = dissipated;
-      to_b[D] = 0.0;
-      for (int k = 0; k < D; ++k) {
-        to_a[D + 1] += to_a[k] * in.velocity[k][b];
+    if (p.r < contact.distance && p.r > 0.0) {
+      add_contact(p, relative, to_a);
+    }
+    to_a[D] = to_b[D] = 0.0;
+    for (int k = 0; k < D; ++k) {
+      to_b[k] = -to_a[k];
+      if (in.kind[b] == wall_kind) {
+        to_a[D] += to_a[k] * in.velocity[k][b];
+      } else if (in.kind[a] == wall_kind) {
+        to_b[D] += to_b[k] * in.velocity[k][a];
       }
-    } else if (in.kind[a] == wall_kind) {
-      to_a[D] = 0.0;
-      to_b[D] = dissipated;
-      for (int k = 0; k < D; ++k) {
-        to_b[D + 1] += to_b[k] * in.velocity[k][a];
-      }
-    } else {
-      to_a[D] = to_b[D] = 0.5 * dissipated;
     }
   }
 };

@@ -21,12 +21,11 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
       counted_impulse_sums_(components_of<2 * D>("momentum", parameters_.momentum_scale)),
       normal_weight_sums_(SummedQuantity{"normal_weight", parameters_.density_scale}),
       dissipation_sums_([this] {
-        std::array<SummedQuantity, D + 2> q{};
+        std::array<SummedQuantity, D + 1> q{};
         for (int k = 0; k < D; ++k) {
           q[k] = {"momentum", parameters_.momentum_scale};
         }
-        q[D] = {"dissipated", parameters_.energy_scale};
-        q[D + 1] = {"wall_work", parameters_.energy_scale};
+        q[D] = {"wall_work", parameters_.energy_scale};
         return q;
       }()) {}
 

@@ -123,9 +123,9 @@ private:
   double time_ = 0.0;
   DissipationInputs dissipation_inputs_;
   PairSums<Arith, 1> normal_weight_sums_;
-  PairSums<Arith, D + 2> dissipation_sums_;
+  PairSums<Arith, D + 1> dissipation_sums_;
   // Accounts since the run began (J, or J/m in 2D).
-  double dissipated_ = 0.0; // by viscosity and mutual friction
+  double dissipated_ = 0.0; // by the dissipate sub-steps (viscosity, friction, contacts)
   double wall_work_ = 0.0;  // done by moving walls on the fluid
   double force_work_ = 0.0; // done by the thermomechanical and spin forces
 };

@@ -97,6 +97,15 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
       case_file.non_negative_number_or("physics.rotational_viscosity", 0.0, "no spin term");
   p.normal_viscosity = case_file.non_negative_number_or("physics.normal_viscosity", 0.0);
   p.mutual_friction = read_mutual_friction(case_file, p.superfluid_density);
+  p.contact.collision = case_file.boolean_or("collision.on", false);
+  p.contact.restitution = case_file.number_or("collision.restitution", p.contact.restitution);
+  if (!(p.contact.restitution >= 0.0 && p.contact.restitution <= 1.0)) {
+    case_file.fail("collision.restitution", "must be in [0, 1]");
+  }
+  p.contact.riemann = case_file.boolean_or("riemann.on", false);
+  p.contact.limiter = case_file.number_or("riemann.limiter", p.contact.limiter);
+  require_positive_finite(case_file, "riemann.limiter", "the dissipation limiter",
+                          p.contact.limiter);
   const ParticleDiscretisation discretisation =
       read_particle_discretisation(case_file, p.sound_speed);
   p.dr = discretisation.dr;
@@ -207,6 +216,16 @@ const KeyTable& case_keys() {
            "L0 of eq. (9); > 0"});
     t.add({"mutual_friction.vinen_beta", T::number, "m^2/s", "0",
            "beta_v of eq. (9): 1 / L(t) = 1 / L0 + beta_v t; >= 0"});
+    t.add({"collision.on", T::boolean, "-", "false",
+           "the pair collision of sec. IV.1 (ref. [40]) for r < dr, approaching pairs only; "
+           "irreversible"});
+    t.add({"collision.restitution", T::number, "1", "0.2",
+           "e: an approaching pair leaves at e times its normal speed; in [0, 1] (not given)"});
+    t.add({"riemann.on", T::boolean, "-", "false",
+           "the pairwise Riemann dissipation of sec. IV.1 (ref. [41], Zhang, Hu & Adams 2017) "
+           "for r < dr, approaching pairs only; irreversible"});
+    t.add({"riemann.limiter", T::number, "1", "3",
+           "beta = min(limiter (U_L - U_R), c) of ref. [41]; > 0"});
     t.add({"initial.random_velocity", T::number, "m/s", "0",
            "each velocity component of every superfluid and normal particle uniform in "
            "[-value, value] at the start (a test state exercising every term); >= 0"});
@@ -248,7 +267,7 @@ const KeyTable& case_keys() {
            "scale of the number-density sums sum_j W_ij"});
     t.add({"fixed_point.energy_exponent", T::integer, "-",
            "covers max(rho_s, rho_n) dr^D c^2 with 60 fraction bits",
-           "scale of the dissipated energy and the walls' work summed over pairs (diagnostic)"});
+           "scale of the walls' work summed over pairs (an energy account)"});
     return t;
   }();
   return table;

@@ -40,6 +40,15 @@ struct Interface {
   }
 };
 
+// Sec. IV.1's stabilising pair terms for r < d (dissipation_terms.hpp, ContactInputs).
+struct Contact {
+  bool collision = false;
+  double restitution = 0.2; // e: not given by the paper (README)
+  bool riemann = false;
+  double limiter = 3.0; // eta of Zhang, Hu & Adams (2017)
+  bool any() const { return collision || riemann; }
+};
+
 template <int D>
 struct Parameters {
   double superfluid_density = 0.0; // rho_s: the superfluid particles' Tait reference and mass
@@ -57,6 +66,7 @@ struct Parameters {
   // Irreversible terms.
   double normal_viscosity = 0.0; // eta_bar = eta_n of eqs. (34, 39), Pa s
   MutualFriction mutual_friction;
+  Contact contact;
   Interface interface;
   double random_velocity = 0.0; // each velocity component uniform in [-value, value] at start
   std::uint64_t seed = 1;
