@@ -32,11 +32,10 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from revsph_runs import REPO, chosen_runs, figure_parser, figure_script_main, read_csv, save_figure, snapshots  # noqa: E402,E501
-from shtc_fluids import shepard  # noqa: E402
+from cavity_ghia import CentreLines, draw_ghia  # noqa: E402
+from revsph_runs import REPO, chosen_runs, figure_parser, figure_script_main, save_figure, snapshots  # noqa: E402,E501
 
 CASE = REPO / "models" / "superfluid" / "cases" / "superfluid-cavity-re100.toml"
-REFDATA = REPO.parent / "shared" / "refdata"
 RUNS = {f"cavity-re{re}-n{n}": (re, n) for re in (100, 400) for n in (20, 30, 40)}
 
 
@@ -56,12 +55,6 @@ def final_state(run):
         return position, velocity, float(f.attrs["time"])
 
 
-def ghia(re):
-    u = read_csv(REFDATA / "ghia1982_u_vertical_centerline.csv")
-    v = read_csv(REFDATA / "ghia1982_v_horizontal_centerline.csv")
-    return u["y"], u[f"Re{re}"], v["x"], v[f"Re{re}"]
-
-
 def make_figures(runs, out, report, names):
     fig = plt.figure(figsize=(14, 8))
     grid = fig.add_gridspec(2, 3)
@@ -73,38 +66,14 @@ def make_figures(runs, out, report, names):
     for name in names:
         re, n = RUNS[name]
         position, velocity, time = final_state(runs / name)
-        support = 6.0 / n
-        y_ref, u_ref, x_ref, v_ref = ghia(re)
-
-        def u_at(y):
-            return shepard(np.column_stack([np.full_like(y, 0.5), y]), position, velocity,
-                           support)[:, 0]
-
-        def v_at(x):
-            return shepard(np.column_stack([x, np.full_like(x, 0.5)]), position, velocity,
-                           support)[:, 1]
-
-        # The error at Ghia's points; the profiles drawn on 101 points.
-        error = max(np.max(np.abs(u_at(y_ref) - u_ref)), np.max(np.abs(v_at(x_ref) - v_ref)))
-        # The same away from the walls and the lid (Ghia's points at least the kernel's support
-        # from them), where the kernel average does not reach into the boundary.
-        u_inside = (y_ref >= support) & (y_ref <= 1.0 - support)
-        v_inside = (x_ref >= support) & (x_ref <= 1.0 - support)
-        interior = max(np.max(np.abs(u_at(y_ref) - u_ref)[u_inside]),
-                       np.max(np.abs(v_at(x_ref) - v_ref)[v_inside]))
+        lines = CentreLines(position, velocity, 6.0 / n, re)
+        error, interior = lines.error, lines.interior
         rows.append((name, re, n, error, time, interior))
         u_axis, v_axis = profile_axes[re]
-        u_axis.plot(u_at(line), line, label=f"N = {n}")
-        v_axis.plot(line, v_at(line), label=f"N = {n}")
+        u_axis.plot(lines.u_at(line), line, label=f"N = {n}")
+        v_axis.plot(line, lines.v_at(line), label=f"N = {n}")
     for re in sorted({r[1] for r in rows}):
-        y_ref, u_ref, x_ref, v_ref = ghia(re)
-        u_axis, v_axis = profile_axes[re]
-        u_axis.plot(u_ref, y_ref, "ko", ms=3, mfc="none", label="Ghia et al. (1982)")
-        v_axis.plot(x_ref, v_ref, "ko", ms=3, mfc="none", label="Ghia et al. (1982)")
-        u_axis.set(xlabel="u on x = 1/2", ylabel="y", title=f"Re = {re}")
-        v_axis.set(xlabel="x", ylabel="v on y = 1/2", title=f"Re = {re}")
-        u_axis.legend(fontsize=7)
-        v_axis.legend(fontsize=7)
+        draw_ghia(*profile_axes[re], re)
         pts = sorted((1.0 / r[2], r[3], r[5]) for r in rows if r[1] == re)
         line_of = error_axis.loglog([p[0] for p in pts], [p[1] for p in pts], "o-",
                                     label=f"Re {re}")

@@ -30,9 +30,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+from cavity_ghia import CentreLines, draw_ghia  # noqa: E402
 from revsph_runs import REPO, chosen_runs, figure_parser, figure_script_main, save_figure, snapshots  # noqa: E402,E501
-from shtc_fluids import shepard  # noqa: E402
-from superfluid_cavity import ghia  # noqa: E402
 
 CASE = REPO / "models" / "two_fluid" / "cases" / "two-fluid-cavity-re100.toml"
 RUNS = {f"cavity-re{re}-n{n}": (re, n) for re, ns in ((100, (40, 60)), (1000, (60, 80)))
@@ -64,35 +63,13 @@ def make_figures(runs, out, report, names):
     for name in names:
         re, n = RUNS[name]
         position, velocity, time = final_state(runs / name)
-        support = 3.0 / n
-        y_ref, u_ref, x_ref, v_ref = ghia(re)
-
-        def u_at(y):
-            return shepard(np.column_stack([np.full_like(y, 0.5), y]), position, velocity,
-                           support)[:, 0]
-
-        def v_at(x):
-            return shepard(np.column_stack([x, np.full_like(x, 0.5)]), position, velocity,
-                           support)[:, 1]
-
-        u_error, v_error = np.abs(u_at(y_ref) - u_ref), np.abs(v_at(x_ref) - v_ref)
-        u_inside = (y_ref >= support) & (y_ref <= 1.0 - support)
-        v_inside = (x_ref >= support) & (x_ref <= 1.0 - support)
-        error = max(u_error.max(), v_error.max())
-        interior = max(u_error[u_inside].max(), v_error[v_inside].max())
-        rows.append((name, re, n, error, interior, time))
+        lines = CentreLines(position, velocity, 3.0 / n, re)
+        rows.append((name, re, n, lines.error, lines.interior, time))
         row = 0 if re == 100 else 1
-        axes[row, 0].plot(u_at(line), line, label=f"N = {n}")
-        axes[row, 1].plot(line, v_at(line), label=f"N = {n}")
+        axes[row, 0].plot(lines.u_at(line), line, label=f"N = {n}")
+        axes[row, 1].plot(line, lines.v_at(line), label=f"N = {n}")
     for re in sorted({r[1] for r in rows}):
-        row = 0 if re == 100 else 1
-        y_ref, u_ref, x_ref, v_ref = ghia(re)
-        axes[row, 0].plot(u_ref, y_ref, "ko", ms=3, mfc="none", label="Ghia et al. (1982)")
-        axes[row, 1].plot(x_ref, v_ref, "ko", ms=3, mfc="none", label="Ghia et al. (1982)")
-        axes[row, 0].set(xlabel="u on x = 1/2", ylabel="y", title=f"Re = {re}")
-        axes[row, 1].set(xlabel="x", ylabel="v on y = 1/2", title=f"Re = {re}")
-        for axis in axes[row]:
-            axis.legend(fontsize=7)
+        draw_ghia(*axes[0 if re == 100 else 1], re)
     fig.tight_layout()
     save_figure(fig, out / "two_fluid_cavity.png")
     with open(out / "two_fluid_cavity.csv", "w", newline="") as f:
