@@ -159,8 +159,16 @@ void Model<D, Arith>::update_impulses(double tau) {
   const Parameters<D>& p = parameters_;
   const bool thermomechanical = p.thermomechanical.entropy_scale > 0.0;
   const auto term = [&]<bool Counted>(std::bool_constant<Counted>) {
-    return ImpulseTerm<D, Counted>{kernel_,   inputs_, p.pressure_form,  p.rotational_viscosity,
-                                   p.gravity, tau,     thermomechanical, spin_on()};
+    return ImpulseTerm<D, Counted>{kernel_,
+                                   inputs_,
+                                   p.pressure_form,
+                                   p.rotational_viscosity,
+                                   p.gravity,
+                                   tau,
+                                   thermomechanical,
+                                   spin_on(),
+                                   p.thermomechanical.difference_form,
+                                   slot_temperature_};
   };
   if (counts_force_work()) {
     sum_pairs<Arith>(layout_, term(std::true_type{}), counted_impulse_sums_);

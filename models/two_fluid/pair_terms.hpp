@@ -50,6 +50,8 @@ struct ImpulseInputs {
 //                standard (26):    m_a m_b (p_a / rho_a^2 + p_b / rho_b^2)
 //                variational:      V_a^2 p_a + V_b^2 p_b
 //   thermomechanical (27): f_a = m_a theta'_a m_b (T_a / rho_a^2 + T_b / rho_b^2) grad_a W_ab,
+//                or in the difference form f_a = m_a (theta'_a / rho_a) V_b (T_b - T_a) grad_a W_ab
+//                (zero for a uniform T, README),
 //                f_b likewise with theta'_b (not antisymmetric, README);
 //   spin (39-40): f_a = 2 eta_r V_a V_b grad_a W_ab x (omega_a + omega_b) z, f_b = -f_a, on
 //                normal-normal and normal-wall pairs (it extends the normal fluid's viscosity,
@@ -70,6 +72,8 @@ struct ImpulseTerm {
   double tau;
   bool thermomechanical_on;
   bool spin_on;
+  bool thermomechanical_difference = false;
+  std::span<const double> temperature = {}; // T by slot, for the difference form
 
   bool receives(std::uint32_t s) const { return in.moves[s] != 0; }
 
@@ -121,10 +125,17 @@ struct ImpulseTerm {
       other_b[k] = -other_a[k];
     }
     if (thermomechanical_on) {
-      const double pair_factor =
-          in.mass[a] * in.mass[b] * (in.temperature_term[a] + in.temperature_term[b]);
-      const double on_a = pair_factor * in.thermomechanical[a];
-      const double on_b = -pair_factor * in.thermomechanical[b]; // grad_b W_ba = -grad_a W_ab
+      double on_a = 0.0, on_b = 0.0;
+      if (thermomechanical_difference) {
+        const double rise = temperature[b] - temperature[a];
+        on_a = in.mass[a] * in.thermomechanical[a] / in.density[a] * in.volume[b] * rise;
+        on_b = in.mass[b] * in.thermomechanical[b] / in.density[b] * in.volume[a] * rise;
+      } else {
+        const double pair_factor =
+            in.mass[a] * in.mass[b] * (in.temperature_term[a] + in.temperature_term[b]);
+        on_a = pair_factor * in.thermomechanical[a];
+        on_b = -pair_factor * in.thermomechanical[b]; // grad_b W_ba = -grad_a W_ab
+      }
       for (int k = 0; k < D; ++k) {
         to_a[k] += on_a * gradient[k];
         to_b[k] += on_b * gradient[k];

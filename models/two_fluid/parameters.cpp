@@ -92,6 +92,12 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
                                               p.superfluid_density + p.normal_density);
     require_positive_finite(case_file, "thermomechanical.reference_density",
                             "the reference density", t.reference_density);
+    const std::string form = case_file.string_or("thermomechanical.form", "symmetric");
+    if (form != "symmetric" && form != "difference") {
+      case_file.fail("thermomechanical.form",
+                     "expected \"symmetric\" or \"difference\", got \"" + form + "\"");
+    }
+    t.difference_form = form == "difference";
   }
   p.rotational_viscosity =
       case_file.non_negative_number_or("physics.rotational_viscosity", 0.0, "no spin term");
@@ -200,6 +206,13 @@ const KeyTable& case_keys() {
            "thermomechanical force)"});
     t.add({"thermomechanical.first_sound_speed", T::number, "m/s", "required with a scale",
            "c of eq. (21) (the phonons' sound speed); > 0"});
+    t.add({"thermomechanical.form",
+           T::string,
+           "-",
+           "\"symmetric\"",
+           "\"symmetric\": eq. (27) as printed; \"difference\": sigma_i sum_j V_j (T_j - T_i) "
+           "grad W_ij, which vanishes for a uniform T (README)",
+           {"symmetric", "difference"}});
     t.add({"thermomechanical.reference_density", T::number, "kg/m^3",
            "superfluid_density + normal_density",
            "turns eq. (21)'s entropy per volume into sigma per mass; > 0"});

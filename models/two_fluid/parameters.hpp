@@ -25,6 +25,8 @@ struct Thermomechanical {
   double entropy_scale = 0.0;     // C_e of eq. (41); 0: no thermomechanical force
   double first_sound_speed = 0.0; // c of eq. (21), m/s
   double reference_density = 0.0; // turns S (per volume) into sigma (per mass), kg/m^3
+  // Eq. (27)'s symmetric form, or sigma_a sum_b V_b (T_b - T_a) grad W (zero for a uniform T).
+  bool difference_form = false;
 };
 
 // A curved interface (sec. V.1): the particles of superfluid and normal blocks are superfluid

@@ -1,8 +1,7 @@
 // Bad input to the two-fluid model (issue 18): each defect of a built-in case ends the run with
 // the one-line error "file: key: reason", exit status 2, and no output written.
 
-#include "case_text.hpp"
-#include "cli_sandbox.hpp"
+#include "case_defect.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,20 +10,7 @@
 
 namespace {
 
-using revsph::testing::error_prefix;
-using revsph::testing::expect_clean_rejection;
-using revsph::testing::replaced_once;
-using revsph::testing::Sandbox;
-
-struct Defect {
-  const char* name;
-  const char* builtin_case;
-  const char* from; // a line of the case replaced by `to` ("" for none)
-  const char* to;
-  const char* set; // a --set argument ("" for none)
-  const char* key; // the key the error names
-  const char* reason;
-};
+using Defect = revsph::testing::CaseDefect;
 
 std::vector<Defect> defects() {
   constexpr const char* cylinder = "rotating-cylinder-small";
@@ -59,27 +45,10 @@ std::vector<Defect> defects() {
 class TwoFluidBadInput : public ::testing::TestWithParam<Defect> {};
 
 TEST_P(TwoFluidBadInput, RunExitsWithOneLineAndWritesNothing) {
-  const Defect& defect = GetParam();
-  Sandbox sandbox;
-  std::string text = revsph::testing::builtin_case_text(defect.builtin_case);
-  if (std::string(defect.from).size() > 0) {
-    text = replaced_once(text, defect.from, defect.to);
-  }
-  const auto case_path = sandbox.write_case(text);
-  std::vector<std::string> arguments{
-      "run", case_path.string(), "--out", sandbox.out().string(), "--steps", "1"};
-  if (std::string(defect.set).size() > 0) {
-    arguments.insert(arguments.end(), {"--set", defect.set});
-  }
-  const auto result = sandbox.revsph(arguments);
-  expect_clean_rejection(
-      sandbox, result, {"case.toml"},
-      {defect.reason, error_prefix + case_path.string() + ": " + defect.key + ": "});
+  revsph::testing::expect_case_defect_rejected(GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(Defects, TwoFluidBadInput, ::testing::ValuesIn(defects()),
-                         [](const ::testing::TestParamInfo<Defect>& param_info) {
-                           return std::string(param_info.param.name);
-                         });
+                         revsph::testing::case_defect_name);
 
 } // namespace

@@ -1,5 +1,6 @@
-"""Rayleigh-Taylor with Tsuzuki's two-fluid model (paper 5 sec. V.1, Fig. 5), its classical
-limit: the early growth rate of a small cosine perturbation against sqrt(A k g).
+"""Rayleigh-Taylor with Tsuzuki's two-fluid model (paper 5 sec. V.1, Fig. 5): the paper's run (the
+mushroom and its tilt at t sqrt(g / L_x) = 2.34), and the classical limit: the early growth rate
+of a small cosine perturbation against sqrt(A k g).
 
 Usage: /usr/bin/python3 tools/plots/two_fluid_rayleigh_taylor.py [--make-runs] [--runs DIR]
            [--out DIR] [--revsph PATH] [--threads N] [--only NAME ...]
@@ -9,7 +10,13 @@ fluid, the two-fluid couplings off, 96 x 192 particles, amplitude 1 um, to 5 ms;
 on one thread) into RUNS/NAME (default RUNS = out/two_fluid). Runs:
   rt-linear-n96     the case as it is (L_x / dr = 96)
   rt-linear-n192    dr halved (L_x / dr = 192; about 5 minutes on one thread)
+  rt-paper          models/two_fluid/cases/rayleigh-taylor.toml: 240 x 480 particles, every
+                    coupling on, to 7.49 ms (20 to 60 minutes on one thread)
 Writes into --out (default docs/figures):
+  two_fluid_rayleigh_taylor.png         the paper's run at its snapshots (Fig. 5 (a), (c)): the
+                                        kinds and the speed
+  two_fluid_rayleigh_taylor.csv         the paper's run: t, the interface's lowest superfluid
+                                        and highest normal particle (the spike and the bubble)
   two_fluid_rayleigh_taylor_growth.png  the interface's sin(k x) amplitude against t with the
                                         fitted a0 cosh(sigma t) and the classical curve
   two_fluid_rayleigh_taylor_growth.csv  run, t, amplitude
@@ -38,16 +45,19 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from revsph_runs import REPO, chosen_runs, figure_parser, figure_script_main, save_figure, snapshots  # noqa: E402,E501
 
 CASE = REPO / "models" / "two_fluid" / "cases" / "rayleigh-taylor-linear.toml"
+PAPER_CASE = REPO / "models" / "two_fluid" / "cases" / "rayleigh-taylor.toml"
 RHO_S, RHO_N, G = 121.102, 24.105, 9.8
 L_X, HEIGHT, X0 = 1.0e-4, 1.0e-4, -2.5e-5
 K = 2.0 * np.pi / L_X
 ATWOOD = (RHO_S - RHO_N) / (RHO_S + RHO_N)
 SIGMA = np.sqrt(ATWOOD * K * G)
 LINEAR_SLOPE = 0.15
-RUNS = {"rt-linear-n96": 96, "rt-linear-n192": 192}
+RUNS = {"rt-linear-n96": 96, "rt-linear-n192": 192, "rt-paper": None}
 
 
 def command(n):
+    if n is None:
+        return ["run", str(PAPER_CASE)]
     dr = L_X / n
     return ["run", str(CASE), "--set", f"discretisation.dr={dr!r}",
             "--set", f"output.snapshot_every={max(1, round(80 * n / 96))}"]
@@ -69,7 +79,50 @@ def interface_amplitude(path):
     return time, 2.0 * np.mean((heights - heights.mean()) * np.sin(K * centres))
 
 
+def paper_figure(runs, out, report):
+    paths = snapshots(runs / "rt-paper")
+    shown = paths[1:][-4:] if len(paths) > 4 else paths
+    fig, axes = plt.subplots(2, len(shown), figsize=(3.2 * len(shown), 11), squeeze=False)
+    rows = []
+    for column, path in enumerate(shown):
+        with h5py.File(path) as f:
+            time = float(f.attrs["time"])
+            kinds = {k: (f[f"particles/{k}/position"][...], f[f"particles/{k}/momentum"][...] /
+                         f[f"particles/{k}/mass"][...].reshape(-1, 1))
+                     for k in ("superfluid", "normal")}
+        scaled = time * np.sqrt(G / L_X)
+        for kind, colour in (("superfluid", "tab:red"), ("normal", "tab:blue")):
+            x, v = kinds[kind]
+            axes[0, column].scatter(x[:, 0] * 1e6, x[:, 1] * 1e6, s=0.05, c=colour, lw=0)
+            image = axes[1, column].scatter(x[:, 0] * 1e6, x[:, 1] * 1e6, s=0.05,
+                                            c=np.hypot(v[:, 0], v[:, 1]) * 1e3, cmap="viridis",
+                                            vmin=0, vmax=60, lw=0)
+        for row in (0, 1):
+            axes[row, column].set(aspect="equal", xlim=(0, 100), ylim=(0, 200), xlabel="x (um)",
+                                  title=f"t = {time * 1e3:.2f} ms, t sqrt(g/L_x) = {scaled:.2f}")
+        spike = kinds["superfluid"][0][:, 1].min()
+        bubble = kinds["normal"][0][:, 1].max()
+        rows.append((time, scaled, spike, bubble))
+    fig.colorbar(image, ax=axes[1, :].tolist(), label="|v| (mm/s)", shrink=0.6)
+    axes[0, 0].set(ylabel="y (um): superfluid red, normal blue")
+    axes[1, 0].set(ylabel="y (um)")
+    save_figure(fig, out / "two_fluid_rayleigh_taylor.png")
+    with open(out / "two_fluid_rayleigh_taylor.csv", "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["time", "scaled_time", "lowest_superfluid_y", "highest_normal_y"])
+        writer.writerows([f"{v:.8g}" for v in r] for r in rows)
+    t, scaled, spike, bubble = rows[-1]
+    report.append((f"rt-paper at t = {t * 1e3:.2f} ms (t sqrt(g/L_x) = {scaled:.2f}): the "
+                   "superfluid spike's tip and the normal bubble's top (um)",
+                   f"{spike * 1e6:.1f}, {bubble * 1e6:.1f}"))
+
+
 def make_figures(runs, out, report, names):
+    if "rt-paper" in names:
+        paper_figure(runs, out, report)
+        names = [n for n in names if n != "rt-paper"]
+    if not names:
+        return
     fig, axis = plt.subplots(figsize=(7, 4.5))
     rows = []
     for name in names:
