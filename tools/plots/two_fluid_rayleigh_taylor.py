@@ -82,8 +82,13 @@ def interface_amplitude(path):
 def paper_figure(runs, out, report):
     paths = snapshots(runs / "rt-paper")
     shown = paths[1:][-4:] if len(paths) > 4 else paths
-    fig, axes = plt.subplots(2, len(shown), figsize=(3.2 * len(shown), 11), squeeze=False)
+    fig, axes = plt.subplots(2, len(shown), figsize=(3.4 * len(shown), 11), squeeze=False)
     rows = []
+    with h5py.File(shown[-1]) as f:
+        speed_scale = np.percentile(np.concatenate([
+            np.hypot(*(f[f"particles/{k}/momentum"][...] /
+                       f[f"particles/{k}/mass"][...].reshape(-1, 1)).T)
+            for k in ("superfluid", "normal")]), 99) * 1e3
     for column, path in enumerate(shown):
         with h5py.File(path) as f:
             time = float(f.attrs["time"])
@@ -92,18 +97,19 @@ def paper_figure(runs, out, report):
                      for k in ("superfluid", "normal")}
         scaled = time * np.sqrt(G / L_X)
         for kind, colour in (("superfluid", "tab:red"), ("normal", "tab:blue")):
-            x, v = kinds[kind]
-            axes[0, column].scatter(x[:, 0] * 1e6, x[:, 1] * 1e6, s=0.05, c=colour, lw=0)
-            image = axes[1, column].scatter(x[:, 0] * 1e6, x[:, 1] * 1e6, s=0.05,
-                                            c=np.hypot(v[:, 0], v[:, 1]) * 1e3, cmap="viridis",
-                                            vmin=0, vmax=60, lw=0)
+            x, _ = kinds[kind]
+            axes[0, column].scatter(x[:, 0] * 1e6, x[:, 1] * 1e6, s=0.3, c=colour, lw=0)
+        x = np.concatenate([kinds[k][0] for k in kinds])
+        speed = np.concatenate([np.hypot(*kinds[k][1].T) for k in kinds]) * 1e3
+        image = axes[1, column].scatter(x[:, 0] * 1e6, x[:, 1] * 1e6, s=0.3, c=speed,
+                                        cmap="viridis", vmin=0, vmax=speed_scale, lw=0)
         for row in (0, 1):
             axes[row, column].set(aspect="equal", xlim=(0, 100), ylim=(0, 200), xlabel="x (um)",
-                                  title=f"t = {time * 1e3:.2f} ms, t sqrt(g/L_x) = {scaled:.2f}")
+                                  title=f"t = {time * 1e3:.2f} ms\nt sqrt(g/L_x) = {scaled:.2f}")
         spike = kinds["superfluid"][0][:, 1].min()
         bubble = kinds["normal"][0][:, 1].max()
         rows.append((time, scaled, spike, bubble))
-    fig.colorbar(image, ax=axes[1, :].tolist(), label="|v| (mm/s)", shrink=0.6)
+    fig.colorbar(image, ax=axes[1, -1], label="|v| (mm/s)", shrink=0.8)
     axes[0, 0].set(ylabel="y (um): superfluid red, normal blue")
     axes[1, 0].set(ylabel="y (um)")
     save_figure(fig, out / "two_fluid_rayleigh_taylor.png")
