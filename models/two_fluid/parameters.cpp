@@ -92,13 +92,14 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
                                               p.superfluid_density + p.normal_density);
     require_positive_finite(case_file, "thermomechanical.reference_density",
                             "the reference density", t.reference_density);
-    const std::string form = case_file.string_or("thermomechanical.form", "symmetric");
-    if (form != "symmetric" && form != "difference") {
-      case_file.fail("thermomechanical.form",
-                     "expected \"symmetric\" or \"difference\", got \"" + form + "\"");
-    }
-    t.difference_form = form == "difference";
   }
+  // Read whether or not the force is on, so that a bad value is never passed over.
+  const std::string form = case_file.string_or("thermomechanical.form", "symmetric");
+  if (form != "symmetric" && form != "difference") {
+    case_file.fail("thermomechanical.form",
+                   "expected \"symmetric\" or \"difference\", got \"" + form + "\"");
+  }
+  t.difference_form = form == "difference";
   p.rotational_viscosity =
       case_file.non_negative_number_or("physics.rotational_viscosity", 0.0, "no spin term");
   p.normal_viscosity = case_file.non_negative_number_or("physics.normal_viscosity", 0.0);
