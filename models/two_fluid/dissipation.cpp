@@ -13,8 +13,8 @@ std::string Model<D, Arith>::dissipation_acts(const Model& model) {
   const Parameters<D>& p = model.parameters_;
   std::ostringstream text;
   if (model.viscosity() > 0.0) {
-    text << "normal-fluid viscosity (eta_bar + eta_r = " << model.viscosity()
-         << " Pa s, eqs. 34, 39)";
+    text << "normal-fluid viscosity (eta_bar + eta_r = " << model.viscosity() << " Pa s, "
+         << (p.central_viscosity ? "central form" : "eqs. 34, 39") << ")";
   }
   if (p.mutual_friction.active()) {
     text << (text.tellp() > 0 ? " and " : "")
@@ -76,6 +76,7 @@ void Model<D, Arith>::dissipate(double tau) {
       inputs_.volume,
       friction > 0.0 ? normal_weight_sums_.values(0) : std::span<const double>{},
       viscosity(),
+      parameters_.central_viscosity,
       friction,
       {contact.any() ? parameters_.dr : 0.0, contact.collision, contact.restitution,
        contact.riemann, contact.limiter, parameters_.sound_speed, inputs_.mass, inputs_.density},

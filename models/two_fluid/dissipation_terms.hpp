@@ -15,6 +15,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace revsph::two_fluid {
@@ -70,6 +71,9 @@ struct ContactInputs {
 // The impulses of the dissipate sub-step over tau, and what they dissipate:
 //   viscosity (34, times 2: README), normal-normal and normal-wall pairs:
 //     K_ab = -2 tau (eta + eta_r) V_a V_b W'(r) / r   (eq. 39's eta_bar + eta_r on the Laplacian)
+//     or, in the central form (Monaghan's, README), the impulse -(D + 2) K_ab (v_ab . n) n along
+//     n = x_ab / r, which keeps angular momentum (2 (D + 2) sum_b V_b (v_ab . x_ab) x_ab W' / r^3
+//     is the Laplacian of a divergence-free v)
 //   mutual friction (29, 35 with the reaction's sign fixed: README), superfluid a - normal or
 //   wall b:
 //     K_ab = tau C_L V_a W_ab / w_a
@@ -84,31 +88,35 @@ struct DissipationTerm {
   std::span<const double> volume;        // V = 1 / n (eq. 36)
   std::span<const double> normal_weight; // w of eq. (29), superfluid slots
   double viscosity;                      // eta + eta_r, Pa s
+  bool central_viscosity;                // the central form instead of eq. (34)'s
   double friction;                       // C_L of eq. (29) at this time, kg/(m^3 s)
   ContactInputs contact;
   double tau;
 
   bool receives(std::uint32_t s) const { return in.kind[s] != wall_kind; }
 
-  double coupling(std::uint32_t a, std::uint32_t b, double r) const {
+  // K_ab of the exchange along v_a - v_b (eq. 34's viscosity, or the friction), and that of the
+  // central viscosity along n.
+  std::pair<double, double> coupling(std::uint32_t a, std::uint32_t b, double r) const {
     const std::uint8_t ka = in.kind[a];
     const std::uint8_t kb = in.kind[b];
     const bool a_normal = ka != superfluid_kind; // normal or wall
     const bool b_normal = kb != superfluid_kind;
     if (a_normal && b_normal) {
       if (viscosity == 0.0 || (ka == wall_kind && kb == wall_kind)) {
-        return 0.0;
+        return {0.0, 0.0};
       }
-      return -2.0 * tau * viscosity * volume[a] * volume[b] * kernel.derivative_over_r(r);
+      const double k = -2.0 * tau * viscosity * volume[a] * volume[b] * kernel.derivative_over_r(r);
+      return central_viscosity ? std::pair{0.0, (D + 2) * k} : std::pair{k, 0.0};
     }
     if (friction == 0.0 || a_normal == b_normal) {
-      return 0.0; // superfluid pairs: no viscosity (the superfluid is inviscid)
+      return {0.0, 0.0}; // superfluid pairs: no viscosity (the superfluid is inviscid)
     }
     const std::uint32_t s = ka == superfluid_kind ? a : b;
     if (!(normal_weight[s] > 0.0)) {
-      return 0.0; // every normal neighbour on the kernel's edge: W = 0 there
+      return {0.0, 0.0}; // every normal neighbour on the kernel's edge: W = 0 there
     }
-    return tau * friction * volume[s] * kernel.value(r) / normal_weight[s];
+    return {tau * friction * volume[s] * kernel.value(r) / normal_weight[s], 0.0};
   }
 
   // The contact terms' impulse added to f.
@@ -149,11 +157,21 @@ struct DissipationTerm {
             std::array<double, D + 1>& to_b) const {
     const std::uint32_t a = p.a;
     const std::uint32_t b = p.b;
-    const double k_ab = coupling(a, b, p.r);
+    const auto [k_ab, k_central] = coupling(a, b, p.r);
     std::array<double, D> relative{};
     for (int k = 0; k < D; ++k) {
       relative[k] = in.velocity[k][a] - in.velocity[k][b];
       to_a[k] = -k_ab * relative[k];
+    }
+    if (k_central != 0.0) {
+      double along = 0.0; // (v_a - v_b) . x_ab / r^2
+      for (int k = 0; k < D; ++k) {
+        along += relative[k] * p.x_ab[k];
+      }
+      along /= p.r_squared;
+      for (int k = 0; k < D; ++k) {
+        to_a[k] -= k_central * along * p.x_ab[k];
+      }
     }
     if (p.r < contact.distance && p.r > 0.0) {
       add_contact(p, relative, to_a);

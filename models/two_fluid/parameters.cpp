@@ -103,6 +103,12 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.rotational_viscosity =
       case_file.non_negative_number_or("physics.rotational_viscosity", 0.0, "no spin term");
   p.normal_viscosity = case_file.non_negative_number_or("physics.normal_viscosity", 0.0);
+  const std::string viscosity_form = case_file.string_or("physics.viscosity_form", "laplacian");
+  if (viscosity_form != "laplacian" && viscosity_form != "central") {
+    case_file.fail("physics.viscosity_form",
+                   "expected \"laplacian\" or \"central\", got \"" + viscosity_form + "\"");
+  }
+  p.central_viscosity = viscosity_form == "central";
   p.mutual_friction = read_mutual_friction(case_file, p.superfluid_density);
   p.contact.collision = case_file.boolean_or("collision.on", false);
   p.contact.restitution = case_file.number_or("collision.restitution", p.contact.restitution);
@@ -195,6 +201,13 @@ const KeyTable& case_keys() {
            "eta_bar = eta_n of eqs. (34, 39): the Laplacian viscosity (eta_bar + eta_r) on "
            "normal-normal and normal-wall pairs; >= 0 (0: no Laplacian viscosity, eta_r's "
            "share included); irreversible"});
+    t.add({"physics.viscosity_form",
+           T::string,
+           "-",
+           "\"laplacian\"",
+           "\"laplacian\": eq. (34), the pair force along v_a - v_b; \"central\": Monaghan's, "
+           "along x_ab, which keeps angular momentum (README)",
+           {"laplacian", "central"}});
     t.add({"pressure.form",
            T::string,
            "-",

@@ -66,7 +66,8 @@ struct Parameters {
   double rotational_viscosity = 0.0; // eta_r of eq. (39): the spin term 2 eta_r curl omega (40)
   double spin = 0.0;                 // omega of every fluid particle, C_omega v_max / (0.5 dr)
   // Irreversible terms.
-  double normal_viscosity = 0.0; // eta_bar = eta_n of eqs. (34, 39), Pa s
+  double normal_viscosity = 0.0;  // eta_bar = eta_n of eqs. (34, 39), Pa s
+  bool central_viscosity = false; // physics.viscosity_form = "central" (README)
   MutualFriction mutual_friction;
   Contact contact;
   Interface interface;
