@@ -14,6 +14,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -94,27 +95,35 @@ std::map<std::string, double> last_energy_row(const fs::path& csv) {
   return row;
 }
 
+// `case_name` with `overrides` run n steps into DIR/whole (snapshots at least every n / 2), then
+// continued from its step-n/2 snapshot for n / 2 steps into DIR/second.
+void run_whole_then_continue(const fs::path& directory, const std::string& case_name,
+                             const std::vector<std::string>& overrides, std::int64_t n) {
+  RunOptions whole;
+  whole.case_options.case_path = case_name;
+  whole.case_options.overrides = overrides;
+  whole.out_dir = (directory / "whole").string();
+  whole.steps = n;
+  ASSERT_EQ(run(whole), 0);
+  RunOptions second_half;
+  second_half.case_options.from_snapshot =
+      (directory / "whole" / "snapshots" / snapshot_name(n / 2)).string();
+  second_half.out_dir = (directory / "second").string();
+  second_half.steps = n / 2;
+  ASSERT_EQ(run(second_half), 0);
+}
+
 // The fountain with its heater and a conducting cooler: the energy given from outside is kept
 // by the model, not by the particles; the snapshot carries it, so that the restarted run's
 // budget (heater_input, wall_exchange, total) goes on as if never cut.
 TEST(Restart, EnergyAccountsOfHeaterAndWallsGoOn) {
   TempDirectory directory("revsph-restart-test");
   const std::int64_t n = 60;
-  RunOptions whole;
-  whole.case_options.case_path = "fountain-small";
-  whole.case_options.overrides = {
-      "physics.heat_conductivity=6.2", "physics.viscosity=1e-4", "heater.power=80",
-      "heater.centre=[0.0, 0.008]",    "heater.support=0.004",   "heater.ramp_time=1e-4",
-      "output.snapshot_every=30"};
-  whole.out_dir = (directory.path() / "whole").string();
-  whole.steps = n;
-  ASSERT_EQ(run(whole), 0);
-  RunOptions second_half;
-  second_half.case_options.from_snapshot =
-      (directory.path() / "whole" / "snapshots" / snapshot_name(n / 2)).string();
-  second_half.out_dir = (directory.path() / "second").string();
-  second_half.steps = n / 2;
-  ASSERT_EQ(run(second_half), 0);
+  run_whole_then_continue(directory.path(), "fountain-small",
+                          {"physics.heat_conductivity=6.2", "physics.viscosity=1e-4",
+                           "heater.power=80", "heater.centre=[0.0, 0.008]", "heater.support=0.004",
+                           "heater.ramp_time=1e-4", "output.snapshot_every=30"},
+                          n);
 
   const auto middle = revsph::read_checked_snapshot(directory.path() / "whole" / "snapshots" /
                                                     snapshot_name(n / 2));
@@ -134,18 +143,8 @@ TEST(Restart, EnergyAccountsOfHeaterAndWallsGoOn) {
 TEST(Restart, TwoFluidFrictionClockAndAccountsGoOn) {
   TempDirectory directory("revsph-restart-test");
   const std::int64_t n = 60;
-  RunOptions whole;
-  whole.case_options.case_path = "rotating-cylinder-small";
-  whole.case_options.overrides = {"output.snapshot_every=30", "output.energy_every=30"};
-  whole.out_dir = (directory.path() / "whole").string();
-  whole.steps = n;
-  ASSERT_EQ(run(whole), 0);
-  RunOptions second_half;
-  second_half.case_options.from_snapshot =
-      (directory.path() / "whole" / "snapshots" / snapshot_name(n / 2)).string();
-  second_half.out_dir = (directory.path() / "second").string();
-  second_half.steps = n / 2;
-  ASSERT_EQ(run(second_half), 0);
+  run_whole_then_continue(directory.path(), "rotating-cylinder-small",
+                          {"output.snapshot_every=30", "output.energy_every=30"}, n);
 
   const auto uninterrupted_end =
       revsph::read_checked_snapshot(directory.path() / "whole" / "snapshots" / snapshot_name(n));
