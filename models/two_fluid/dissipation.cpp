@@ -87,26 +87,13 @@ void Model<D, Arith>::dissipate(double tau) {
     add_pair_totals<Arith>(kind.momentum, dissipation_sums_, 0, layout_.slots_of_set(set), faults);
   });
   faults.throw_if_any();
-  // The accounts, summed in particle order (independent of the threads): the walls' work, and
-  // as dissipated what the sub-step took beyond it, from the kinetic energy each particle's
-  // applied (rounded) impulse J changed: J . (p_before + p_after) / 2m.
+  // The accounts: the walls' work, and as dissipated what the sub-step took beyond it, the
+  // kinetic energy its applied (rounded) impulses changed.
   double wall_work = 0.0;
-  double kinetic_change = 0.0;
-  for_each_moving([&](const auto& kind, std::size_t set) {
-    const std::span<const std::uint32_t> slot = layout_.slots_of_set(set);
-    const std::span<const double> mass = layout_.part_of_set(std::span<const double>(mass_), set);
-    const auto& p_scale = kind.momentum.info().scale;
-    for (std::size_t i = 0; i < slot.size(); ++i) {
-      double change = 0.0;
-      for (int k = 0; k < D; ++k) {
-        const double impulse = dissipation_sums_.value(k, slot[i]);
-        const double after = Arith::real(kind.momentum.at(k, i), p_scale);
-        change += impulse * (after - 0.5 * impulse);
-      }
-      kinetic_change += change / mass[i];
-      wall_work += dissipation_sums_.value(D, slot[i]);
-    }
-  });
+  for (std::size_t s = 0; s < slots; ++s) {
+    wall_work += dissipation_sums_.value(D, s);
+  }
+  const double kinetic_change = work_of_impulses(dissipation_sums_, 0);
   wall_work_ += wall_work;
   dissipated_ += wall_work - kinetic_change;
 }

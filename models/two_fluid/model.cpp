@@ -192,22 +192,8 @@ void Model<D, Arith>::add_impulses(const Sums& sums) {
   if (!counts_force_work()) {
     return;
   }
-  // The work of the non-gradient impulses J: J . (p_before + p_after) / 2m, exact for the
-  // kinetic energy they change; summed in particle order (independent of the threads).
-  for_each_moving([&](const auto& kind, std::size_t set) {
-    const std::span<const std::uint32_t> slots = layout_.slots_of_set(set);
-    const std::span<const double> mass = layout_.part_of_set(std::span<const double>(mass_), set);
-    const auto& p_scale = kind.momentum.info().scale;
-    for (std::size_t i = 0; i < slots.size(); ++i) {
-      double work = 0.0;
-      for (int k = 0; k < D; ++k) {
-        const double after = Arith::real(kind.momentum.at(k, i), p_scale);
-        const double middle = after - 0.5 * sums.value(k, slots[i]);
-        work += sums.value(D + k, slots[i]) * middle;
-      }
-      force_work_ += work / mass[i];
-    }
-  });
+  // The work of the non-gradient impulses (components D..2D-1).
+  force_work_ += work_of_impulses(sums, D);
 }
 
 template <int D, class Arith>

@@ -99,6 +99,29 @@ private:
   // Adds the kick's impulses and, where counted, the work of the non-gradient forces.
   template <class Sums>
   void add_impulses(const Sums& sums);
+  // After `sums`' impulses J (components 0..D-1) were added to the momenta: the sum over the
+  // moving particles of w . (p_after - J / 2) / m, w the components weight..weight+D-1. With
+  // w = J it is the kinetic energy J changed, exactly; summed in particle order (independent
+  // of the threads).
+  template <class Sums>
+  double work_of_impulses(const Sums& sums, int weight) {
+    double work = 0.0;
+    for_each_moving([&](const auto& kind, std::size_t set) {
+      const std::span<const std::uint32_t> slots = layout_.slots_of_set(set);
+      const std::span<const double> mass = layout_.part_of_set(std::span<const double>(mass_), set);
+      const auto& p_scale = kind.momentum.info().scale;
+      for (std::size_t i = 0; i < slots.size(); ++i) {
+        double particle = 0.0;
+        for (int k = 0; k < D; ++k) {
+          const double middle =
+              Arith::real(kind.momentum.at(k, i), p_scale) - 0.5 * sums.value(k, slots[i]);
+          particle += sums.value(weight + k, slots[i]) * middle;
+        }
+        work += particle / mass[i];
+      }
+    });
+    return work;
+  }
 
   Parameters<D> parameters_;
   SimulationInfo info_;
