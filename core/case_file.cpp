@@ -481,6 +481,12 @@ void CaseFile::require_no_unknown_keys() const {
     }
   }
   const std::string nearest = nearest_declared_key(key_tables_, first->key);
+  if (nearest == first->key) {
+    // A declared key the case's other settings leave unread (say, a seed for particles that are
+    // not drawn at random): suggesting the key itself would only puzzle.
+    fail(first->key, "not used with this case's other settings (" + where +
+                         "; what each key needs: revsph cases --keys " + model + ")");
+  }
   fail(first->key, "unknown key (" + where + "; every key: revsph cases --keys " + model + ")" +
                        (nearest.empty() ? std::string() : "; did you mean " + nearest + "?"));
 }

@@ -86,8 +86,10 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
       }
     }
     const std::string fraction_key = block.key + ".superfluid_fraction";
-    if (block.kind != "mixed" && case_file.has(fraction_key)) {
-      case_file.fail(fraction_key, "only for kind = \"mixed\"");
+    for (const std::string& mixed_only : {fraction_key, block.key + ".seed"}) {
+      if (block.kind != "mixed" && case_file.has(mixed_only)) {
+        case_file.fail(mixed_only, "only for kind = \"mixed\"");
+      }
     }
     const double volume = block.volume_per_particle;
     if (block.kind == "wall") {

@@ -238,6 +238,23 @@ TEST(CaseKeys, UnknownKeySuggestsTheNearestDeclaredOne) {
   }
 }
 
+TEST(CaseKeys, DeclaredKeyLeftUnreadSaysItIsNotUsedRatherThanSuggestingItself) {
+  // a.n is declared but this reader never asks for it (as a model skips a key its other settings
+  // make irrelevant): suggesting "a.n" for "a.n" would only puzzle.
+  const KeyTable table = test_table();
+  const CaseFile case_file = CaseFile::parse("[a]\nx = 1.0\nn = 4\n", "test.toml");
+  case_file.use_keys({&table});
+  EXPECT_EQ(case_file.number("a.x"), 1.0);
+  try {
+    case_file.require_no_unknown_keys();
+    ADD_FAILURE() << "the unused key was accepted";
+  } catch (const CaseError& error) {
+    EXPECT_EQ(error.key(), "a.n");
+    EXPECT_EQ(error.reason(), "not used with this case's other settings (line 3; what each key "
+                              "needs: revsph cases --keys test)");
+  }
+}
+
 std::string command_output(const std::string& command) {
   std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
   if (!pipe) {

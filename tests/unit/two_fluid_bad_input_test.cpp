@@ -22,6 +22,8 @@ std::vector<Defect> defects() {
        "particles[0].superfluid_fraction", "must be in (0, 1)"},
       {"superfluid_fraction_on_a_wall", cylinder, "", "", "particles[1].superfluid_fraction=0.5",
        "particles[1].superfluid_fraction", "only for kind = \"mixed\""},
+      {"seed_on_a_wall", cylinder, "", "", "particles[1].seed=3", "particles[1].seed",
+       "only for kind = \"mixed\""},
       {"negative_friction_coefficient", cylinder, "", "", "mutual_friction.alpha=-0.1",
        "mutual_friction.alpha", "must be a finite number >= 0"},
       {"friction_without_circulation", cylinder, "circulation_quantum = 9.9693e-8", "", "",
