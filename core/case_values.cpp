@@ -30,6 +30,19 @@ fixedpoint::Scale scale_or(const CaseFile& case_file, const char* key, double ma
   return fixedpoint::Scale::covering(magnitude, fraction_bits);
 }
 
+fixedpoint::Scale position_scale_or(const CaseFile& case_file, double max_abs_coordinate,
+                                    double dr) {
+  constexpr const char* key = "fixed_point.position_exponent";
+  const fixedpoint::Scale scale = scale_or(case_file, key, max_abs_coordinate, 52);
+  if (!(scale.unit() <= std::ldexp(dr, -16))) {
+    case_file.fail(case_file.has(key) ? key : "domain.max",
+                   "positions would be stored in units of " + format_scientific(scale.unit(), 3) +
+                       " m, coarser than dr / 65536 = " + format_scientific(dr / 65536.0, 3) +
+                       " m: the domain is too large for dr (at most 2^36 dr from the origin)");
+  }
+  return scale;
+}
+
 std::string format_scientific(double value, int digits) {
   std::ostringstream text;
   text.precision(digits);

@@ -18,6 +18,13 @@ void require_positive_finite(const CaseFile& case_file, const char* key, const c
 fixedpoint::Scale scale_or(const CaseFile& case_file, const char* key, double magnitude,
                            int fraction_bits);
 
+// The positions' scale: fixed_point.position_exponent, or by default the one that covers the
+// domain's largest coordinate with 52 fraction bits. Either way its unit must resolve dr to
+// 2^-16 (a domain at most 2^36 dr across by default): coarser, the lattice would be rounded onto
+// itself and particles would coincide.
+fixedpoint::Scale position_scale_or(const CaseFile& case_file, double max_abs_coordinate,
+                                    double dr);
+
 // "1.234e-05" with `digits` digits after the point: values of a setup report and its messages.
 std::string format_scientific(double value, int digits);
 

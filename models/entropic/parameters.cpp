@@ -257,8 +257,7 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   const double mass = p.initial_density * std::pow(p.dr, D);
   const double entropy_magnitude =
       std::max(std::abs(mass * p.initial_specific_entropy()), mass * p.heat_capacity());
-  p.position_scale =
-      scale_or(case_file, "fixed_point.position_exponent", p.domain.max_abs_coordinate(), 52);
+  p.position_scale = position_scale_or(case_file, p.domain.max_abs_coordinate(), p.dr);
   p.momentum_scale = scale_or(case_file, "fixed_point.momentum_exponent", mass * sound_speed, 50);
   p.entropy_scale = scale_or(case_file, "fixed_point.entropy_exponent", entropy_magnitude, 48);
   p.density_scale = scale_or(case_file, "fixed_point.density_exponent", p.initial_density, 48);

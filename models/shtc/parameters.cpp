@@ -204,8 +204,7 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   // Default scales: positions keep 52 fraction bits below the domain size (their double view is
   // exact); velocities resolve c0 * 2^-50 and reach 2^13 c0; the constants resolve rho0 * 2^-48;
   // the dissipated energy per mass c0^2 2^-48; log det A resolves 2^-50 and U 2^-48 (|U| < 2^15).
-  p.position_scale =
-      scale_or(case_file, "fixed_point.position_exponent", p.domain.max_abs_coordinate(), 52);
+  p.position_scale = position_scale_or(case_file, p.domain.max_abs_coordinate(), p.dr);
   p.velocity_scale =
       scale_or(case_file, "fixed_point.velocity_exponent", p.material.sound_speed, 50);
   p.density_scale =

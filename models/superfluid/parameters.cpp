@@ -160,8 +160,7 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   // Default scales: positions keep 52 fraction bits below the domain size; velocities resolve
   // u1 * 2^-50; entropies s0 * 2^-50 (room for 2^13 s0); density sums rho0 * 2^-48. The pair
   // increments of v, v_s and s are summed at the scales of v and s.
-  p.position_scale =
-      scale_or(case_file, "fixed_point.position_exponent", p.domain.max_abs_coordinate(), 52);
+  p.position_scale = position_scale_or(case_file, p.domain.max_abs_coordinate(), p.dr);
   p.velocity_scale = scale_or(case_file, "fixed_point.velocity_exponent", he.first_sound_speed, 50);
   p.entropy_scale = scale_or(case_file, "fixed_point.entropy_exponent", he.reference_entropy, 50);
   p.density_scale = scale_or(case_file, "fixed_point.density_exponent", he.rest_density, 48);

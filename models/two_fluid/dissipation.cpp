@@ -74,6 +74,7 @@ void Model<D, Arith>::dissipate(double tau) {
       kernel_,
       in,
       inputs_.volume,
+      inputs_.phase_volume,
       friction > 0.0 ? normal_weight_sums_.values(0) : std::span<const double>{},
       viscosity(),
       parameters_.central_viscosity,

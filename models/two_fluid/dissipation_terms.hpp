@@ -70,13 +70,15 @@ struct ContactInputs {
 
 // The impulses of the dissipate sub-step over tau, and what they dissipate:
 //   viscosity (34, times 2: README), normal-normal and normal-wall pairs:
-//     K_ab = -2 tau (eta + eta_r) V_a V_b W'(r) / r   (eq. 39's eta_bar + eta_r on the Laplacian)
+//     K_ab = -2 tau (eta + eta_r) V_a V_b W'(r) / r   (eq. 39's eta_bar + eta_r on the Laplacian;
+//     V the normal phase's volumes V rho / rho_n with interpenetrating phases, walls' V)
 //     or, in the central form (Monaghan's, README), the impulse -(D + 2) K_ab (v_ab . n) n along
 //     n = x_ab / r, which keeps angular momentum (2 (D + 2) sum_b V_b (v_ab . x_ab) x_ab W' / r^3
 //     is the Laplacian of a divergence-free v)
 //   mutual friction (29, 35 with the reaction's sign fixed: README), superfluid a - normal or
 //   wall b:
-//     K_ab = tau C_L V_a W_ab / w_a
+//     K_ab = tau C_L V_a W_ab / w_a   (V_a the superfluid phase's volume with interpenetrating
+//     phases: the friction per unit volume C_L (v_s - v_n) over the superfluid's share of it)
 //   and the contact terms above.
 // Components 0..D-1: the impulse; D: the work the wall did on the fluid particle, f_a . v_wall
 // (walls move nothing but give no-slip).
@@ -86,6 +88,7 @@ struct DissipationTerm {
   const WendlandQuintic<D>& kernel;
   const DissipationInputs& in;
   std::span<const double> volume;        // V = 1 / n (eq. 36)
+  std::span<const double> phase_volume;  // V_k = V rho / rho_k, interpenetrating phases (else V)
   std::span<const double> normal_weight; // w of eq. (29), superfluid slots
   double viscosity;                      // eta + eta_r, Pa s
   bool central_viscosity;                // the central form instead of eq. (34)'s
@@ -106,7 +109,8 @@ struct DissipationTerm {
       if (viscosity == 0.0 || (ka == wall_kind && kb == wall_kind)) {
         return {0.0, 0.0};
       }
-      const double k = -2.0 * tau * viscosity * volume[a] * volume[b] * kernel.derivative_over_r(r);
+      const double k =
+          -2.0 * tau * viscosity * phase_volume[a] * phase_volume[b] * kernel.derivative_over_r(r);
       return central_viscosity ? std::pair{0.0, (D + 2) * k} : std::pair{k, 0.0};
     }
     if (friction == 0.0 || a_normal == b_normal) {
@@ -116,7 +120,7 @@ struct DissipationTerm {
     if (!(normal_weight[s] > 0.0)) {
       return {0.0, 0.0}; // every normal neighbour on the kernel's edge: W = 0 there
     }
-    return {tau * friction * volume[s] * kernel.value(r) / normal_weight[s], 0.0};
+    return {tau * friction * phase_volume[s] * kernel.value(r) / normal_weight[s], 0.0};
   }
 
   // The contact terms' impulse added to f.

@@ -79,13 +79,13 @@ void Model<D, Arith>::update_constants() {
     std::fill(part.begin(), part.end(), set == normal_set ? normal_kind : wall_kind);
   }
   moves_.assign(n, 1);
-  rest_density_.assign(n, parameters_.normal_density);
+  rest_density_.assign(n, parameters_.rest_density(false));
   theta_factor_.assign(n, 0.0);
   const std::span<std::uint8_t> walls = layout_.part_of_set(std::span(moves_), wall_set);
   std::fill(walls.begin(), walls.end(), 0);
   const std::span<double> superfluid_rest =
       layout_.part_of_set(std::span(rest_density_), superfluid_set);
-  std::fill(superfluid_rest.begin(), superfluid_rest.end(), parameters_.superfluid_density);
+  std::fill(superfluid_rest.begin(), superfluid_rest.end(), parameters_.rest_density(true));
   // Eq. (41): sigma = C_e S(T) / rho_ref; theta' / rho = sigma for the superfluid (28) and
   // -sigma rho_s / rho_n for the normal fluid (sec. IV.3).
   const Thermomechanical& t = parameters_.thermomechanical;
@@ -146,6 +146,12 @@ void Model<D, Arith>::update_density() {
   sum_pairs<Arith>(layout_, NumberDensityTerm<D>{kernel_}, number_density_sums_, {},
                    inputs_of_slot);
   faults.throw_if_any();
+  // A phase's share of the volume (README, "Interpenetrating phases"): V rho / rho_k for the
+  // fluid, V for the walls (wholly normal); V itself with separate phases.
+  in.phase_volume.resize(slots);
+  for (std::size_t s = 0; s < slots; ++s) {
+    in.phase_volume[s] = in.volume[s] * phase_factor_of(dissipation_inputs_.kind[s]);
+  }
   density_valid_ = true;
   impulses_valid_ = false;
 }

@@ -87,6 +87,17 @@ private:
     f(state_.superfluid, superfluid_set);
     f(state_.normal, normal_set);
   }
+  // V_k / V of a particle kind: with interpenetrating phases rho / rho_k for the fluid, whose
+  // particles each carry rho = rho_s + rho_n and make up the phase k at the share rho_k / rho of
+  // them; 1 for walls and with separate phases.
+  double phase_factor_of(std::uint8_t kind) const {
+    const Parameters<D>& p = parameters_;
+    if (!p.interpenetrating || kind == wall_kind) {
+      return 1.0;
+    }
+    const double phase = kind == superfluid_kind ? p.superfluid_density : p.normal_density;
+    return (p.superfluid_density + p.normal_density) / phase;
+  }
   // Masses, temperatures, spins and the entropy's factor, gathered once.
   void update_constants();
   // The layout, the number density and every per-slot input of the impulses.

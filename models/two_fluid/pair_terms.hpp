@@ -35,6 +35,7 @@ struct NumberDensityTerm {
 struct ImpulseInputs {
   std::vector<double> mass;             // m
   std::vector<double> volume;           // V = 1 / n
+  std::vector<double> phase_volume;     // V_k = V rho / rho_k, interpenetrating phases (else V)
   std::vector<double> density;          // rho = m n
   std::vector<double> pressure;         // Tait + background
   std::vector<double> temperature_term; // T / rho^2
@@ -53,7 +54,8 @@ struct ImpulseInputs {
 //                or in the difference form f_a = m_a (theta'_a / rho_a) V_b (T_b - T_a) grad_a W_ab
 //                (zero for a uniform T, README),
 //                f_b likewise with theta'_b (not antisymmetric, README);
-//   spin (39-40): f_a = 2 eta_r V_a V_b grad_a W_ab x (omega_a + omega_b) z, f_b = -f_a, on
+//   spin (39-40): f_a = 2 eta_r V_a V_b grad_a W_ab x (omega_a + omega_b) z, f_b = -f_a (V the
+//                normal phase's volumes with interpenetrating phases), on
 //                normal-normal and normal-wall pairs (it extends the normal fluid's viscosity,
 //                sec. IV.2; the superfluid is inviscid);
 //   gravity: -tau m g along the last axis (self).
@@ -111,8 +113,8 @@ struct ImpulseTerm {
     }
     std::array<double, D> other_a{}, other_b{};
     if (spin_on && in.viscous[a] != 0 && in.viscous[b] != 0) {
-      const double factor =
-          2.0 * rotational_viscosity * in.volume[a] * in.volume[b] * (in.spin[a] + in.spin[b]);
+      const double factor = 2.0 * rotational_viscosity * in.phase_volume[a] * in.phase_volume[b] *
+                            (in.spin[a] + in.spin[b]);
       if constexpr (D == 2) {
         other_a[0] = factor * gradient[1]; // grad W x omega z = (g_y, -g_x) omega
         other_a[1] = -factor * gradient[0];

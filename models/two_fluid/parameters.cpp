@@ -81,6 +81,12 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.gravity = case_file.number_or("physics.gravity", 0.0);
   p.gravity_reference_height = case_file.number_or("physics.gravity_reference_height", 0.0);
   p.pressure_form = read_pressure_form(case_file);
+  const std::string phases = case_file.string_or("physics.phases", "separate");
+  if (phases != "separate" && phases != "interpenetrating") {
+    case_file.fail("physics.phases",
+                   "expected \"separate\" or \"interpenetrating\", got \"" + phases + "\"");
+  }
+  p.interpenetrating = phases == "interpenetrating";
 
   Thermomechanical& t = p.thermomechanical;
   t.entropy_scale =
@@ -100,6 +106,10 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
                    "expected \"symmetric\" or \"difference\", got \"" + form + "\"");
   }
   t.difference_form = form == "difference";
+  if (p.interpenetrating && t.entropy_scale > 0.0) {
+    case_file.fail("physics.phases", "the thermomechanical force (eq. 27) is written for "
+                                     "separate phases; set thermomechanical.entropy_scale = 0");
+  }
   p.rotational_viscosity =
       case_file.non_negative_number_or("physics.rotational_viscosity", 0.0, "no spin term");
   p.normal_viscosity = case_file.non_negative_number_or("physics.normal_viscosity", 0.0);
@@ -144,6 +154,10 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   const double spin_coefficient = case_file.non_negative_number_or("spin.coefficient", 0.0);
   if (spin_coefficient > 0.0 || case_file.has("spin.max_speed")) {
     p.spin = spin_coefficient * case_file.positive_number("spin.max_speed") / (0.5 * p.dr);
+    if (spin_coefficient > 0.0) {
+      require_positive_finite(case_file, "spin.max_speed", "the spin C_omega v_max / (0.5 dr)",
+                              p.spin);
+    }
   }
   p.domain = read_domain<D>(case_file);
   p.random_velocity = case_file.non_negative_number_or("initial.random_velocity", 0.0);
@@ -161,9 +175,8 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
 
   // Default scales: positions 52 fraction bits below the domain size; momenta resolve
   // m c 2^-50 of the heavier kind's particle; number densities dr^-D 2^-48.
-  const double heavier = std::max(p.superfluid_density, p.normal_density) * std::pow(p.dr, D);
-  p.position_scale =
-      scale_or(case_file, "fixed_point.position_exponent", p.domain.max_abs_coordinate(), 52);
+  const double heavier = std::max(p.rest_density(true), p.rest_density(false)) * std::pow(p.dr, D);
+  p.position_scale = position_scale_or(case_file, p.domain.max_abs_coordinate(), p.dr);
   p.momentum_scale =
       scale_or(case_file, "fixed_point.momentum_exponent", heavier * p.sound_speed, 50);
   p.density_scale = scale_or(case_file, "fixed_point.density_exponent", std::pow(p.dr, -D), 48);
@@ -182,6 +195,15 @@ const KeyTable& case_keys() {
            "> 0"});
     t.add({"physics.normal_density", T::number, "kg/m^3", "required",
            "rho_n: reference density of the normal and wall particles; > 0"});
+    t.add({"physics.phases",
+           T::string,
+           "-",
+           "\"separate\"",
+           "\"separate\": a particle carries its kind's density (layers, sec. V.1); "
+           "\"interpenetrating\": every particle carries rho_s + rho_n and a phase's partial "
+           "density is its particles' share, viscosity, friction and spin using the phase's "
+           "volume 1 / sum_(same phase) W (a random mixture as a two-fluid continuum, README)",
+           {"separate", "interpenetrating"}});
     t.add({"physics.sound_speed", T::number, "m/s", "required",
            "c of the Tait equation p = rho_k c^2 / gamma ((rho / rho_k)^gamma - 1) (not given "
            "by the paper: a numerical speed, 10 times the largest expected flow speed); > 0"});
@@ -268,9 +290,10 @@ const KeyTable& case_keys() {
         "time step as a fraction of support / c (the CFL limit of sec. IV.1)"));
     t.add(domain_case_keys());
     t.add(particle_block_case_keys({"superfluid", "normal", "mixed", "wall"}));
-    t.add({"particles[].superfluid_fraction", T::number, "1", "required for kind = \"mixed\"",
+    t.add({"particles[].superfluid_fraction", T::number, "1",
+           "required for kind = \"mixed\" (interpenetrating phases: rho_s / (rho_s + rho_n))",
            "share of a mixed block's lattice points that are superfluid (drawn at random, "
-           "sec. V.3); in (0, 1)"});
+           "sec. V.3); in (0, 1); with interpenetrating phases rho_s / (rho_s + rho_n)"});
     t.add({"particles[].seed", T::integer, "-", "1", "seed of a mixed block's draw; >= 0"});
     t.add({"particles[].velocity", T::numbers, "m/s", "zero",
            "velocity of a wall block (a lid), seen by the irreversible terms only"});

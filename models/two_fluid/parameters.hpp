@@ -55,7 +55,11 @@ template <int D>
 struct Parameters {
   double superfluid_density = 0.0; // rho_s: the superfluid particles' Tait reference and mass
   double normal_density = 0.0;     // rho_n: the normal (and wall) particles'
-  double sound_speed = 0.0;        // c of the Tait equation (numerical, not given by the paper)
+  // physics.phases = "interpenetrating": every particle, walls included, carries the mixture's
+  // density rho_s + rho_n, and the phases' partial densities come from the particle counts
+  // (README, "Interpenetrating phases"); "separate" (the default): a particle carries its kind's.
+  bool interpenetrating = false;
+  double sound_speed = 0.0; // c of the Tait equation (numerical, not given by the paper)
   double tait_exponent = 7.0;
   double background_pressure = 0.0; // added to every Tait pressure (Pa)
   double temperature = 0.0;         // T0: every particle's temperature (sec. IV.4), K
@@ -85,9 +89,14 @@ struct Parameters {
   fixedpoint::Scale density_scale; // the number-density sums (sum W, 1/m^D)
   fixedpoint::Scale energy_scale;  // the dissipation's energy accounts, summed over pairs
 
+  // The Tait reference density, and the particle mass over its lattice volume, of a kind.
   double rest_density(bool superfluid) const {
+    if (interpenetrating) {
+      return superfluid_density + normal_density;
+    }
     return superfluid ? superfluid_density : normal_density;
   }
+  double wall_density() const { return rest_density(false); }
 };
 
 template <int D>

@@ -96,16 +96,31 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
       for (const Vec<D>& x : block.positions) {
         wall.position.push_back(x);
         wall.velocity.push_back(wall_velocity<D>(case_file, block.key, x));
-        wall.mass.push_back(parameters.normal_density * volume);
+        wall.mass.push_back(parameters.wall_density() * volume);
       }
       continue;
     }
     double fraction = block.kind == "superfluid" ? 1.0 : 0.0;
     std::mt19937_64 generator(1);
+    // Interpenetrating phases (README): a phase's partial density is its share of the particles
+    // times rho_s + rho_n, so only a mixed block drawn at rho_s / rho gives the physical ones.
+    const double physical_fraction =
+        parameters.superfluid_density / (parameters.superfluid_density + parameters.normal_density);
+    if (parameters.interpenetrating && block.kind != "mixed") {
+      case_file.fail(block.key + ".kind", "with physics.phases = \"interpenetrating\" the fluid "
+                                          "is given as mixed blocks");
+    }
     if (block.kind == "mixed") {
-      fraction = case_file.number(fraction_key);
+      fraction = parameters.interpenetrating ? case_file.number_or(fraction_key, physical_fraction)
+                                             : case_file.number(fraction_key);
       if (!(fraction > 0.0 && fraction < 1.0)) {
         case_file.fail(fraction_key, "must be in (0, 1)");
+      }
+      if (parameters.interpenetrating && std::abs(fraction / physical_fraction - 1.0) > 1e-3) {
+        case_file.fail(fraction_key, "with interpenetrating phases it must be rho_s / (rho_s + "
+                                     "rho_n) = " +
+                                         std::to_string(physical_fraction) +
+                                         " (the partial densities come from the draw)");
       }
       const std::int64_t seed = case_file.integer_or(block.key + ".seed", 1);
       if (seed < 0) {
@@ -120,8 +135,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
                                      : block.kind == "superfluid";
       KindParticles<D>& kind = is_superfluid ? superfluid : normal;
       kind.position.push_back(x);
-      kind.mass.push_back(
-          (is_superfluid ? parameters.superfluid_density : parameters.normal_density) * volume);
+      kind.mass.push_back(parameters.rest_density(is_superfluid) * volume);
     }
   }
   if (superfluid.position.empty() && normal.position.empty()) {

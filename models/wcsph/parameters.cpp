@@ -89,8 +89,7 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   // Default scales: positions keep 52 fraction bits below the domain size, so the double view of
   // a position is exact; velocities resolve c * 2^-50 and reach 2^13 c; density sums resolve
   // rho0 * 2^-48; acceleration sums resolve (c^2 / h) * 2^-48.
-  p.position_scale =
-      scale_or(case_file, "fixed_point.position_exponent", p.domain.max_abs_coordinate(), 52);
+  p.position_scale = position_scale_or(case_file, p.domain.max_abs_coordinate(), p.dr);
   p.velocity_scale = scale_or(case_file, "fixed_point.velocity_exponent", p.sound_speed, 50);
   p.density_scale = scale_or(case_file, "fixed_point.density_exponent", p.rest_density, 48);
   p.acceleration_scale = scale_or(case_file, "fixed_point.acceleration_exponent",

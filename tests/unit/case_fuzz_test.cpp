@@ -815,6 +815,13 @@ TEST(CaseFuzz, MutantsOfRotatingCylinderSmall) {
   fuzz({"rotating-cylinder-small", "dr = 6.25e-6", "dr = 1.0e-5", 4000, 7});
 }
 
+TEST(CaseFuzz, MutantsOfRotatingCylinderSmallInterpenetrating) {
+  // The same with interpenetrating phases (every particle at rho_s + rho_n, the phases' volumes,
+  // the draw's fraction checked): the paper's resolution of the small case, 800 fluid particles.
+  fuzz({"rotating-cylinder-small", "[physics]", "[physics]\nphases = \"interpenetrating\"", 1500,
+        9});
+}
+
 TEST(CaseFuzz, MutantsOfRayleighTaylorSmall) {
   // The two-fluid model's interface, gravity and its time-step limit; dr 6.25 um: 512 fluid and
   // about 300 wall particles.

@@ -41,6 +41,15 @@ std::vector<Defect> defects() {
        "expected \"hu_adams\", \"standard\" or \"variational\", got \"riemann\""},
       {"spin_without_max_speed", mixture, "max_speed = 0.05", "", "", "spin.max_speed",
        "missing required key"},
+      {"unknown_phases", mixture, "", "", "physics.phases=emulsion", "physics.phases",
+       "expected \"separate\" or \"interpenetrating\", got \"emulsion\""},
+      {"interpenetrating_with_the_thermomechanical_force", mixture, "", "",
+       "physics.phases=interpenetrating", "physics.phases", "written for separate phases"},
+      {"interpenetrating_with_a_pure_block", "rayleigh-taylor-small", "", "",
+       "physics.phases=interpenetrating", "particles[0].kind", "given as mixed blocks"},
+      {"interpenetrating_at_another_fraction", cylinder, "superfluid_fraction = 0.834",
+       "superfluid_fraction = 0.5", "physics.phases=interpenetrating",
+       "particles[0].superfluid_fraction", "it must be rho_s / (rho_s + rho_n)"},
   };
 }
 

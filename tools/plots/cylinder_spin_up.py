@@ -33,3 +33,52 @@ def spin_up_slope(t, nu, radius, omega, samples=4001):
     r = np.linspace(0.0, radius, samples)
     v = spin_up_velocity(r, t, nu, radius, omega)
     return np.trapz(v * r * r, r) / np.trapz(r**3, r)
+
+
+def two_fluid_spin_up(times, rho_n, rho_s, eta, friction, radius, omega, cells=400, dt=1.0e-3):
+    """The same spin-up for the linear, axisymmetric two-fluid model: the normal fluid viscous
+    and held by the wall, the superfluid inviscid and dragged only by the mutual friction,
+
+        rho_n dv_n/dt = eta (v_n'' + v_n' / r - v_n / r^2) - C(t) (v_n - v_s),
+        rho_s dv_s/dt = C(t) (v_n - v_s),      v_n(R) = Omega R,  v_n = v_s = 0 at t = 0,
+
+    C(t) = friction(t) the friction coefficient per unit volume (paper 5 eq. 29: C_L). Central
+    differences on `cells` rings, Crank-Nicolson in time (second order in both). Returns the
+    least-squares slopes (as spin_up_slope) of v_n and v_s at each of `times` (ascending)."""
+    from scipy.sparse import diags, identity
+    from scipy.sparse.linalg import splu
+
+    h = radius / cells
+    r = h * np.arange(1, cells)  # interior nodes; v = 0 at r = 0, v_n = Omega R at r = R
+    lower = eta * (1.0 / h**2 - 1.0 / (2.0 * h * r[1:]))
+    upper = eta * (1.0 / h**2 + 1.0 / (2.0 * h * r[:-1]))
+    main = eta * (-2.0 / h**2 - 1.0 / r**2)
+    laplacian = diags([lower, main, upper], [-1, 0, 1], format="csc")
+    wall = np.zeros_like(r)
+    wall[-1] = eta * (1.0 / h**2 + 1.0 / (2.0 * h * r[-1])) * omega * radius
+    n = len(r)
+    v_n, v_s = np.zeros(n), np.zeros(n)
+    grid = np.concatenate([[0.0], r, [radius]])
+    weight = np.trapz(grid**3, grid)
+    slopes, t, solver, solver_c = [], 0.0, None, None
+    for target in times:
+        while t < target - 1e-12:
+            step = min(dt, target - t)
+            c = friction(t + step / 2)
+            if solver is None or c != solver_c or step != solver[1]:
+                # [rho_n - step/2 (L - c), -step/2 c; -step/2 c, rho_s + step/2 c]
+                eye = identity(n, format="csc")
+                from scipy.sparse import bmat
+                system = bmat([[rho_n * eye - step / 2 * (laplacian - c * eye), -step / 2 * c * eye],
+                               [-step / 2 * c * eye, (rho_s + step / 2 * c) * eye]], format="csc")
+                solver, solver_c = (splu(system), step), c
+            rhs_n = rho_n * v_n + step / 2 * (laplacian @ v_n - c * (v_n - v_s)) + step * wall
+            rhs_s = rho_s * v_s + step / 2 * c * (v_n - v_s)
+            solution = solver[0].solve(np.concatenate([rhs_n, rhs_s]))
+            v_n, v_s = solution[:n], solution[n:]
+            t += step
+        full_n = np.concatenate([[0.0], v_n, [omega * radius]])
+        full_s = np.concatenate([[0.0], v_s, [v_s[-1]]])
+        slopes.append((np.trapz(full_n * grid**2, grid) / weight,
+                       np.trapz(full_s * grid**2, grid) / weight))
+    return slopes
