@@ -14,6 +14,9 @@ Usage: /usr/bin/python3 tools/plots/two_fluid_rotating_cylinder.py [--make-runs]
                             Vinen's decay beta_v = 4.76e-9 m^2/s
   cylinder-paper-steady-l   beta_v = 0: the line density stays at L0, the two fluids locked
   cylinder-paper-cSCAN      C_omega = 0, 0.005, 0.015, 0.02, 0.03, 0.05, 0.1, 0.2
+  cylinder-interp           physics.phases = interpenetrating (README): the mixture as the
+                            two-fluid continuum, C_omega = 0.01
+  cylinder-interp-nospin    the same, spin term off: against the linear two-fluid spin-up
 Writes into --out (default docs/figures):
   two_fluid_rotating_cylinder.png  the normal fluid alone against Navier-Stokes; |v| against r at
                                    0.5 s and 5 s; the slope against t; the scan: vortex strength
@@ -40,7 +43,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from cylinder_spin_up import spin_up_slope, spin_up_velocity  # noqa: E402
+from cylinder_spin_up import spin_up_slope, spin_up_velocity, two_fluid_spin_up  # noqa: E402
 from revsph_runs import REPO, chosen_runs, figure_parser, figure_script_main, save_figure, snapshots  # noqa: E402,E501
 
 CASES = REPO / "models" / "two_fluid" / "cases"
@@ -54,6 +57,16 @@ SCAN = (0.0, 0.005, 0.01, 0.015, 0.02, 0.03, 0.05, 0.1, 0.2)
 RUNS = {"spin-up-normal": (0.0, 0.0), "cylinder-paper": (0.01, 4.76e-9),
         "cylinder-paper-steady-l": (0.01, 0.0)}
 RUNS.update({f"cylinder-paper-c{c}": (c, 4.76e-9) for c in SCAN if c != 0.01})
+# physics.phases = "interpenetrating" (README): the random mixture as the two-fluid continuum.
+INTERPENETRATING = {"cylinder-interp": (0.01, 4.76e-9), "cylinder-interp-nospin": (0.0, 4.76e-9)}
+RUNS.update(INTERPENETRATING)
+RHO_S = RHO - RHO_N
+ALPHA, KAPPA, L0, BETA_V = 0.0968, 9.9693e-8, 1.0e10, 4.76e-9  # the case's mutual friction
+
+
+def friction_coefficient(t, beta=BETA_V):
+    """C_L(t) = (2/3) rho_s alpha kappa L(t), 1/L = 1/L0 + beta_v t (paper 5 eqs. 8-9, 29)."""
+    return 2.0 / 3.0 * RHO_S * ALPHA * KAPPA / (1.0 / L0 + beta * t)
 
 
 def command(name):
@@ -61,6 +74,8 @@ def command(name):
         return ["run", str(CASES / "spin-up-normal.toml")]
     c_omega, beta = RUNS[name]
     arguments = ["run", str(CASES / "rotating-cylinder.toml")]
+    if name in INTERPENETRATING:
+        arguments += ["--set", "physics.phases=interpenetrating"]
     if beta != 4.76e-9:
         arguments += ["--set", f"mutual_friction.vinen_beta={beta!r}"]
     if c_omega != 0.01:
@@ -156,21 +171,38 @@ def plot_profiles(axes, runs, report):
                        f"{spin_up_slope(5.0, nu, RADIUS, OMEGA):.3f}"))
 
 
-def plot_slope_history(axis, runs, rows):
+def plot_slope_history(axis, runs, rows, report):
     t_all = np.linspace(0, 5.0, 101)
     for nu, label in ((NU_LOCKED, "fluids locked"), (NU_NORMAL, "normal fluid alone")):
         axis.plot(t_all, [spin_up_slope(t, nu, RADIUS, OMEGA) for t in t_all], "-",
                   label=f"Navier-Stokes, {label}")
-    for name in ("cylinder-paper", "cylinder-paper-steady-l"):
+    # The linear two-fluid continuum with the case's C_L(t): the reference of the
+    # interpenetrating runs (the spin term, absent from it, is off in cylinder-interp-nospin).
+    continuum = two_fluid_spin_up(t_all[1:], RHO_N, RHO_S, 2 * ETA_N, friction_coefficient,
+                                  RADIUS, OMEGA)
+    for k, kind in enumerate(("normal", "superfluid")):
+        axis.plot(t_all[1:], [c[k] for c in continuum], "k" + ("-." if k else ":"),
+                  label=f"two-fluid continuum, {kind}")
+        report.append((f"two-fluid continuum (C_L(t) of the case): {kind}'s slope at 5 s",
+                       f"{continuum[-1][k]:.3f}"))
+    for name in ("cylinder-paper", "cylinder-paper-steady-l", *INTERPENETRATING):
         c_omega, beta = RUNS[name]
+        whole = history(runs / name)
         for kind, marker in (("superfluid", "o"), ("normal", "s")):
-            h = [r for r in history(runs / name) if r[1] == kind]
-            axis.plot([r[0] for r in h], [r[2] for r in h], marker, ms=4, mfc="none",
-                      label=f"beta_v = {beta:g}, {kind}")
+            h = [r for r in whole if r[1] == kind]
+            axis.plot([r[0] for r in h], [r[2] for r in h], marker, ms=3, mfc="none",
+                      label=f"{name}, {kind}")
+            if name in INTERPENETRATING:
+                report.append((f"{name}: {kind}'s slope at {h[-1][0]:.3g} s", f"{h[-1][2]:.3f}"))
+        if name in INTERPENETRATING:
+            rows += [(name, c_omega, beta, t, kind, slope, strength,
+                      spin_up_slope(t, NU_NORMAL, RADIUS, OMEGA),
+                      spin_up_slope(t, NU_LOCKED, RADIUS, OMEGA))
+                     for t, kind, slope, strength in whole]
     axis.axhline(OMEGA, color="k", ls="--", lw=1)
     axis.axhline(0.9 * OMEGA, color="k", ls=":", lw=1)
     axis.set(xlabel="t (s)", ylabel="slope of |v| against r (rad/s)",
-             title="spin-up of the mixture (C_omega = 0.01)")
+             title="spin-up of the mixture (C_omega = 0.01 unless 'nospin')")
     axis.legend(fontsize=6)
 
 
@@ -223,7 +255,7 @@ def make_figures(runs, out, report, names):
     rows = []
     plot_normal_alone(axes[0, 0], runs, rows, report)
     plot_profiles(axes[0, 1:], runs, report)
-    plot_slope_history(axes[1, 0], runs, rows)
+    plot_slope_history(axes[1, 0], runs, rows, report)
     scan = [n for n in names if n.startswith("cylinder-paper")]
     plot_scan(axes[1, 1:], runs, scan, rows, report)
     plot_field(axes[2, 0], runs, "cylinder-paper")
