@@ -105,8 +105,9 @@ def make_figures(runs, out, report, names):
     for r in rows:
         report.append((f"{r[0]}: eps1 (eq. 27 as an RMS), eps2 (eq. 28)",
                        f"{r[5]:.3e}, {r[6]:.3e}"))
-    for a in sorted({r[4] for r in rows if r[0].startswith("eps1-cosine")}):
-        pts = sorted((r[2], r[5]) for r in rows if r[0].startswith("eps1-cosine") and r[4] == a)
+    cosine_m50 = [r for r in rows if r[0].startswith(("eps1-cosine", "probe-cosine"))]
+    for a in sorted({r[4] for r in cosine_m50}):
+        pts = sorted((r[2], r[5]) for r in cosine_m50 if r[4] == a)
         axes[0].loglog([p[0] for p in pts], [p[1] for p in pts], "o-", label=f"A = {a}")
     axes[0].axhline(0.01, color="grey", ls=":", label="1 % (the paper, N = 300)")
     axes[0].set(xlabel="N (particles per side)", ylabel="eps1 (RMS over particles)",
