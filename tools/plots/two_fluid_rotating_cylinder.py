@@ -247,7 +247,7 @@ def plot_field(axis, runs, name):
     _, _, _, _, about = rotation_measures(x, v)
     axis.quiver(x[:, 0] * 1e3, x[:, 1] * 1e3, about[:, 0], about[:, 1])
     axis.set(aspect="equal", xlabel="x (mm)", ylabel="y (mm)",
-             title=f"{name}: normal fluid about its mean rotation, t = {t:.2f} s")
+             title=f"{name}:\nnormal fluid about its mean rotation, t = {t:.2f} s")
 
 
 def make_figures(runs, out, report, names):
