@@ -202,7 +202,7 @@ const KeyTable& case_keys() {
            "\"separate\": a particle carries its kind's density (layers, sec. V.1); "
            "\"interpenetrating\": every particle carries rho_s + rho_n and a phase's partial "
            "density is its particles' share, viscosity, friction and spin using the phase's "
-           "volume 1 / sum_(same phase) W (a random mixture as a two-fluid continuum, README)",
+           "volume V rho / rho_k (a random mixture as a two-fluid continuum, README)",
            {"separate", "interpenetrating"}});
     t.add({"physics.sound_speed", T::number, "m/s", "required",
            "c of the Tait equation p = rho_k c^2 / gamma ((rho / rho_k)^gamma - 1) (not given "

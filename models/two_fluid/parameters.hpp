@@ -96,7 +96,6 @@ struct Parameters {
     }
     return superfluid ? superfluid_density : normal_density;
   }
-  double wall_density() const { return rest_density(false); }
 };
 
 template <int D>

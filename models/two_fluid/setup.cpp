@@ -96,7 +96,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
       for (const Vec<D>& x : block.positions) {
         wall.position.push_back(x);
         wall.velocity.push_back(wall_velocity<D>(case_file, block.key, x));
-        wall.mass.push_back(parameters.wall_density() * volume);
+        wall.mass.push_back(parameters.rest_density(false) * volume);
       }
       continue;
     }

@@ -191,11 +191,10 @@ std::unique_ptr<revsph::Simulation> block_in_motion(std::vector<Override> more,
   return simulation;
 }
 
-// Sum over a set's particles of m and of p_x (or of weight(x, y) p_x / m with a weight).
+// Over a set's particles: their count, the sum of m and the sum of weight(x, y) p_x / m.
 struct SetSums {
   std::size_t count = 0;
   double mass = 0.0;
-  double momentum = 0.0;
   double weighted_velocity = 0.0;
 };
 template <class Weight>
@@ -207,7 +206,6 @@ SetSums sums_of(revsph::Simulation& simulation, const char* set, Weight weight) 
   SetSums sums{p.count};
   for (std::size_t i = 0; i < p.count; ++i) {
     sums.mass += m.real(0, i);
-    sums.momentum += p.real(0, i);
     sums.weighted_velocity += weight(x.real(0, i), x.real(1, i)) * p.real(0, i) / m.real(0, i);
   }
   return sums;

@@ -10,6 +10,8 @@ and int_0^R r J1(j r / R)^2 dr = R^2 J2(j)^2 / 2:
 """
 
 import numpy as np
+from scipy.sparse import bmat, diags, identity
+from scipy.sparse.linalg import splu
 from scipy.special import jn_zeros, jv
 
 TERMS = 400  # the series' tail at t = 0 is 1/k^2 small; at t > 0 it dies exponentially
@@ -45,9 +47,6 @@ def two_fluid_spin_up(times, rho_n, rho_s, eta, friction, radius, omega, cells=4
     C(t) = friction(t) the friction coefficient per unit volume (paper 5 eq. 29: C_L). Central
     differences on `cells` rings, Crank-Nicolson in time (second order in both). Returns the
     least-squares slopes (as spin_up_slope) of v_n and v_s at each of `times` (ascending)."""
-    from scipy.sparse import diags, identity
-    from scipy.sparse.linalg import splu
-
     h = radius / cells
     r = h * np.arange(1, cells)  # interior nodes; v = 0 at r = 0, v_n = Omega R at r = R
     lower = eta * (1.0 / h**2 - 1.0 / (2.0 * h * r[1:]))
@@ -60,21 +59,19 @@ def two_fluid_spin_up(times, rho_n, rho_s, eta, friction, radius, omega, cells=4
     v_n, v_s = np.zeros(n), np.zeros(n)
     grid = np.concatenate([[0.0], r, [radius]])
     weight = np.trapz(grid**3, grid)
-    slopes, t, solver, solver_c = [], 0.0, None, None
+    eye = identity(n, format="csc")
+    slopes, t, solvers = [], 0.0, {}
     for target in times:
         while t < target - 1e-12:
             step = min(dt, target - t)
             c = friction(t + step / 2)
-            if solver is None or c != solver_c or step != solver[1]:
-                # [rho_n - step/2 (L - c), -step/2 c; -step/2 c, rho_s + step/2 c]
-                eye = identity(n, format="csc")
-                from scipy.sparse import bmat
-                system = bmat([[rho_n * eye - step / 2 * (laplacian - c * eye), -step / 2 * c * eye],
-                               [-step / 2 * c * eye, (rho_s + step / 2 * c) * eye]], format="csc")
-                solver, solver_c = (splu(system), step), c
+            if (c, step) not in solvers:  # a constant C reuses one factorisation
+                solvers = {(c, step): splu(bmat(
+                    [[rho_n * eye - step / 2 * (laplacian - c * eye), -step / 2 * c * eye],
+                     [-step / 2 * c * eye, (rho_s + step / 2 * c) * eye]], format="csc"))}
             rhs_n = rho_n * v_n + step / 2 * (laplacian @ v_n - c * (v_n - v_s)) + step * wall
             rhs_s = rho_s * v_s + step / 2 * c * (v_n - v_s)
-            solution = solver[0].solve(np.concatenate([rhs_n, rhs_s]))
+            solution = solvers[(c, step)].solve(np.concatenate([rhs_n, rhs_s]))
             v_n, v_s = solution[:n], solution[n:]
             t += step
         full_n = np.concatenate([[0.0], v_n, [omega * radius]])
