@@ -19,13 +19,11 @@ namespace {
 
 using WaveMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
-constexpr int dimension = 2;           // D_s of (A4), (A8)
-constexpr double support_over_l = 3.0; // the Wendland quintic's support radius / l: the paper
-                                       // names no kernel; 3 l as paper 1 and paper 4 (sec. 3.4)
+constexpr int dimension = 2; // D_s of (A4), (A8)
 
 // Lattice offsets a neighbour can have: the support plus the displacement of both particles
 // (2 dl < l) stays within ceil(support / l) + 1 nodes along each axis.
-int lattice_reach() {
+int lattice_reach(double support_over_l) {
   return static_cast<int>(std::ceil(support_over_l)) + 1;
 }
 
@@ -54,7 +52,7 @@ Image image_of(int k, int n) {
 template <class F>
 void for_each_neighbour(const WaveParticles& particles, int i, int j, F&& f) {
   const int n = particles.per_side;
-  const int reach = lattice_reach();
+  const int reach = lattice_reach(particles.support_over_l);
   const std::array<double, 2>& xi = particles.position[static_cast<std::size_t>(j) * n + i];
   for (int dj = -reach; dj <= reach; ++dj) {
     const Image y_image = image_of(j + dj, n);
@@ -158,11 +156,11 @@ void fill_row(const WaveParticles& particles, WaveLaplacian method,
 WaveMatrix laplacian_matrix(const WaveParticles& particles, WaveLaplacian method) {
   const int n = particles.per_side;
   const auto count = static_cast<Eigen::Index>(particles.position.size());
-  const WendlandQuintic<2> kernel(support_over_l * particles.spacing);
+  const WendlandQuintic<2> kernel(particles.support_over_l * particles.spacing);
   const std::vector<double> volume = method == WaveLaplacian::brookshaw
                                          ? kernel_volumes(particles, kernel)
                                          : std::vector<double>{};
-  const int reach = lattice_reach();
+  const int reach = lattice_reach(particles.support_over_l);
   WaveMatrix matrix(count, count);
   matrix.reserve(count * (method == WaveLaplacian::fd ? 5 : (2 * reach + 1) * (2 * reach + 1)));
   Row row;
@@ -241,12 +239,18 @@ double displacement_for(double fluctuation_percent, double spacing) {
   return spacing * (std::sqrt(1.0 + fluctuation_percent / 100.0) - 1.0);
 }
 
-WaveParticles wave_particles(int per_side, double fluctuation_percent, std::uint64_t seed) {
-  if (per_side <= 2 * lattice_reach()) {
+WaveParticles wave_particles(int per_side, double fluctuation_percent, std::uint64_t seed,
+                             double support_over_l) {
+  if (!(support_over_l >= 1.5 && support_over_l <= 6.0)) {
+    throw std::invalid_argument("the kernel's support must be in [1.5, 6] spacings");
+  }
+  if (per_side <= 2 * lattice_reach(support_over_l)) {
     throw std::invalid_argument("the entropy wave needs more than " +
-                                std::to_string(2 * lattice_reach()) + " particles per side");
+                                std::to_string(2 * lattice_reach(support_over_l)) +
+                                " particles per side");
   }
   WaveParticles particles;
+  particles.support_over_l = support_over_l;
   particles.per_side = per_side;
   particles.spacing = 1.0 / per_side;
   particles.displacement = displacement_for(fluctuation_percent, particles.spacing);
@@ -281,8 +285,8 @@ EntropyWaveResult entropy_wave(const EntropyWaveOptions& options) {
   if (options.method == WaveLaplacian::fd && options.fluctuation_percent != 0.0) {
     throw std::invalid_argument("fd lives on the unperturbed lattice: its fluctuation must be 0");
   }
-  const WaveParticles particles =
-      wave_particles(options.per_side, options.fluctuation_percent, options.seed);
+  const WaveParticles particles = wave_particles(options.per_side, options.fluctuation_percent,
+                                                 options.seed, options.support_over_l);
   EntropyWaveResult result;
   result.spacing = particles.spacing;
   result.displacement = particles.displacement;
@@ -357,16 +361,19 @@ EntropyWaveResult entropy_wave(const EntropyWaveOptions& options) {
   }
   result.mode_amplitude = sum_sf / sum_ff;
   double sum = 0.0;
+  double literal_sum = 0.0;
   double off_mode_sum = 0.0;
   for (Eigen::Index p = 0; p < count; ++p) {
     const double f = mode(particles.position[static_cast<std::size_t>(p)]);
     const double denominator = (std::abs(phase * f) + amplitude) / 100.0;
     const double error = std::abs(current[p] - phase * f) / denominator;
     sum += error;
+    literal_sum += std::abs(current[p] - phase * f) / (std::abs(phase * f + amplitude) / 100.0);
     result.max_error_percent = std::max(result.max_error_percent, error);
     off_mode_sum += std::abs(current[p] - result.mode_amplitude * f) / denominator;
   }
   result.mean_error_percent = sum / static_cast<double>(count);
+  result.literal_error_percent = literal_sum / static_cast<double>(count);
   result.off_mode_error_percent = off_mode_sum / static_cast<double>(count);
   return result;
 }

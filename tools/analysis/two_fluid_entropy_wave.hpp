@@ -44,6 +44,8 @@ struct EntropyWaveOptions {
   double speed = 135.0;                  // c [m/s]: the paper's 135 and 20
   double fluctuation_percent = 0.0;      // dD; must be 0 for fd, which has no particle positions
   int per_side = 400;                    // N_px = N_py
+  double support_over_l = 3.0;           // the Wendland quintic's support radius / l: the paper
+                                         // names no kernel; 3 l as paper 1 and paper 4 (sec. 3.4)
   std::uint64_t seed = 1;                // of the displacement directions
   double t_end = 0.03;                   // [s]
   double dt_factor = 0.1;                // dt = dt_factor l / c, rounded down to hit t_end
@@ -57,15 +59,18 @@ struct WaveParticles {
   int per_side = 0;
   double spacing = 0.0;      // l
   double displacement = 0.0; // dl
+  double support_over_l = 3.0;
   std::vector<std::array<double, 2>> position;
 };
 
 // dl for a volume fluctuation rate dD in percent.
 double displacement_for(double fluctuation_percent, double spacing);
 
-// Throws std::invalid_argument if per_side is too small for the kernel's reach or dD is negative
-// or so large that a particle could leave the square (dl >= l / 2).
-WaveParticles wave_particles(int per_side, double fluctuation_percent, std::uint64_t seed);
+// Throws std::invalid_argument if per_side is too small for the kernel's reach, the support is
+// outside [1.5, 6] l, or dD is negative or so large that a particle could leave the square
+// (dl >= l / 2).
+WaveParticles wave_particles(int per_side, double fluctuation_percent, std::uint64_t seed,
+                             double support_over_l = 3.0);
 
 // L phi over the particles, the sides' odd images included (a check of the operator: for a
 // quadratic phi its exact value away from the sides).
@@ -81,6 +86,9 @@ struct EntropyWaveResult {
   // The paper's E_r at t_end (see entropy_wave) and the largest particle term of its mean.
   double mean_error_percent = 0.0;
   double max_error_percent = 0.0;
+  // The same mean with the paper's printed denominator |S_a + A| (zero where S_a = -A: large
+  // wherever t_end puts a trough near a particle).
+  double literal_error_percent = 0.0;
   // E_r splits into a phase error of the mode and a part outside the mode: a = sum_i S_i f_i /
   // sum_i f_i^2, f = sin(4 pi x) sin(3 pi y), the mode's least-squares amplitude at t_end (exact:
   // cos(lambda t_end)), and E_r's formula applied to S - a f. The first is mostly L's dispersion

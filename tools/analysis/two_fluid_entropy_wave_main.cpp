@@ -29,7 +29,8 @@ using namespace revsph::analysis;
 
 std::string summary_header() {
   return "method,speed,fluctuation,dl_over_l,particles,dt,steps,mean_error_percent,"
-         "max_error_percent,wall_seconds,mode_amplitude,exact_amplitude,off_mode_error_percent";
+         "max_error_percent,wall_seconds,mode_amplitude,exact_amplitude,off_mode_error_percent,"
+         "support_over_l,literal_error_percent";
 }
 
 std::string summary_row(const EntropyWaveOptions& options, const EntropyWaveResult& result,
@@ -37,11 +38,12 @@ std::string summary_row(const EntropyWaveOptions& options, const EntropyWaveResu
   char line[512];
   const double exact_amplitude = std::cos(5.0 * std::numbers::pi * options.speed * options.t_end);
   std::snprintf(line, sizeof line,
-                "%s,%.10g,%.10g,%.10g,%d,%.10g,%ld,%.10g,%.10g,%.3f,%.12g,%.12g,%.10g",
+                "%s,%.10g,%.10g,%.10g,%d,%.10g,%ld,%.10g,%.10g,%.3f,%.12g,%.12g,%.10g,%.10g,%.10g",
                 name_of(options.method).data(), options.speed, options.fluctuation_percent,
                 result.displacement / result.spacing, options.per_side, result.dt, result.steps,
                 result.mean_error_percent, result.max_error_percent, wall_seconds,
-                result.mode_amplitude, exact_amplitude, result.off_mode_error_percent);
+                result.mode_amplitude, exact_amplitude, result.off_mode_error_percent,
+                options.support_over_l, result.literal_error_percent);
   return line;
 }
 
@@ -64,6 +66,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--particles", options.per_side, "particles per side")->capture_default_str();
   app.add_option("--seed", options.seed, "seed of the displacement directions")
+      ->capture_default_str();
+  app.add_option("--support", options.support_over_l,
+                 "the Wendland quintic's support radius in spacings l (the paper names none)")
       ->capture_default_str();
   app.add_option("--t-end", options.t_end, "end time [s]")->capture_default_str();
   app.add_option("--dt-factor", options.dt_factor, "dt = factor l / c")->capture_default_str();

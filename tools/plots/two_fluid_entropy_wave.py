@@ -48,25 +48,40 @@ from docstring_cli import parser_from_docstring  # noqa: E402
 REPO = Path(__file__).resolve().parents[2]
 SPEEDS = (135, 20)
 FLUCTUATIONS = (0, 0.25, 0.5, 1, 1.5, 2, 3)
-RUNS = ([("sph", c, d) for c in SPEEDS for d in FLUCTUATIONS]
-        + [("brookshaw", c, d) for c in SPEEDS for d in (0, 0.5)]
-        + [("fd", c, 0) for c in SPEEDS])
-PAPER = {135: "0.018 % at dD = 0.5", 20: "0.012 % at dD = 0.5"}
+# (method, c, dD, support / l, dt / (l / c)): the default sph (support 3 l, dt 0.1 l / c), the
+# short kernel near its stability limit (support 2 l, dt 0.95 l / c: the smallest E_r at c = 135
+# found, panel e), Brookshaw, FD, and the scan of panels (e), (f) at dD = 0.5.
+DEFAULT, SHORT = (3.0, 0.1), (2.0, 0.95)
+# The last dt of each support is the largest stable one found (unstable by 0.72, 0.96, 1.15, 1.49
+# at 400^2, c = 135, seed 1).
+SCAN_STEPS = {1.5: (0.1, 0.4, 0.6, 0.7), 2.0: (0.1, 0.4, 0.6, 0.8, 0.9, 0.95),
+              2.5: (0.1, 0.4, 0.8, 1.0, 1.14), 3.0: (0.1, 0.4, 0.8, 1.2, 1.4, 1.47)}
+RUNS = ([("sph", c, d, *DEFAULT) for c in SPEEDS for d in FLUCTUATIONS]
+        + [("sph", c, d, *SHORT) for c in SPEEDS for d in FLUCTUATIONS]
+        + [("brookshaw", c, d, *DEFAULT) for c in SPEEDS for d in (0, 0.5)]
+        + [("fd", c, 0, *DEFAULT) for c in SPEEDS]
+        + [("sph", 135, 0.5, s, f) for s, steps in SCAN_STEPS.items() for f in steps]
+        + [("sph", 20, 0.5, s, 0.1) for s in SCAN_STEPS])
+RUNS = list(dict.fromkeys(RUNS))
+PAPER = {135: 0.018, 20: 0.012}  # E_r [%] at dD = 0.5 (sec. V.2)
 
 
-def run_name(method, speed, fluctuation):
-    return f"{method}-c{speed}-dD{fluctuation}"
+def run_name(method, speed, fluctuation, support=DEFAULT[0], dt_factor=DEFAULT[1]):
+    tail = "" if (support, dt_factor) == DEFAULT else f"-s{support:g}-dt{dt_factor:g}"
+    return f"{method}-c{speed}-dD{fluctuation}{tail}"
 
 
 def make_missing_runs(runs, tool, particles):
     runs.mkdir(parents=True, exist_ok=True)
     environment = dict(os.environ, OMP_NUM_THREADS="1", OMP_WAIT_POLICY="passive")
-    for method, speed, fluctuation in RUNS:
-        prefix = runs / run_name(method, speed, fluctuation)
+    for run in RUNS:
+        method, speed, fluctuation, support, dt_factor = run
+        prefix = runs / run_name(*run)
         if (prefix.parent / (prefix.name + ".csv")).is_file():
             continue
         command = [str(tool), "--method", method, "--speed", str(speed), "--fluctuation",
-                   str(fluctuation), "--particles", str(particles), "--out", str(prefix)]
+                   str(fluctuation), "--support", str(support), "--dt-factor", str(dt_factor),
+                   "--particles", str(particles), "--out", str(prefix)]
         print("+", shlex.join(command), flush=True)
         subprocess.run(command, check=True, env=environment, stdout=subprocess.DEVNULL)
 
@@ -90,45 +105,79 @@ def power_fit(fluctuation, error):
     return parameters
 
 
-def error_panel(ax, rows, speed, report):
-    def picked(method):
-        chosen = sorted((r for r in rows if r["method"] == method and int(float(r["speed"])) ==
-                         speed), key=lambda r: float(r["fluctuation"]))
-        return (np.array([float(r["fluctuation"]) for r in chosen]),
-                np.array([float(r["mean_error_percent"]) for r in chosen]),
-                np.array([float(r["off_mode_error_percent"]) for r in chosen]))
+def error_panel(ax, table, speed, report):
+    def series(support_dt, method="sph", column="mean_error_percent"):
+        runs = sorted((r for r in table if r[0] == method and r[1] == speed and
+                       r[3:] == support_dt), key=lambda r: r[2])
+        return (np.array([r[2] for r in runs]),
+                np.array([float(table[r][column]) for r in runs]))
 
-    d, error, off_mode = picked("sph")
-    ax.semilogy(d, error, "o", color="tab:blue", label="SPH (App. A) $E_r$")
-    fit = power_fit(d, error)
-    if fit is not None:
-        line = np.linspace(0.0, d.max(), 200)
-        ax.semilogy(line, fit[0] + fit[1] * line ** fit[2], "-", color="tab:blue",
-                    label=f"fit {fit[0]:.3g} + {fit[1]:.2g} dD$^{{{fit[2]:.2f}}}$")
-        report.append(f"c = {speed}: sph fit E_r = {fit[0]:.4g} + {fit[1]:.4g} dD^{fit[2]:.3f}")
-    positive = d > 0
-    ax.semilogy(d[positive], off_mode[positive], "o", mfc="none", color="tab:blue",
-                label="SPH, part outside the mode")
-    off_fit = power_fit(d, off_mode)
-    if off_fit is not None:
-        report.append(f"c = {speed}: sph part outside the mode = {off_fit[0]:.3g} + "
-                      f"{off_fit[1]:.4g} dD^{off_fit[2]:.3f}")
-    for value, e in zip(d, error):
-        report.append(f"c = {speed}: sph E_r(dD = {value:g}) = {e:.4g} %")
-    fd = picked("fd")
-    if len(fd[0]):
-        ax.axhline(fd[1][0], color="k", linestyle="--", label=f"FD (5-point) {fd[1][0]:.3g} %")
-        report.append(f"c = {speed}: fd E_r = {fd[1][0]:.4g} %")
-    b = picked("brookshaw")
-    if len(b[0]):
-        ax.semilogy(b[0], b[1], "s", color="tab:red", label="Brookshaw (eq. 14 x 2)")
-        report.extend(f"c = {speed}: brookshaw E_r(dD = {v:g}) = {e:.4g} %"
-                      for v, e in zip(b[0], b[1]))
+    for support_dt, colour, marker in ((DEFAULT, "tab:blue", "o"), (SHORT, "tab:green", "^")):
+        label = f"SPH (App. A), support {support_dt[0]:g} l, dt {support_dt[1]:g} l/c"
+        for column, fill, kind in (("mean_error_percent", colour, "E_r"),
+                                   ("literal_error_percent", "none", "E_r, |S_a + A|")):
+            d, error = series(support_dt, column=column)
+            ax.semilogy(d, error, marker, color=colour, mfc=fill, label=f"{label}: {kind}")
+            fit = power_fit(d, error)
+            if fit is not None:
+                line = np.linspace(0.0, d.max(), 200)
+                ax.semilogy(line, fit[0] + fit[1] * line ** fit[2], "-" if fill != "none" else
+                            ":", color=colour, linewidth=0.8)
+                report.append(f"c = {speed}, {label}, {kind}: fit {fit[0]:.4g} + {fit[1]:.4g} "
+                              f"dD^{fit[2]:.3f}")
+            report.extend(f"c = {speed}, {label}, {kind}(dD = {v:g}) = {e:.4g} %"
+                          for v, e in zip(d, error))
+        d, off_mode = series(support_dt, column="off_mode_error_percent")
+        report.append(f"c = {speed}, {label}: part outside the mode at dD = 0.5: "
+                      f"{off_mode[d == 0.5][0]:.4g} %")
+    _, fd = series(DEFAULT, "fd")
+    _, fd_literal = series(DEFAULT, "fd", "literal_error_percent")
+    ax.axhline(fd[0], color="k", linestyle="--", label=f"FD (5-point) {fd[0]:.3g} %")
+    report.append(f"c = {speed}: fd E_r = {fd[0]:.4g} %, with |S_a + A| {fd_literal[0]:.4g} %")
+    d, brookshaw = series(DEFAULT, "brookshaw")
+    ax.semilogy(d, brookshaw, "s", color="tab:red", label="Brookshaw (eq. 14 x 2)")
+    report.extend(f"c = {speed}: brookshaw E_r(dD = {v:g}) = {e:.4g} %"
+                  for v, e in zip(d, brookshaw))
+    paper = PAPER[speed]
+    ax.errorbar([0.5], [paper], yerr=[[paper / 2], [paper]], fmt="*", color="k", markersize=10,
+                capsize=3, label=f"paper {paper} % (bar: factor 2)")
     ax.set(xlabel="volume fluctuation rate dD [%]", ylabel="$E_r$ [%]",
-           title=f"c = {speed} m/s (paper's Fig. 8{'a' if speed == 135 else 'b'}; paper: "
-                 f"{PAPER[speed]})")
+           title=f"c = {speed} m/s (paper's Fig. 8{'a' if speed == 135 else 'b'})")
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7, loc="upper right" if speed == 135 else "lower right")
+    ax.legend(fontsize=6, loc="lower right")
+
+
+def scan_panels(ax_dt, ax_support, table, report):
+    """(e) E_r at c = 135, dD = 0.5 against dt per support, up to the last stable dt; (f) E_r at
+    c = 20, dD = 0.5 against the support."""
+    for support, steps in SCAN_STEPS.items():
+        runs = [("sph", 135, 0.5, support, f) for f in steps]
+        for column, fill in (("mean_error_percent", None), ("literal_error_percent", "none")):
+            error = [float(table[r][column]) for r in runs]
+            line, = ax_dt.semilogy(steps, error, "o-" if fill is None else "o:", mfc=fill,
+                                   label=f"support {support:g} l" if fill is None else None)
+            if fill is not None:
+                line.set_color(ax_dt.lines[-2].get_color())
+            report.append(f"c = 135, dD = 0.5, support {support:g} l, "
+                          f"{'|S_a + A|' if fill else 'E_r'}: " +
+                          ", ".join(f"dt {f:g}: {e:.4g}" for f, e in zip(steps, error)))
+    ax_dt.axhspan(PAPER[135] / 2, PAPER[135] * 2, color="0.85", label="paper's 0.018 %, factor 2")
+    ax_dt.set(xlabel="dt / (l / c) (last point: the largest stable one of the scan)",
+              ylabel="$E_r$ [%] (filled: |S_a| + A; open: |S_a + A|)",
+              title="c = 135, dD = 0.5 %: the leapfrog's lead against the Laplacian's lag")
+    supports = list(SCAN_STEPS)
+    for column, marker, kind in (("mean_error_percent", "o-", "|S_a| + A"),
+                                 ("literal_error_percent", "s:", "|S_a + A| (as printed)")):
+        error = [float(table[("sph", 20, 0.5, s, 0.1)][column]) for s in supports]
+        ax_support.semilogy(supports, error, marker, label=f"E_r with {kind}")
+        report.append(f"c = 20, dD = 0.5, dt 0.1, {kind}: " +
+                      ", ".join(f"support {s:g}: {e:.4g}" for s, e in zip(supports, error)))
+    ax_support.axhspan(PAPER[20] / 2, PAPER[20] * 2, color="0.85", label="paper's 0.012 %, factor 2")
+    ax_support.set(xlabel="kernel support / l", ylabel="$E_r$ [%]",
+                   title="c = 20, dD = 0.5 %, dt = 0.1 l / c")
+    for ax in (ax_dt, ax_support):
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
 
 
 def probe_panels(ax_value, ax_difference, runs):
@@ -175,17 +224,19 @@ def main():
         print(f"missing runs {', '.join(missing)} in {runs} (use --make-runs)")
         return 1
 
-    rows = [row for r in RUNS for row in read_rows(runs / (run_name(*r) + ".csv"))]
+    table = {r: read_rows(runs / (run_name(*r) + ".csv"))[0] for r in RUNS}
+    rows = list(table.values())
     with open(out / f"two_fluid_entropy_wave{suffix}.csv", "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0]))
         writer.writeheader()
         writer.writerows(rows)
 
     report = []
-    fig, axes = plt.subplots(2, 2, figsize=(12, 8.5))
+    fig, axes = plt.subplots(3, 2, figsize=(12, 13))
     for ax, speed in zip(axes[0], SPEEDS):
-        error_panel(ax, rows, speed, report)
+        error_panel(ax, table, speed, report)
     probe_panels(axes[1, 0], axes[1, 1], runs)
+    scan_panels(axes[2, 0], axes[2, 1], table, report)
     fig.suptitle(f"Entropy wave, mode (4, 3), {rows[0]['particles']}$^2$ particles, t = 0.03 s "
                  "(paper 5, sec. V.2)", fontsize=10)
     fig.tight_layout()
