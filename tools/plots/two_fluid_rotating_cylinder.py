@@ -17,6 +17,9 @@ Usage: /usr/bin/python3 tools/plots/two_fluid_rotating_cylinder.py [--make-runs]
   cylinder-interp           physics.phases = interpenetrating (README): the mixture as the
                             two-fluid continuum, C_omega = 0.01
   cylinder-interp-nospin    the same, spin term off: against the linear two-fluid spin-up
+  cylinder-interp-nofriction  the same, friction off too (alpha = 0), to 2 s: the continuum
+                            leaves the superfluid at rest; what moves it is the particles' own
+                            coupling (README)
 Writes into --out (default docs/figures):
   two_fluid_rotating_cylinder.png  the normal fluid alone against Navier-Stokes; |v| against r at
                                    0.5 s and 5 s; the slope against t; the scan: vortex strength
@@ -60,6 +63,8 @@ RUNS.update({f"cylinder-paper-c{c}": (c, 4.76e-9) for c in SCAN if c != 0.01})
 # physics.phases = "interpenetrating" (README): the random mixture as the two-fluid continuum.
 INTERPENETRATING = {"cylinder-interp": (0.01, 4.76e-9), "cylinder-interp-nospin": (0.0, 4.76e-9)}
 RUNS.update(INTERPENETRATING)
+FRICTIONLESS = "cylinder-interp-nofriction"  # interpenetrating, spin and friction off, to 2 s
+RUNS[FRICTIONLESS] = (0.0, 4.76e-9)
 RHO_S = RHO - RHO_N
 ALPHA, KAPPA, L0, BETA_V = 0.0968, 9.9693e-8, 1.0e10, 4.76e-9  # the case's mutual friction
 
@@ -74,8 +79,10 @@ def command(name):
         return ["run", str(CASES / "spin-up-normal.toml")]
     c_omega, beta = RUNS[name]
     arguments = ["run", str(CASES / "rotating-cylinder.toml")]
-    if name in INTERPENETRATING:
+    if name in INTERPENETRATING or name == FRICTIONLESS:
         arguments += ["--set", "physics.phases=interpenetrating"]
+    if name == FRICTIONLESS:
+        arguments += ["--set", "mutual_friction.alpha=0", "--t-end", "2"]
     if beta != 4.76e-9:
         arguments += ["--set", f"mutual_friction.vinen_beta={beta!r}"]
     if c_omega != 0.01:
@@ -250,8 +257,53 @@ def plot_field(axis, runs, name):
              title=f"{name}:\nnormal fluid about its mean rotation, t = {t:.2f} s")
 
 
+def ring_profile(x, v, rings=10):
+    """Ring centres / R and the mean v_theta / (Omega R) of each ring."""
+    r = np.hypot(x[:, 0], x[:, 1])
+    azimuthal = (x[:, 0] * v[:, 1] - x[:, 1] * v[:, 0]) / np.maximum(r, 1e-300)
+    ring = np.minimum((r / RADIUS * rings).astype(int), rings - 1)
+    centres = (np.arange(rings) + 0.5) / rings
+    return centres, np.array([azimuthal[ring == k].mean() for k in range(rings)]) / (OMEGA * RADIUS)
+
+
+def plot_frictionless(axis_slope, axis_profile, runs, report):
+    """Interpenetrating phases with friction and spin off: the continuum's superfluid stays at rest
+    and its normal fluid spins up alone (nu = 2 eta_n / rho_n); the particles say otherwise."""
+    whole = history(runs / FRICTIONLESS)
+    t_all = np.linspace(0, 2.0, 81)
+    for nu, label in ((NU_NORMAL, "normal fluid alone"), (NU_LOCKED, "fluids locked")):
+        axis_slope.plot(t_all, [spin_up_slope(t, nu, RADIUS, OMEGA) for t in t_all], "-",
+                        label=f"Navier-Stokes, {label}")
+    axis_slope.plot(t_all, 0 * t_all, "k-.", label="continuum superfluid (no friction): 0")
+    for kind, marker in (("superfluid", "o"), ("normal", "s")):
+        h = [r for r in whole if r[1] == kind]
+        axis_slope.plot([r[0] for r in h], [r[2] for r in h], marker, mfc="none", label=kind)
+        report.append((f"{FRICTIONLESS}: {kind}'s slope at {h[-1][0]:.3g} s", f"{h[-1][2]:.3f}"))
+    axis_slope.set(xlabel="t (s)", ylabel="slope of |v| against r (rad/s)",
+                   title=f"{FRICTIONLESS}: friction and spin off")
+    axis_slope.legend(fontsize=6)
+    t, kinds = state_at(runs / FRICTIONLESS, 2.0)
+    r_fine = np.linspace(0, RADIUS, 101)
+    for nu, label in ((NU_NORMAL, "normal fluid alone"), (NU_LOCKED, "fluids locked")):
+        axis_profile.plot(r_fine / RADIUS,
+                          spin_up_velocity(r_fine, t, nu, RADIUS, OMEGA) / (OMEGA * RADIUS), "-",
+                          label=f"Navier-Stokes, {label}")
+    for kind, (x, v) in kinds.items():
+        centres, profile = ring_profile(x, v)
+        axis_profile.plot(centres, profile, "o-" if kind == "superfluid" else "s-", mfc="none",
+                          label=f"{kind}, t = {t:.2f} s")
+        report.append((f"{FRICTIONLESS}: {kind}'s ring means of v_theta / (Omega R) at {t:.3g} s",
+                       " ".join(f"{p:.3f}" for p in profile)))
+    locked = spin_up_velocity(np.array([0.95 * RADIUS]), t, NU_LOCKED, RADIUS, OMEGA)[0]
+    report.append((f"Navier-Stokes, fluids locked: v_theta / (Omega R) at 0.95 R, {t:.3g} s",
+                   f"{locked / (OMEGA * RADIUS):.3f}"))
+    axis_profile.set(xlabel="r / R", ylabel="ring mean of v_theta / (Omega R)",
+                     title=f"{FRICTIONLESS}: the outer ring slips at the wall")
+    axis_profile.legend(fontsize=6)
+
+
 def make_figures(runs, out, report, names):
-    fig, axes = plt.subplots(3, 3, figsize=(16, 14))
+    fig, axes = plt.subplots(3, 4, figsize=(21, 14))
     rows = []
     plot_normal_alone(axes[0, 0], runs, rows, report)
     plot_profiles(axes[0, 1:], runs, report)
@@ -261,6 +313,8 @@ def make_figures(runs, out, report, names):
     plot_field(axes[2, 0], runs, "cylinder-paper")
     plot_field(axes[2, 1], runs, "cylinder-paper-c0.05")
     plot_field(axes[2, 2], runs, "cylinder-paper-c0.0")
+    plot_frictionless(axes[0, 3], axes[1, 3], runs, report)
+    axes[2, 3].axis("off")
     save_figure(fig, out / "two_fluid_rotating_cylinder.png")
     with open(out / "two_fluid_rotating_cylinder.csv", "w", newline="") as f:
         writer = csv.writer(f)
