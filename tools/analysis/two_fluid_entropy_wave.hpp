@@ -104,8 +104,8 @@ struct EntropyWaveResult {
 
 // One run. E_r is the mean over the particles of |S_i - S_a(x_i, t_end)| / (|S_a| + A) x 100,
 // A = 1 the amplitude. The paper (sec. V.2) prints |S_a + A| in the denominator, which is zero
-// wherever S_a = -1 and contradicts its own "added to avoid division by zero": a slip, read as
-// |S_a| + A.
+// wherever S_a = -1 and contradicts its own "added to avoid division by zero"; both are reported
+// (literal_error_percent: as printed), since which one the paper computed is not known.
 EntropyWaveResult entropy_wave(const EntropyWaveOptions& options);
 
 } // namespace revsph::analysis
