@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <vector>
 
@@ -53,7 +54,7 @@ TEST(TwoFluidEntropyWave, ShorterSupportDispersesLess) {
   };
   const EntropyWaveResult wide = run(3.0);
   const EntropyWaveResult short_kernel = run(2.0);
-  const double exact = std::cos(5.0 * 3.141592653589793 * 135.0 * 0.01);
+  const double exact = std::cos(5.0 * std::numbers::pi * 135.0 * 0.01);
   const double wide_error = std::abs(wide.mode_amplitude - exact);
   const double short_error = std::abs(short_kernel.mode_amplitude - exact);
   std::printf("mode amplitude error, support 3 l and 2 l: %.3e, %.3e\n", wide_error, short_error);

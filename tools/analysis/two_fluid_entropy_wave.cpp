@@ -365,10 +365,12 @@ EntropyWaveResult entropy_wave(const EntropyWaveOptions& options) {
   double off_mode_sum = 0.0;
   for (Eigen::Index p = 0; p < count; ++p) {
     const double f = mode(particles.position[static_cast<std::size_t>(p)]);
-    const double denominator = (std::abs(phase * f) + amplitude) / 100.0;
-    const double error = std::abs(current[p] - phase * f) / denominator;
+    const double exact = phase * f;
+    const double difference = std::abs(current[p] - exact);
+    const double denominator = (std::abs(exact) + amplitude) / 100.0;
+    const double error = difference / denominator;
     sum += error;
-    literal_sum += std::abs(current[p] - phase * f) / (std::abs(phase * f + amplitude) / 100.0);
+    literal_sum += difference / (std::abs(exact + amplitude) / 100.0);
     result.max_error_percent = std::max(result.max_error_percent, error);
     off_mode_sum += std::abs(current[p] - result.mode_amplitude * f) / denominator;
   }

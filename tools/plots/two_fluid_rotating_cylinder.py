@@ -107,14 +107,27 @@ def state_at(run, time):
     return read_state(best)
 
 
+def azimuthal_velocity(x, v):
+    """r and v_theta of each particle."""
+    r = np.hypot(x[:, 0], x[:, 1])
+    return r, (x[:, 0] * v[:, 1] - x[:, 1] * v[:, 0]) / np.maximum(r, 1e-300)
+
+
+def ring_means(x, v, rings=10):
+    """Each particle's ring (of `rings` equal widths across R) and each ring's mean v_theta (0 for
+    an empty ring)."""
+    r, azimuthal = azimuthal_velocity(x, v)
+    ring = np.minimum((r / RADIUS * rings).astype(int), rings - 1)
+    return ring, np.array([azimuthal[ring == k].mean() if np.any(ring == k) else 0.0
+                           for k in range(rings)])
+
+
 def rotation_measures(x, v):
     """r, |v|, the slope of |v| = k r, and the vortex strength (module docstring)."""
     r = np.hypot(x[:, 0], x[:, 1])
     speed = np.hypot(v[:, 0], v[:, 1])
     slope = np.sum(r * speed) / np.sum(r * r)
-    azimuthal = (x[:, 0] * v[:, 1] - x[:, 1] * v[:, 0]) / np.maximum(r, 1e-300)
-    ring = np.minimum((r / RADIUS * 10).astype(int), 9)
-    mean = np.array([azimuthal[ring == k].mean() if np.any(ring == k) else 0.0 for k in range(10)])
+    ring, mean = ring_means(x, v)
     about = v - mean[ring][:, None] * np.column_stack([-x[:, 1], x[:, 0]]) / np.maximum(r, 1e-300)[:, None]
     strength = np.sqrt(np.mean(np.sum(about**2, axis=1))) / (OMEGA * RADIUS)
     return r, speed, slope, strength, about
@@ -144,9 +157,7 @@ def plot_normal_alone(axis, runs, rows, report):
         if t > 0:
             worst = max(worst, abs(slope / exact - 1))
     t, kinds = state_at(runs / "spin-up-normal", 0.5)
-    x, v = kinds["normal"]
-    r = np.hypot(x[:, 0], x[:, 1])
-    azimuthal = (x[:, 0] * v[:, 1] - x[:, 1] * v[:, 0]) / np.maximum(r, 1e-300)
+    r, azimuthal = azimuthal_velocity(*kinds["normal"])
     rms = np.sqrt(np.mean((azimuthal - spin_up_velocity(r, t, NU_NORMAL, RADIUS, OMEGA))**2))
     report.append(("spin-up-normal: largest |slope / Navier-Stokes - 1| over the snapshots",
                    f"{worst:.4f}"))
@@ -178,11 +189,17 @@ def plot_profiles(axes, runs, report):
                        f"{spin_up_slope(5.0, nu, RADIUS, OMEGA):.3f}"))
 
 
-def plot_slope_history(axis, runs, rows, report):
-    t_all = np.linspace(0, 5.0, 101)
-    for nu, label in ((NU_LOCKED, "fluids locked"), (NU_NORMAL, "normal fluid alone")):
+def plot_navier_stokes_slopes(axis, t_end, samples):
+    """The analytic spin-up's slope against t for the normal fluid alone and the locked fluids."""
+    t_all = np.linspace(0, t_end, samples)
+    for nu, label in ((NU_NORMAL, "normal fluid alone"), (NU_LOCKED, "fluids locked")):
         axis.plot(t_all, [spin_up_slope(t, nu, RADIUS, OMEGA) for t in t_all], "-",
                   label=f"Navier-Stokes, {label}")
+    return t_all
+
+
+def plot_slope_history(axis, runs, rows, report):
+    t_all = plot_navier_stokes_slopes(axis, 5.0, 101)
     # The linear two-fluid continuum with the case's C_L(t): the reference of the
     # interpenetrating runs (the spin term, absent from it, is off in cylinder-interp-nospin).
     continuum = two_fluid_spin_up(t_all[1:], RHO_N, RHO_S, 2 * ETA_N, friction_coefficient,
@@ -257,23 +274,11 @@ def plot_field(axis, runs, name):
              title=f"{name}:\nnormal fluid about its mean rotation, t = {t:.2f} s")
 
 
-def ring_profile(x, v, rings=10):
-    """Ring centres / R and the mean v_theta / (Omega R) of each ring."""
-    r = np.hypot(x[:, 0], x[:, 1])
-    azimuthal = (x[:, 0] * v[:, 1] - x[:, 1] * v[:, 0]) / np.maximum(r, 1e-300)
-    ring = np.minimum((r / RADIUS * rings).astype(int), rings - 1)
-    centres = (np.arange(rings) + 0.5) / rings
-    return centres, np.array([azimuthal[ring == k].mean() for k in range(rings)]) / (OMEGA * RADIUS)
-
-
 def plot_frictionless(axis_slope, axis_profile, runs, report):
     """Interpenetrating phases with friction and spin off: the continuum's superfluid stays at rest
     and its normal fluid spins up alone (nu = 2 eta_n / rho_n); the particles say otherwise."""
     whole = history(runs / FRICTIONLESS)
-    t_all = np.linspace(0, 2.0, 81)
-    for nu, label in ((NU_NORMAL, "normal fluid alone"), (NU_LOCKED, "fluids locked")):
-        axis_slope.plot(t_all, [spin_up_slope(t, nu, RADIUS, OMEGA) for t in t_all], "-",
-                        label=f"Navier-Stokes, {label}")
+    t_all = plot_navier_stokes_slopes(axis_slope, 2.0, 81)
     axis_slope.plot(t_all, 0 * t_all, "k-.", label="continuum superfluid (no friction): 0")
     for kind, marker in (("superfluid", "o"), ("normal", "s")):
         h = [r for r in whole if r[1] == kind]
@@ -289,7 +294,8 @@ def plot_frictionless(axis_slope, axis_profile, runs, report):
                           spin_up_velocity(r_fine, t, nu, RADIUS, OMEGA) / (OMEGA * RADIUS), "-",
                           label=f"Navier-Stokes, {label}")
     for kind, (x, v) in kinds.items():
-        centres, profile = ring_profile(x, v)
+        _, means = ring_means(x, v)
+        centres, profile = (np.arange(len(means)) + 0.5) / len(means), means / (OMEGA * RADIUS)
         axis_profile.plot(centres, profile, "o-" if kind == "superfluid" else "s-", mfc="none",
                           label=f"{kind}, t = {t:.2f} s")
         report.append((f"{FRICTIONLESS}: {kind}'s ring means of v_theta / (Omega R) at {t:.3g} s",
