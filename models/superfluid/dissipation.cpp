@@ -110,7 +110,9 @@ void Model<D, Arith>::dissipate(double dt) {
     }
   }
   fill_superleak_sides();
-  const double eta = parameters_.support_radius / 20.0; // h / 10, h = support / 2
+  // eta = h / 10 with h the kernel's support radius: Table I's h is the support, as the authors'
+  // code uses it (README, "The kernel's width").
+  const double eta = parameters_.support_radius / 10.0;
   sum_pairs_over<Arith>(layout_, fluid_pairs_,
                         DissipationTerm<D>{kernel_, slot_mass_, slot_kind_, inputs_.inverse_density,
                                            inputs_.temperature, inputs_.normal_velocity,

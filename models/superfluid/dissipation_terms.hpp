@@ -6,7 +6,7 @@
 // Normal-fluid viscosity, Monaghan's form (B22), on the coflow velocity v, with the difference of
 // the normal velocities:
 //   dv_a/dt = sum_b m_b (w'_ab / r_ab) 2 (d + 2) mu / (rho_a rho_b)
-//             (v_n,ab . x_ab) / (r_ab^2 + eta^2) x_ab,     eta = h / 10 (h: the paper's, support / 2)
+//             (v_n,ab . x_ab) / (r_ab^2 + eta^2) x_ab,     eta = h / 10 (h: the support radius)
 // a's and b's increments are m_b c x_ab and -m_a c x_ab: momentum is kept exactly for equal
 // masses. The pair's dissipated power (B24), -m_a m_b c (v_n,ab . x_ab) / tau >= 0, heats a and b
 // by half each (B28 splits it so: each particle's zeta carries its half).

@@ -199,9 +199,10 @@ const KeyTable& case_keys() {
     t.add({"physics.second_sound_speed", T::number, "m/s", "from heat_capacity",
            "u2 of eq. (14), which then gives C; > 0; give this or heat_capacity"});
     t.add(particle_discretisation_case_keys(
-        "kernel support radius in units of dr: twice the paper's h (eq. 17; h = 3 dr is 6)",
+        "kernel support radius in units of dr: Table I's h, the support as the authors' code uses "
+        "it (h = 3 dr is 3; eq. 17 as printed, support 2h, would be 6)",
         "time step as a fraction of support / u1: dt = courant_number * support / u1 (the "
-        "paper's dt = h / (M u1) is courant_number = 1 / (2 M))"));
+        "paper's dt = h / (M u1) is courant_number = 1 / M)"));
     t.add({"initial.entropy_wave_amplitude", T::number, "1", "0",
            "A of eq. (26): s = s0 (1 + A sin(pi x / L) sin(pi y / L)) [sin(pi z / L) in 3D]"});
     t.add({"initial.entropy_wave_shape",

@@ -64,7 +64,7 @@ struct Parameters {
   double heat_conductivity = 0.0;        // beta (eq. 5), >= 0
   // [discretisation]
   double dr = 0.0;
-  double support_radius = 0.0; // the kernel's support, twice the paper's h (eq. 17)
+  double support_radius = 0.0; // the kernel's support: Table I's h (the authors' code)
   double dt = 0.0;
   double cell_size_factor = 1.0;
   InitialFields initial;

@@ -35,6 +35,8 @@ def engine_run(name, arithmetic, extra):
     command = [REVSPH, "run", "second-sound-small", "--steps", str(STEPS), "--threads", "1",
                "--arithmetic", arithmetic, "--out", out, "--force",
                "--set", f"discretisation.dr={L / N!r}",
+               # The prototype's kernel is eq. (17) as printed, h = 3 dr with support 2h.
+               "--set", "discretisation.support_radius_over_dr=6.0",
                "--set", f"discretisation.courant_number={1 / (2 * M)!r}",
                "--set", "particles[0].lattice=square",
                "--set", f"output.snapshot_every={STEPS}"] + extra

@@ -666,6 +666,14 @@ TEST(ParticleBlocksTest, BlockOutsideDomainNamesTheBlock) {
                      "particles[1]", "outside the domain", read_blocks_2d);
 }
 
+TEST(ParticleBlocksTest, HugeThinVogelBoxIsRefusedBeforeGenerating) {
+  // Found by the case fuzzer: a Vogel spiral walks its box's whole diagonal, so a box 100 m wide
+  // and 4e-12 m high (no particles by area) took minutes before it was found to hold none.
+  expect_block_error("[[particles]]\nkind = \"fluid\"\nlattice = \"vogel\"\n"
+                     "min = [0.0, 0.0]\nmax = [1e2, 4.3e-12]\nspacing = 1e-3\n",
+                     "particles[0]", "its max on axis 0", read_blocks_2d);
+}
+
 TEST(ParticleBlocksTest, ContainerWallsOutsideDomainNameTheBlock) {
   // The box itself fits the domain, its wall layers do not.
   expect_block_error("[[particles]]\nkind = \"wall\"\nshape = \"container\"\n"

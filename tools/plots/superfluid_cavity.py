@@ -7,9 +7,11 @@ Re = 100 and 1.189 at Re = 400).
 Usage: /usr/bin/python3 tools/plots/superfluid_cavity.py [--make-runs] [--runs DIR] [--out DIR]
            [--revsph PATH] [--threads N] [--only NAME ...]
 
---make-runs runs models/superfluid/cases/superfluid-cavity-re100.toml with N = 20, 30, 40
-(dr = 1 / N) at Re = 100 and 400 (mu = 1 / Re) into RUNS/NAME (default RUNS = out/superfluid);
-a run takes about 4 N^2 / 1600 * 30 minutes on one thread (N = 40: half an hour).
+--make-runs runs models/superfluid/cases/superfluid-cavity-re100.toml with N = 20, 30, 40, 60,
+80 (dr = 1 / N) at Re = 100 and 400 (mu = 1 / Re), the kernel's support 3 dr (Table I's h as the
+authors' code uses it), and N = 20, 30, 40 with support 6 dr (eq. 17 as printed, runs NAME-2h),
+into RUNS/NAME (default RUNS = out/superfluid); a run takes about (N / 40)^3 * 8 minutes on one
+thread at support 3 dr, four times that at 6 dr.
 Writes into --out (default docs/figures):
   superfluid_cavity.png  u on x = 1/2 and v on y = 1/2 against Ghia at each Re and N; the error
                          against dr (log-log) with the fitted slopes.
@@ -17,7 +19,7 @@ Writes into --out (default docs/figures):
   superfluid_cavity.md   the numbers (also printed).
 
 The velocity at a point is the kernel-weighted (Shepard) average over the fluid and the walls
-(walls with their own velocity), support 2h as in the model.
+(walls with their own velocity), with the run's kernel.
 """
 
 import csv
@@ -36,12 +38,19 @@ from cavity_ghia import CentreLines, draw_ghia  # noqa: E402
 from revsph_runs import REPO, chosen_runs, figure_parser, figure_script_main, save_figure, snapshots  # noqa: E402,E501
 
 CASE = REPO / "models" / "superfluid" / "cases" / "superfluid-cavity-re100.toml"
-RUNS = {f"cavity-re{re}-n{n}": (re, n) for re in (100, 400) for n in (20, 30, 40)}
+# (Re, N, the kernel's support in dr): 3 dr is Table I's h as the authors' code uses it; the
+# "-2h" runs take eq. (17) as printed (support 2h = 6 dr), with dt = h / (10 u1) either way.
+RUNS = {f"cavity-re{re}-n{n}": (re, n, 3.0) for re in (100, 400) for n in (20, 30, 40, 60, 80)}
+RUNS.update({f"cavity-re{re}-n{n}-2h": (re, n, 6.0) for re in (100, 400) for n in (20, 30, 40)})
 
 
-def command(re, n):
-    top = 1.0 + 6.0 / n  # six layers of wall above the lid line: the support is 6 dr
+def command(re, n, support=3.0):
+    layers = int(np.ceil(support - 1e-9))  # wall layers at least as thick as the support
+    top = 1.0 + layers / n
     return ["run", str(CASE), "--set", f"discretisation.dr={1.0 / n!r}",
+            "--set", f"discretisation.support_radius_over_dr={support!r}",
+            "--set", f"discretisation.courant_number={0.3 / support!r}",
+            "--set", f"particles[1].layers={layers}",
             "--set", f"particles[1].max=[1.0, {top!r}]", "--set", f"particles[2].max=[1.0, {top!r}]",
             "--set", f"physics.viscosity={1.0 / re!r}",
             "--set", "output.snapshot_every=1000000000"]
@@ -64,9 +73,9 @@ def make_figures(runs, out, report, names):
     line = np.linspace(0.0, 1.0, 101)
     rows = []
     for name in names:
-        re, n = RUNS[name]
+        re, n, support = RUNS[name]
         position, velocity, time = final_state(runs / name)
-        lines = CentreLines(position, velocity, 6.0 / n, re)
+        lines = CentreLines(position, velocity, support / n, re)
         error, interior = lines.error, lines.interior
         rows.append((name, re, n, error, time, interior))
         u_axis, v_axis = profile_axes[re]

@@ -6,13 +6,16 @@ temperature in time, and the relative jet speed against the Reynolds number (eq.
 Usage: /usr/bin/python3 tools/plots/superfluid_fountain.py [--make-runs] [--runs DIR] [--out DIR]
            [--revsph PATH] [--threads N] [--only NAME ...]
 
---make-runs writes each run's case with tools/plots/superfluid_fountain_case.py (dr = d / N)
+--make-runs writes each run's case with tools/plots/superfluid_fountain_case.py (dr = d / N,
+the kernel's support 2.8 dr unless the run says otherwise)
 into RUNS/cases and runs it into RUNS/NAME (default RUNS = out/superfluid), snapshots every
 2.5 ms; a run that stopped early (a session's end) is continued from its last snapshot into
 RUNS/NAME-2, NAME-3, ... (`revsph run --from`), so repeating the command chains it to the end.
 The runs (viscosity mu; Re = W / (T0 s0 mu), eq. 33):
-  fountain-n4-w60, fountain-n4-w80          N = 4, mu = 1e-4 (Table I)
+  fountain-n4-w60, -w80, -w100               N = 4, mu = 1e-4 (Table I)
   fountain-n6-w60, fountain-n6-w80          N = 6
+  fountain-n8-w80                           N = 8
+  fountain-n4-w80-2h                        N = 4, support 5.6 dr (eq. 17 as printed: 2h)
   fountain-n4-w80-mu3e-4, -mu1e-3           N = 4, Re about 480 and 145 (Fig. 11)
   fountain-n4-w80-start                     N = 4, to t = 1 ms, snapshots every 0.25 ms (Fig. 10)
 Writes into --out (default docs/figures):
@@ -58,11 +61,15 @@ SUPERLEAK_PLANE = 1e-3                # the superleak's mid-plane (y)
 T0, S0 = 1.65, 335.0
 RAMP = 0.02
 AVERAGE_FROM = 0.2
+SUPPORT = 2.8  # the kernel's support in dr: Table I's h, as the authors' code uses it
 RUNS = {
     "fountain-n4-w60": dict(n=4, power=60.0, mu=1e-4),
     "fountain-n4-w80": dict(n=4, power=80.0, mu=1e-4),
+    "fountain-n4-w100": dict(n=4, power=100.0, mu=1e-4),
     "fountain-n6-w60": dict(n=6, power=60.0, mu=1e-4),
     "fountain-n6-w80": dict(n=6, power=80.0, mu=1e-4),
+    "fountain-n8-w80": dict(n=8, power=80.0, mu=1e-4),
+    "fountain-n4-w80-2h": dict(n=4, power=80.0, mu=1e-4, support=5.6),
     "fountain-n4-w80-mu3e-4": dict(n=4, power=80.0, mu=3e-4),
     "fountain-n4-w80-mu1e-3": dict(n=4, power=80.0, mu=1e-3),
     "fountain-n4-w80-start": dict(n=4, power=80.0, mu=1e-4, t_end=1e-3, every=2.5e-4),
@@ -73,8 +80,12 @@ def reynolds(run):
     return run["power"] / (T0 * S0 * run["mu"])  # eq. (33)
 
 
+def support_of(run):
+    return run.get("support", SUPPORT)
+
+
 def time_step(n):
-    return 0.1 * 5.6 * (D_CAPILLARY / n) / 40.0  # courant * support / u1
+    return 0.2 * 2.8 * (D_CAPILLARY / n) / 40.0  # dt = h / (5 u1), h = 2.8 dr (Table I)
 
 
 def segments(runs, name):
@@ -115,7 +126,8 @@ def make_run(runs, name, revsph, threads):
     else:
         cases = runs / "cases"
         subprocess.run([sys.executable, str(Path(__file__).with_name("superfluid_fountain_case.py")),
-                        str(run["n"]), name, repr(run["power"]), "--out", str(cases)], check=True)
+                        str(run["n"]), name, repr(run["power"]), "--support",
+                        repr(support_of(run)), "--out", str(cases)], check=True)
         out = runs / name
         command = [str(revsph), "run", str(cases / f"{name}.toml"),
                    "--set", f"physics.viscosity={run['mu']!r}",
@@ -207,7 +219,7 @@ def pair_entropy_flux(s, plane, support):
 def superleak_balance(runs, name):
     """The entropy through the superleak's mid-plane over t > 0.2 s, per second: by the pair term
     (mean over the snapshots) and by the particles crossing it (between snapshots)."""
-    support = 5.6 * D_CAPILLARY / RUNS[name]["n"]
+    support = support_of(RUNS[name]) * D_CAPILLARY / RUNS[name]["n"]
     pair, carried, duration = [], 0.0, 0.0
     previous = None
     for path in snapshot_files(runs, name):

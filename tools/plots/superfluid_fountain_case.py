@@ -6,15 +6,20 @@ geometry the issue gives, in mm with y up and the capillary on x = 0, placed for
     /usr/bin/python3 tools/plots/superfluid_fountain_case.py 4 fountain-coarse 80
     /usr/bin/python3 tools/plots/superfluid_fountain_case.py 2 fountain-small 80 --reversible
 
-Usage: superfluid_fountain_case.py N NAME POWER [--reversible] [--out DIR]
+Usage: superfluid_fountain_case.py N NAME POWER [--reversible] [--support S] [--out DIR]
   N             particles across the capillary's width d = 1.55 mm (the paper: 40)
   NAME          case name (writes DIR/NAME.toml, DIR default models/superfluid/cases)
   POWER         heater power W (W/m)
   --reversible  no viscosity, conduction, superleak or heater, 2000 steps: the reversible core on
                 the fountain's geometry (the acceptance's bitwise check)
+  --support S   the kernel's support radius in dr (default 2.8: Table I's h as the authors'
+                fountain_2d.jl uses it, "h = 2.8*dr # size of kernel support"; 5.6 is eq. 17 as
+                printed, support 2h). dt = h / (5 u1) with h = 2.8 dr either way (Table I); the
+                glass and the cryostat's walls are ceil(S) layers thick
 """
 
 import argparse
+import math
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[2]
@@ -37,8 +42,13 @@ def points(vertices):
     return ", ".join(f"{fmt(x * MM)}, {fmt(y * MM)}" for x, y in vertices)
 
 
-def case_text(n, name, power, reversible):
+def case_text(n, name, power, reversible, support=2.8):
     dr = D / n
+    layers = math.ceil(support - 1e-9)
+    support_note = ("Table I's h = 2.8 dr is the support (the authors' code)" if support == 2.8
+                    else "h = 2.8 dr (Table I); support 2h as eq. (17) prints" if support == 5.6
+                    else "h = 2.8 dr (Table I); a support of the user's")
+    courant = round(0.56 / support, 12)  # dt = h / (5 u1), h = 2.8 dr (Table I)
     shift = 17.1 * MM + D / 2 + dr / 2
     origin = f"[{fmt(-25 * MM)}, {fmt(-10 * MM)}]"
     radii = ", ".join(fmt(r * MM) for r in RADII)
@@ -66,7 +76,7 @@ ramp_time = 0.02
              (CAPILLARY_WALL, "", False, -1), (CAPILLARY_WALL, "", True, 1)], start=1):
         what = ["left glass body", "right glass body", "capillary's left wall",
                 "capillary's right wall"][index - 1]
-        layers = "layers = 6\n" if vertices is BODY else ""
+        body_layers = f"layers = {layers}\n" if vertices is BODY else ""
         blocks += f'''
 [[particles]]                      # {index}: the {what}
 kind = "dummy"
@@ -74,11 +84,11 @@ shape = "outline"
 vertices = [{points(vertices)}]
 {radius_line}{"mirror_x = true" + chr(10) if mirror else ""}offset = [{fmt(sign * shift)}, 0.0]
 lattice_origin = {origin}
-{layers}'''
+{body_layers}'''
     return f'''# The fountain effect of Kincl, Schmoranzer & Pavelka, Phys. Fluids 35 (2023) 047124,
 # sec. III.C (Table I at T0 = 1.65 K), in the geometry the issue gives (mm, y up, the capillary
 # on x = 0): a cryostat box x in [-25, 25], y from -10, open at the top, helium up to y = 23; two
-# mirror-image glass bodies (adiabatic dummy shells, six layers), each an L with rounded corners,
+# mirror-image glass bodies (adiabatic dummy shells, {layers} layers), each an L with rounded corners,
 # and the capillary's walls, placed at x = xi - (17.1 + r_cap + dr / 2), r_cap = d / 2 = 0.775;
 # the superleak |x| < 15, y = 1 +- 2, rate 1e6 / s; the heater, a Wendland kernel of support
 # 4 mm at (0, 8), ramped over 0.02 s; the cryostat's walls the cooler (T0).
@@ -100,8 +110,8 @@ gravity = 9.81                     # not given: standard gravity
 
 [discretisation]
 dr = {fmt(dr)}
-support_radius_over_dr = 5.6       # h = 2.8 dr (Table I), support 2h
-courant_number = 0.1               # dt = h / (5 u1) (Table I)
+{f"support_radius_over_dr = {support!r}".ljust(35)}# {support_note}
+{f"courant_number = {courant!r}".ljust(35)}# dt = h / (5 u1), h = 2.8 dr (Table I)
 
 [initial]
 hydrostatic_surface = 0.023        # the helium's level
@@ -122,7 +132,7 @@ exclude_blocks = [1, 2, 3, 4]
 [[particles]]                      # the cryostat: no-slip walls at T0 (the cooler), open top
 kind = "wall"
 shape = "container"
-layers = 6
+layers = {layers}
 open_top = true
 min = [-0.025, -0.010]
 max = [0.025, 0.120]
@@ -142,11 +152,12 @@ def main():
     parser.add_argument("name")
     parser.add_argument("power", type=float)
     parser.add_argument("--reversible", action="store_true")
+    parser.add_argument("--support", type=float, default=2.8)
     parser.add_argument("--out", default=str(REPO / "models" / "superfluid" / "cases"))
     args = parser.parse_args()
     path = Path(args.out) / f"{args.name}.toml"
     path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(case_text(args.n, args.name, args.power, args.reversible))
+    path.write_text(case_text(args.n, args.name, args.power, args.reversible, args.support))
     print(f"wrote {path}")
 
 
