@@ -19,6 +19,9 @@ std::string Model<D, Arith>::dissipation_acts(const Model& model) {
   text << "normal-fluid viscosity (mu = " << p.viscosity
        << " Pa s, eqs. 19, B22) and heat conduction (beta = " << p.heat_conductivity
        << " W/(m K), eqs. B21, B23), the heat kept as entropy";
+  if (p.dummy_no_slip && p.viscosity != 0.0) {
+    text << "; no-slip dummies (physics.dummy_slip)";
+  }
   return text.str();
 }
 
@@ -117,7 +120,8 @@ void Model<D, Arith>::dissipate(double dt) {
                         DissipationTerm<D>{kernel_, slot_mass_, slot_kind_, inputs_.inverse_density,
                                            inputs_.temperature, inputs_.normal_velocity,
                                            parameters_.viscosity, parameters_.heat_conductivity,
-                                           eta * eta, dt, slot_side_},
+                                           eta * eta, dt, slot_side_,
+                                           parameters_.dummy_no_slip},
                         dissipation_sums_);
   const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
   FaultRecorder faults;

@@ -17,9 +17,12 @@
 // (the Laplacian's 2 T_a T_ab plus the dual's -T_ab^2 is T_a^2 - T_b^2): heat flows from hot
 // to cold (w' <= 0), so energy is kept and entropy grows.
 //
-// Dummy particles take no part (adiabatic, free-slip walls). Wall particles (no-slip, cooler)
-// act on the fluid with their own velocity as v_n and T0 as temperature, and receive nothing:
-// what they give or take is the model's wall_exchange energy.
+// Dummy particles take no part (adiabatic, free-slip walls), or, with no_slip_dummies, drag the
+// normal fluid toward rest through the viscosity alone (adiabatic no-slip glass, as the authors'
+// fountain code has it): the whole dissipated power then heats the fluid particle, since
+// de/dv = v_n at fixed v_s, s makes its kinetic loss m_a v_n,a . dv_a exactly that power.
+// Wall particles (no-slip, cooler) act on the fluid with their own velocity as v_n and T0 as
+// temperature, and receive nothing: what they give or take is the model's wall_exchange energy.
 
 #include "core/geometry.hpp"
 #include "core/kernel_wendland.hpp"
@@ -49,8 +52,10 @@ struct DissipationTerm {
   // +1 / -1: the side of the superleak's mid-plane a slot lies on within its width (0: outside);
   // no heat crosses between the two sides (sec. III.C).
   std::span<const std::int8_t> side;
+  bool no_slip_dummies = false;
   static constexpr std::uint8_t fluid = static_cast<std::uint8_t>(CarrierKind::fluid);
   static constexpr std::uint8_t wall = static_cast<std::uint8_t>(CarrierKind::wall);
+  static constexpr std::uint8_t dummy = static_cast<std::uint8_t>(CarrierKind::dummy);
 
   bool receives(std::uint32_t s) const { return kind[s] == fluid; }
 
@@ -61,6 +66,12 @@ struct DissipationTerm {
     const std::uint8_t kind_a = kind[p.a];
     const std::uint8_t kind_b = kind[p.b];
     const bool both_fluid = kind_a == fluid && kind_b == fluid;
+    if (no_slip_dummies && (kind_a == dummy || kind_b == dummy)) {
+      if (kind_a == fluid || kind_b == fluid) {
+        glass_pair(p, kind_a == fluid ? to_a : to_b, kind_a == fluid ? 1.0 : -1.0);
+      }
+      return;
+    }
     if (!both_fluid && !(kind_a == fluid && kind_b == wall) &&
         !(kind_a == wall && kind_b == fluid)) {
       return;
@@ -88,6 +99,25 @@ struct DissipationTerm {
                                   (t_a * t_a - t_b * t_b);
     to_a[D] = 0.5 * dissipated + heat;
     to_b[D] = 0.5 * dissipated - heat;
+  }
+
+  // A fluid particle f against a dummy d at rest: the viscosity only, its whole dissipated power
+  // to f; sign = +1 when f is a, -1 when f is b (x_fd = sign x_ab).
+  void glass_pair(const PairGeometry<D>& p, std::array<double, width>& to_fluid,
+                  double sign) const {
+    const std::uint32_t f = sign > 0.0 ? p.a : p.b;
+    const std::uint32_t d = sign > 0.0 ? p.b : p.a;
+    const double slope = kernel.derivative_over_r(p.r);
+    double vn_dot_x = 0.0;
+    for (int k = 0; k < D; ++k) {
+      vn_dot_x += normal_velocity[k][f] * sign * p.x_ab[k];
+    }
+    const double c = tau * 2.0 * (D + 2) * viscosity * slope * inverse_density[f] *
+                     inverse_density[d] * vn_dot_x / (p.r_squared + eta_squared);
+    for (int k = 0; k < D; ++k) {
+      to_fluid[k] = mass[d] * c * sign * p.x_ab[k];
+    }
+    to_fluid[D] = -mass[f] * mass[d] * c * vn_dot_x;
   }
 };
 

@@ -142,6 +142,12 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.viscosity = case_file.non_negative_number_or("physics.viscosity", 0.0, "inviscid");
   p.heat_conductivity =
       case_file.non_negative_number_or("physics.heat_conductivity", 0.0, "no conduction");
+  const std::string dummy_slip = case_file.string_or("physics.dummy_slip", "free");
+  if (dummy_slip != "free" && dummy_slip != "no_slip") {
+    case_file.fail("physics.dummy_slip",
+                   "expected \"free\" or \"no_slip\", got \"" + dummy_slip + "\"");
+  }
+  p.dummy_no_slip = dummy_slip == "no_slip";
   const ParticleDiscretisation discretisation =
       read_particle_discretisation(case_file, p.helium.first_sound_speed);
   p.dr = discretisation.dr;
@@ -198,6 +204,15 @@ const KeyTable& case_keys() {
            "C of eq. (13); > 0; give this or second_sound_speed"});
     t.add({"physics.second_sound_speed", T::number, "m/s", "from heat_capacity",
            "u2 of eq. (14), which then gives C; > 0; give this or heat_capacity"});
+    t.add({"physics.dummy_slip",
+           T::string,
+           "-",
+           "\"free\"",
+           "the normal fluid at dummy (adiabatic) walls: \"free\" (sec. III.C: dummies in the "
+           "density and the pressure only) or \"no_slip\" (the viscosity also drags the normal "
+           "fluid toward rest at them, as the authors' fountain code does; the heat stays in "
+           "the fluid)",
+           {"free", "no_slip"}});
     t.add(particle_discretisation_case_keys(
         "kernel support radius in units of dr: Table I's h, the support as the authors' code uses "
         "it (h = 3 dr is 3; eq. 17 as printed, support 2h, would be 6)",

@@ -62,6 +62,7 @@ struct Parameters {
   double gravity_reference_height = 0.0; // height of zero gravitational energy (m)
   double viscosity = 0.0;                // mu of the normal fluid (eq. 19), >= 0
   double heat_conductivity = 0.0;        // beta (eq. 5), >= 0
+  bool dummy_no_slip = false;            // viscosity against the dummies (physics.dummy_slip)
   // [discretisation]
   double dr = 0.0;
   double support_radius = 0.0; // the kernel's support: Table I's h (the authors' code)

@@ -34,6 +34,8 @@ std::vector<Defect> defects() {
        "chi_n must stay in (0, 1]"},
       {"unknown_wave_shape", "second-sound-small", "", "", "initial.entropy_wave_shape=square",
        "initial.entropy_wave_shape", "expected \"sine\" or \"cosine\", got \"square\""},
+      {"unknown_dummy_slip", "droplet-small", "", "", "physics.dummy_slip=sticky",
+       "physics.dummy_slip", "expected \"free\" or \"no_slip\", got \"sticky\""},
       {"negative_random_velocity", "droplet-small", "", "", "initial.random_velocity=-0.1",
        "initial.random_velocity", "must be a finite number >= 0"},
       {"superleak_centre_outside_the_domain", "droplet-small", "[run]",
