@@ -48,7 +48,8 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
       increment_sums_(
           increment_quantities<D>(parameters_.velocity_scale, parameters_.entropy_scale)),
       dissipation_sums_(
-          dissipation_quantities<D>(parameters_.velocity_scale, parameters_.heat_scale)) {}
+          dissipation_quantities<D>(parameters_.velocity_scale, parameters_.heat_scale)),
+      wall_work_sums_(SummedQuantity{"wall_work", parameters_.heat_scale}) {}
 
 template <int D, class Arith>
 void Model<D, Arith>::initialise_density_constants() {
@@ -111,10 +112,12 @@ std::span<const Substep<Model<D, Arith>>> Model<D, Arith>::palindrome() {
 template <int D, class Arith>
 typename Model<D, Arith>::Copy Model<D, Arith>::copy(int which) {
   auto& f = state_.fluid;
+  auto& w = state_.wall;
   if (which == 0) {
-    return {&f.velocity, &f.superflow_velocity, &f.entropy};
+    return {&f.velocity, &f.superflow_velocity, &f.entropy, &w.superflow_velocity};
   }
-  return {&f.velocity_copy, &f.superflow_velocity_copy, &f.entropy_copy};
+  return {&f.velocity_copy, &f.superflow_velocity_copy, &f.entropy_copy,
+          &w.superflow_velocity_copy};
 }
 
 template <int D, class Arith>
@@ -150,6 +153,11 @@ void Model<D, Arith>::update_copy(int to, double dt) {
   add_pair_totals<Arith>(*target.velocity, increment_sums_, 0, fluid, faults);
   add_pair_totals<Arith>(*target.superflow_velocity, increment_sums_, D, fluid, faults);
   add_pair_totals<Arith>(*target.entropy, increment_sums_, 2 * D, fluid, faults);
+  if (parameters_.absorbing_walls) {
+    add_pair_totals<Arith>(*target.wall_superflow_velocity, increment_sums_, D,
+                           layout_.slots_of_set(wall_set), faults);
+    count_wall_work(dt);
+  }
 }
 
 template <int D, class Arith>
@@ -170,6 +178,11 @@ void Model<D, Arith>::update_constants() {
   is_fluid_.assign(mass_.size(), 0);
   const std::span<std::uint8_t> fluid = layout_.part_of_set(std::span(is_fluid_), fluid_set);
   std::fill(fluid.begin(), fluid.end(), 1);
+  interacts_ = is_fluid_;
+  if (parameters_.absorbing_walls) {
+    const std::span<std::uint8_t> wall = layout_.part_of_set(std::span(interacts_), wall_set);
+    std::fill(wall.begin(), wall.end(), 1);
+  }
   kind_.assign(mass_.size(), static_cast<std::uint8_t>(CarrierKind::dummy));
   for (const auto& [set, kind] :
        {std::pair{fluid_set, CarrierKind::fluid}, std::pair{wall_set, CarrierKind::wall}}) {
@@ -189,6 +202,7 @@ void Model<D, Arith>::update_density() {
                 Gathered<double>{mass_, &slot_mass_},
                 Gathered<Raw>{density_constant_, &slot_density_constant_},
                 Gathered<std::uint8_t>{is_fluid_, &slot_is_fluid_},
+                Gathered<std::uint8_t>{interacts_, &slot_interacts_},
                 Gathered<std::uint8_t>{kind_, &slot_kind_});
   const std::size_t carriers = layout_.slot_count();
   inputs_.pressure_over_density_squared.resize(carriers);
@@ -213,6 +227,11 @@ void Model<D, Arith>::update_density() {
   fluid_pairs_.assign_filtered(layout_.pairs(), [this](std::uint32_t a, std::uint32_t b) {
     return slot_is_fluid_[a] != 0 || slot_is_fluid_[b] != 0;
   });
+  if (parameters_.absorbing_walls) {
+    wall_pairs_.assign_filtered(layout_.pairs(), [this](std::uint32_t a, std::uint32_t b) {
+      return slot_is_fluid_[a] != slot_is_fluid_[b] && slot_interacts_[a] && slot_interacts_[b];
+    });
+  }
   density_valid_ = true;
 }
 
@@ -273,17 +292,55 @@ void Model<D, Arith>::fill_rate_inputs(int from) {
     in.temperature[slot] = he.temperature(s, relative_squared / (chi_n * chi_n));
   }
   faults.throw_if_any();
+  if (parameters_.absorbing_walls) {
+    // The authors' cooler: s = s0 and T = T0 held, v the wall's own, v_s its own (this copy's).
+    const std::span<const std::uint32_t> wall = layout_.slots_of_set(wall_set);
+    const double s0 = he.reference_entropy;
+    const double ratio = (1.0 - he.chi_n(s0)) / he.chi_n(s0);
+    const auto& w_scale = state_.wall.velocity.info().scale;
+    for (std::size_t i = 0; i < wall.size(); ++i) {
+      const std::uint32_t slot = wall[i];
+      const double inverse_density = in.inverse_density[slot];
+      for (int k = 0; k < D; ++k) {
+        const double v = Arith::real(state_.wall.velocity.at(k, i), w_scale);
+        const double v_s = value(one.wall_superflow_velocity, two.wall_superflow_velocity, k, i,
+                                 v_scale);
+        const double u = v - v_s;
+        in.relative[k][slot] = u;
+        in.entropy_flux[k][slot] = s0 * ratio * inverse_density * u;
+        in.normal_velocity[k][slot] = v + ratio * u;
+      }
+      in.flux_factor[slot] = ratio * inverse_density;
+      in.entropy_over_density[slot] = s0 * inverse_density;
+      in.temperature[slot] = he.reference_temperature;
+    }
+  }
 }
 
 template <int D, class Arith>
 void Model<D, Arith>::sum_increments(int from, double tau) {
   fill_rate_inputs(from);
   sum_pairs_over<Arith>(layout_, fluid_pairs_,
-                        RateTerm<D>{kernel_, slot_mass_, slot_is_fluid_, inputs_, tau,
+                        RateTerm<D>{kernel_, slot_mass_, slot_is_fluid_, slot_interacts_,
+                                    inputs_, tau,
                                     parameters_.gravity,
                                     parameters_.helium.normal_fraction == 1.0 &&
                                         parameters_.helium.normal_fraction_slope == 0.0},
                         increment_sums_);
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::count_wall_work(double tau) {
+  const RateTerm<D> rate{kernel_, slot_mass_, slot_is_fluid_, slot_interacts_, inputs_, tau,
+                         parameters_.gravity, false};
+  sum_pairs_over<Arith>(layout_, wall_pairs_, WallWorkTerm<D>{rate}, wall_work_sums_);
+  // Summed in the particles' canonical order (slots_of_set), so the same for any thread count
+  // and cell size; the mean of the copies receives half of each copy's increments.
+  double total = 0.0;
+  for (const std::uint32_t slot : layout_.slots_of_set(fluid_set)) {
+    total += wall_work_sums_.value(0, slot);
+  }
+  exchanged_energy_ += 0.5 * total;
 }
 
 template class Model<2, FixedArithmetic>;

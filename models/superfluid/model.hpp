@@ -96,6 +96,7 @@ private:
     StateField<Raw>* velocity;
     StateField<Raw>* superflow_velocity;
     StateField<Raw>* entropy;
+    StateField<Raw>* wall_superflow_velocity;
   };
   Copy copy(int which);
   std::size_t fluid_count() const { return state_.fluid.position.count(); }
@@ -109,6 +110,10 @@ private:
   // The rate inputs from copy `from` (or the mean of both, from = -1) at the current positions.
   void fill_rate_inputs(int from);
   void sum_increments(int from, double tau);
+  // Absorbing walls: the energy (15) their pair terms gave the fluid in the increments just
+  // summed (to first order in tau), added to exchanged_energy_ at the weight the mean of the
+  // copies receives.
+  void count_wall_work(double tau);
   // The mean of the copies, per fluid particle in canonical order.
   struct MeanState {
     std::array<std::vector<double>, D> velocity, superflow_velocity;
@@ -125,6 +130,7 @@ private:
   std::vector<double> mass_;
   std::vector<Raw> density_constant_;
   std::vector<std::uint8_t> is_fluid_;
+  std::vector<std::uint8_t> interacts_; // fluid, and absorbing walls (pair_terms.hpp)
   std::vector<std::uint8_t> kind_; // CarrierKind per carrier (dissipation_terms.hpp)
   bool density_valid_ = false;
   // sum_b w(x_a - x_b) over a full square lattice of spacing dr (b = a included): a unit-mass
@@ -137,6 +143,7 @@ private:
   std::vector<double> slot_mass_;
   std::vector<Raw> slot_density_constant_;
   std::vector<std::uint8_t> slot_is_fluid_;
+  std::vector<std::uint8_t> slot_interacts_;
   std::vector<std::uint8_t> slot_kind_;
   // Energy the walls gave the fluid in dissipation sub-steps since the run began (lid work, heat
   // from or to a cooler): the energy budget's wall_exchange term is minus this.
@@ -145,9 +152,11 @@ private:
   std::vector<std::int8_t> slot_side_;
   PairSums<Arith, 1> density_sums_;
   HalfPairList fluid_pairs_; // the layout's pairs with a fluid particle on one side at least
+  HalfPairList wall_pairs_;  // fluid-wall pairs, with absorbing walls only
   RateInputs<D> inputs_;
   PairSums<Arith, 2 * D + 1> increment_sums_; // at the scales of v, v_s and s
   PairSums<Arith, D + 1> dissipation_sums_;   // velocity increments and heat
+  PairSums<Arith, 1> wall_work_sums_;         // energy absorbing walls give each fluid particle
 };
 
 extern template class Model<2, FixedArithmetic>;

@@ -14,7 +14,11 @@
 // Pi / rho^2 = (p / rho^2) I + (chi_s / chi_n) u (x) u / rho (eq. 21).
 // Dummy particles (adiabatic walls, sec. III.C) take part in the pressure terms only: no entropy
 // flux, no momentum flux of the counterflow, no thermomechanical or v_n-gradient term crosses
-// them.
+// them. So do wall particles, unless they absorb (physics.cooler = "absorbing", the authors'
+// fountain code): then a fluid-wall pair is a fluid-fluid pair whose wall side has s = s0,
+// T = T0, v its own velocity and its own v_s, and the wall receives on v_s what a fluid particle
+// would receive on v_s less what it would receive on v: the force that holds v acts on v_s too,
+// as gravity does (eq. 29). Its v and s receive nothing.
 //
 // Time reversal: every odd input (v, v_s and with them u, v_n, J) enters the entropy rate
 // linearly and the velocity rates in pairs, each as a product with even factors, so negating the
@@ -49,6 +53,8 @@ struct RateTerm {
   const WendlandQuintic<D>& kernel;
   std::span<const double> mass;
   std::span<const std::uint8_t> is_fluid;
+  // The slots that interact as fluid: the fluid's, and the absorbing walls' (else is_fluid).
+  std::span<const std::uint8_t> interacts;
   const RateInputs<D>& in;
   double tau;     // the sub-step's length
   double gravity; // g along minus the last axis, on v and v_s (eq. 29)
@@ -57,12 +63,13 @@ struct RateTerm {
   // 94 708); it is held at its initial value.
   bool classical = false;
 
-  bool receives(std::uint32_t s) const { return is_fluid[s] != 0; }
+  bool receives(std::uint32_t s) const { return interacts[s] != 0; }
 
-  // Gravity (eq. 29): the same increment for every particle, even under time reversal.
+  // Gravity (eq. 29): the same increment for every fluid particle, even under time reversal (a
+  // wall's holding force cancels it on v and so on v_s).
   template <class Add>
-  void self(std::uint32_t, Add& add) const {
-    if (gravity != 0.0) {
+  void self(std::uint32_t s, Add& add) const {
+    if (gravity != 0.0 && is_fluid[s]) {
       add(D - 1, -tau * gravity);
       add(2 * D - 1, classical ? 0.0 : -tau * gravity);
     }
@@ -78,7 +85,7 @@ struct RateTerm {
         in.pressure_over_density_squared[a] + in.pressure_over_density_squared[b];
     to_a.fill(0.0);
     to_b.fill(0.0);
-    if (!is_fluid[a] || !is_fluid[b]) {
+    if (!interacts[a] || !interacts[b]) {
       // A dummy neighbour: the pressure force only (only the fluid one receives).
       std::array<double, width>& to = is_fluid[a] ? to_a : to_b;
       const double sign = is_fluid[a] ? 1.0 : -1.0;
@@ -121,6 +128,58 @@ struct RateTerm {
     }
     to_a[2 * D] = -m_b_slope * flux_dot_x;
     to_b[2 * D] = m_a_slope * flux_dot_x;
+    if (!is_fluid[a]) {
+      hold(to_a);
+    } else if (!is_fluid[b]) {
+      hold(to_b);
+    }
+  }
+
+  // An absorbing wall's share: v held (the holding force acts on v_s as well), s held at s0.
+  void hold(std::array<double, width>& to_wall) const {
+    for (int k = 0; k < D; ++k) {
+      to_wall[D + k] -= to_wall[k];
+      to_wall[k] = 0.0;
+    }
+    to_wall[2 * D] = 0.0;
+  }
+};
+
+// The energy (15) an absorbing wall's pair gives its fluid particle f in one sub-step, to first
+// order in tau: m_f (v_n . dv - (chi_s / chi_n) u . dv_s + T ds) with de/dv = v_n, de/dv_s =
+// -(chi_s / chi_n) u, de/ds = T at fixed rho (App. B), less the pressure part, whose work is the
+// compressional energy's change (the walls are static). Quantity 0, fluid slots only.
+template <int D>
+struct WallWorkTerm {
+  static constexpr int width = 1;
+  RateTerm<D> rate;
+
+  bool receives(std::uint32_t s) const { return rate.is_fluid[s] != 0; }
+
+  void pair(const PairGeometry<D>& p, std::array<double, width>& to_a,
+            std::array<double, width>& to_b) const {
+    std::array<double, RateTerm<D>::width> increment_a;
+    std::array<double, RateTerm<D>::width> increment_b;
+    rate.pair(p, increment_a, increment_b);
+    const bool a_is_fluid = rate.is_fluid[p.a] != 0;
+    const std::uint32_t f = a_is_fluid ? p.a : p.b;
+    const std::uint32_t w = a_is_fluid ? p.b : p.a;
+    const std::array<double, RateTerm<D>::width>& d = a_is_fluid ? increment_a : increment_b;
+    const RateInputs<D>& in = rate.in;
+    const double sign = a_is_fluid ? 1.0 : -1.0; // x_fw = sign x_ab
+    const double pressure_part = -rate.mass[w] * rate.tau * rate.kernel.derivative_over_r(p.r) *
+                                 (in.pressure_over_density_squared[p.a] +
+                                  in.pressure_over_density_squared[p.b]);
+    const double ratio = in.flux_factor[f] / in.inverse_density[f]; // chi_s / chi_n
+    double work = in.temperature[f] * d[2 * D];
+    for (int k = 0; k < D; ++k) {
+      const double u = in.relative[k][f];
+      const double v_n = in.normal_velocity[k][f];
+      const double v = v_n - ratio * u;
+      work += v_n * d[k] - ratio * u * d[D + k] - v * pressure_part * sign * p.x_ab[k];
+    }
+    (a_is_fluid ? to_a : to_b)[0] = rate.mass[f] * work;
+    (a_is_fluid ? to_b : to_a)[0] = 0.0;
   }
 };
 

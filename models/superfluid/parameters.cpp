@@ -148,6 +148,12 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
                    "expected \"free\" or \"no_slip\", got \"" + dummy_slip + "\"");
   }
   p.dummy_no_slip = dummy_slip == "no_slip";
+  const std::string cooler = case_file.string_or("physics.cooler", "conducting");
+  if (cooler != "conducting" && cooler != "absorbing") {
+    case_file.fail("physics.cooler",
+                   "expected \"conducting\" or \"absorbing\", got \"" + cooler + "\"");
+  }
+  p.absorbing_walls = cooler == "absorbing";
   const ParticleDiscretisation discretisation =
       read_particle_discretisation(case_file, p.helium.first_sound_speed);
   p.dr = discretisation.dr;
@@ -213,6 +219,17 @@ const KeyTable& case_keys() {
            "fluid toward rest at them, as the authors' fountain code does; the heat stays in "
            "the fluid)",
            {"free", "no_slip"}});
+    t.add({"physics.cooler",
+           T::string,
+           "-",
+           "\"conducting\"",
+           "what kind = \"wall\" particles are besides no-slip: \"conducting\" (they hold the "
+           "fluid at T0 through the heat conduction only) or \"absorbing\" (the authors' "
+           "fountain code: they keep s = s0 and v at their velocity but carry a free superflow "
+           "velocity, and take part in the entropy flux and the thermomechanical force of eq. "
+           "(19), so that second sound leaves through them; reversible, their exchange counted "
+           "in wall_exchange)",
+           {"conducting", "absorbing"}});
     t.add(particle_discretisation_case_keys(
         "kernel support radius in units of dr: Table I's h, the support as the authors' code uses "
         "it (h = 3 dr is 3; eq. 17 as printed, support 2h, would be 6)",

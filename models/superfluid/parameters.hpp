@@ -63,6 +63,7 @@ struct Parameters {
   double viscosity = 0.0;                // mu of the normal fluid (eq. 19), >= 0
   double heat_conductivity = 0.0;        // beta (eq. 5), >= 0
   bool dummy_no_slip = false;            // viscosity against the dummies (physics.dummy_slip)
+  bool absorbing_walls = false;          // physics.cooler = "absorbing"
   // [discretisation]
   double dr = 0.0;
   double support_radius = 0.0; // the kernel's support: Table I's h (the authors' code)

@@ -145,6 +145,8 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   state.dummy.density_constant.set_scale(parameters.density_scale);
   state.wall.position.set_scale(parameters.position_scale);
   state.wall.velocity.set_scale(parameters.velocity_scale);
+  state.wall.superflow_velocity.set_scale(parameters.velocity_scale);
+  state.wall.superflow_velocity_copy.set_scale(parameters.velocity_scale);
   state.wall.mass.set_scale(mass_scale);
   state.wall.density_constant.set_scale(parameters.density_scale);
 
@@ -167,6 +169,11 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   state.dummy.density_constant.resize(dummy_positions.size());
   fill_vector_field<Arith, D>(case_file, "particles", wall_positions, state.wall.position);
   fill_vector_field<Arith, D>(case_file, "particles", wall_velocities, state.wall.velocity);
+  // No counterflow at the start: v_s = v.
+  for (StateField<Raw>* field :
+       {&state.wall.superflow_velocity, &state.wall.superflow_velocity_copy}) {
+    fill_vector_field<Arith, D>(case_file, "particles", wall_velocities, *field);
+  }
   fill_scalar_field<Arith>(case_file, "physics.rest_density", wall_masses, state.wall.mass);
   state.wall.density_constant.resize(wall_positions.size());
 

@@ -58,8 +58,11 @@ struct Dummy {
 
 // No-slip walls (sec. III.A-C): static particles in the density and the pressure force like
 // dummies, that also drag the normal fluid toward their own velocity (zero, or a lid's) through
-// the viscosity and, with heat conduction, hold the fluid at T0 (s = s0, no counterflow): the
-// cryostat's cooler. Their velocity is prescribed (odd: time reversal reverses a lid).
+// the viscosity and, with heat conduction, hold the fluid at T0: the cryostat's cooler. Their
+// velocity is prescribed (odd: time reversal reverses a lid). With physics.cooler = "absorbing"
+// (the authors' fountain code) they also carry a free superflow velocity, in two copies like the
+// fluid's, and take part in the reversible entropy flux and thermomechanical force at s = s0;
+// otherwise their superflow velocity stays at its start, their own velocity.
 template <int D, class Raw>
 struct Wall {
   static constexpr SetInfo set{.name = "wall", .motion = Motion::fixed};
@@ -69,10 +72,17 @@ struct Wall {
                             .parity = Parity::odd,
                             .components = D,
                             .evolved = false}};
+  StateField<Raw> superflow_velocity{
+      {.name = "superflow_velocity", .unit = "m/s", .parity = Parity::odd, .components = D}};
+  StateField<Raw> superflow_velocity_copy{
+      {.name = "superflow_velocity_copy", .unit = "m/s", .parity = Parity::odd, .components = D}};
   StateField<Raw> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
   StateField<Raw> density_constant{
       {.name = "density_constant", .unit = "kg/m^3", .evolved = false}};
-  auto fields() { return std::tie(position, velocity, mass, density_constant); }
+  auto fields() {
+    return std::tie(position, velocity, superflow_velocity, superflow_velocity_copy, mass,
+                    density_constant);
+  }
 };
 
 template <int D, class Raw>
