@@ -62,7 +62,7 @@ MOUTH = ((-1.2e-3, 1.2e-3), (JET_HEIGHT - 3e-3, JET_HEIGHT))  # the capillary's 
 HEAT_CAPACITY = 1861.0  # C of Table I (J/(kg K)): ds = C dT / T
 CHI_N0, CHI_SLOPE = 0.1934, 5.851e-4  # chi_n = chi_n0 + chi' (s - s0), eq. (8), Table I
 SUPERLEAK_PLANE = 1e-3                # the superleak's mid-plane (y)
-T0, S0 = 1.65, 335.0
+T0, S0, RHO0 = 1.65, 335.0, 145.2
 RAMP = 0.02
 AVERAGE_FROM = 0.2
 SUPPORT = 2.8  # the kernel's support in dr: Table I's h, as the authors' code uses it
@@ -294,7 +294,8 @@ def scatter_field(ax, s, values, label, cmap, vmin=None, vmax=None, region=None,
 
 
 def fig_jet(runs, out, report, available):
-    fig, axes = plt.subplots(1, 2, figsize=(13, 4.5), sharey=False)
+    fig, axes = plt.subplots(1, 3, figsize=(18, 4.8), sharey=False)
+    panel = {60.0: 0, 80.0: 1, 100.0: 2}
     rows, jet_rows = [], {k: [] for k in ("run", "t_start", "t_end", "v_jet", "v_ideal",
                                           "cell_temperature")}
     for name in available:
@@ -313,11 +314,20 @@ def fig_jet(runs, out, report, available):
         pair, carried = superleak_balance(runs, name)
         entropy_input = run["power"] / np.mean(temperature[t >= AVERAGE_FROM - 1e-9])
         deficit = 100.0 * (1.0 - mean_jet / mean_ideal)
-        rows.append((name, run["n"], run["power"], run["mu"], reynolds(run), mean_jet, mean_ideal,
-                     deficit, 1e3 * jump, 100.0 * stored, counterflow, 100.0 * rest, t[-1]))
+        # Eq. (31) with the reference state instead of the cell's: W / (T0 s0 rho0 d), as the
+        # authors' fountain_2d.jl prints it (v_theory).
+        ideal_reference = run["power"] / (T0 * S0 * RHO0 * D_CAPILLARY)
+        deficit_reference = 100.0 * (1.0 - mean_jet / ideal_reference)
+        warming = 1e3 * (temperature[-1] - T0)
+        rows.append((name, run["n"], support_of(run), run["power"], run["mu"], reynolds(run),
+                     mean_jet, mean_ideal, deficit, ideal_reference, deficit_reference, warming,
+                     1e3 * jump, 100.0 * stored, counterflow, 100.0 * rest, t[-1]))
         report.append((f"{name}: mean jet speed over t > {AVERAGE_FROM} s (m/s)",
                        f"{mean_jet:.4f} against eq. (31) {mean_ideal:.4f}: {deficit:.2f} % below "
                        f"(Re {reynolds(run):.0f}; paper at W = 60, 80: 1.95 %, 2.38 % below); "
+                       f"against eq. (31) at T0, s0, rho0 {ideal_reference:.4f}: "
+                       f"{deficit_reference:.2f} % below; the cell {warming:.1f} mK above T0 at "
+                       f"t = {t[-1]:.3f} s; "
                        f"T jump at the superleak {1e3 * jump:.3f} mK; the cell keeps "
                        f"{100.0 * stored:.1f} % of the power; v_n / v at the mouth "
                        f"{counterflow:.3f}; the rest (superleak, walls) {100.0 * rest:.1f} %"))
@@ -329,21 +339,23 @@ def fig_jet(runs, out, report, available):
             for key, value in zip(jet_rows, (name, t[i], t[i + 1], speed[i],
                                              0.5 * (ideal[i] + ideal[i + 1]), temperature[i + 1])):
                 jet_rows[key].append(value)
-        if run["mu"] != 1e-4:
+        if run["mu"] != 1e-4 or run["power"] not in panel:
             continue
-        ax = axes[0 if run["power"] == 60.0 else 1]
+        ax = axes[panel[run["power"]]]
         centre, smooth = moving_jet(t, crossed, 8)
-        ax.plot(centre, smooth, label=f"SPH, dr = d/{run['n']} (20 ms windows)")
-        ax.plot(t, ideal, "--", label=f"eq. (31), dr = d/{run['n']}")
+        line = ax.plot(centre, smooth, label=f"{name} (20 ms windows)")[0]
+        ax.plot(t, ideal, "--", color=line.get_color(), lw=0.8, label=f"eq. (31), cell, {name}")
+        ax.axhline(ideal_reference, color="k", ls=":", lw=0.8)
         ax.axvline(AVERAGE_FROM, color="0.6", lw=0.8)
-        ax.set_title(f"W = {run['power']:.0f} W/m")
+        ax.set_title(f"W = {run['power']:.0f} W/m (dotted: eq. 31 at T0, s0, rho0)")
     for ax in axes:
         ax.set_xlabel("t (s)")
         ax.set_ylabel("jet speed (m/s)")
         ax.legend(fontsize=8)
     save_figure(fig, out / "superfluid_fountain_jet.png")
-    columns = ("run", "N", "power_W_per_m", "viscosity", "Re", "mean_jet_speed",
-               "eq31_speed", "deficit_percent", "superleak_jump_mK", "stored_percent",
+    columns = ("run", "N", "support_over_dr", "power_W_per_m", "viscosity", "Re",
+               "mean_jet_speed", "eq31_speed", "deficit_percent", "eq31_speed_T0",
+               "deficit_T0_percent", "cell_warming_mK", "superleak_jump_mK", "stored_percent",
                "mouth_vn_over_v", "rest_percent", "t_end")
     with open(out / "superfluid_fountain.csv", "w") as f:
         f.write(",".join(columns) + "\n")
@@ -359,7 +371,7 @@ def fig_jet(runs, out, report, available):
 
 def finest(available, power):
     candidates = [n for n in available if RUNS[n]["power"] == power and RUNS[n]["mu"] == 1e-4
-                  and "t_end" not in RUNS[n]]
+                  and not {"t_end", "sets", "support"} & set(RUNS[n])]
     return max(candidates, key=lambda n: RUNS[n]["n"]) if candidates else None
 
 
@@ -401,17 +413,18 @@ def fig_reynolds(runs, out, report, rows, available):
         if run["power"] == 80.0 and run["mu"] == 1e-4 and "t_end" not in run:
             data = series(runs, name)
             line = axes[0].plot(data["t"], (data["temperature"] - T0) * 1e3,
-                                label=f"cell, dr = d/{run['n']}")[0]
+                                label=f"cell, {name}")[0]
             axes[0].plot(data["t"], (data["below"] - T0) * 1e3, "--", color=line.get_color(),
-                         label=f"under the superleak, dr = d/{run['n']}")
+                         label=f"under the superleak, {name}")
     axes[0].set_xlabel("t (s)")
     axes[0].set_ylabel("cell T - T0 (mK)")
     axes[0].set_title("W = 80 W/m")
-    axes[0].legend()
-    scan = [r for r in rows if r[2] == 80.0 and r[1] == 4]
+    axes[0].legend(fontsize=7)
+    scan = [r for r in rows
+            if r[0] in ("fountain-n4-w80", "fountain-n4-w80-mu3e-4", "fountain-n4-w80-mu1e-3")]
     if scan:
-        re = np.array([r[4] for r in scan])
-        ratio = np.array([r[5] / r[6] for r in scan])
+        re = np.array([r[5] for r in scan])
+        ratio = np.array([r[6] / r[7] for r in scan])
         axes[1].plot(re, ratio, "o-")
         for value, r in zip(re, ratio):
             report.append((f"v_jet / v_ideal at Re {value:.0f} (W = 80, dr = d/4)", f"{r:.4f}"))
