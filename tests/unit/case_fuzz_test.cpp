@@ -809,6 +809,12 @@ TEST(CaseFuzz, MutantsOfSecondSoundSmall) {
   fuzz({"second-sound-small", "dr = 3.3333333333333335e-4", "dr = 1.0e-3", 4000, 6});
 }
 
+TEST(CaseFuzz, MutantsOfCoolerSmall) {
+  // The superfluid model's absorbing cooler (walls with their own superflow velocity in the
+  // reversible pair terms); dr 2 mm: 64 fluid and about 100 wall particles.
+  fuzz({"cooler-small", "dr = 1.0e-3", "dr = 2.0e-3", 3000, 10});
+}
+
 TEST(CaseFuzz, MutantsOfRotatingCylinderSmall) {
   // The two-fluid model: a random mixture, turning walls, viscosity, mutual friction, the spin
   // term; dr 10 um: about 300 fluid and 130 wall particles.

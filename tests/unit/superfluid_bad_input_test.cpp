@@ -36,6 +36,8 @@ std::vector<Defect> defects() {
        "initial.entropy_wave_shape", "expected \"sine\" or \"cosine\", got \"square\""},
       {"unknown_dummy_slip", "droplet-small", "", "", "physics.dummy_slip=sticky",
        "physics.dummy_slip", "expected \"free\" or \"no_slip\", got \"sticky\""},
+      {"unknown_cooler", "cooler-small", "", "", "physics.cooler=cold",
+       "physics.cooler", "expected \"conducting\" or \"absorbing\", got \"cold\""},
       {"negative_random_velocity", "droplet-small", "", "", "initial.random_velocity=-0.1",
        "initial.random_velocity", "must be a finite number >= 0"},
       {"superleak_centre_outside_the_domain", "droplet-small", "[run]",
