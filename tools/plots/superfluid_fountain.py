@@ -7,7 +7,8 @@ Usage: /usr/bin/python3 tools/plots/superfluid_fountain.py [--make-runs] [--runs
            [--revsph PATH] [--threads N] [--only NAME ...]
 
 --make-runs writes each run's case with tools/plots/superfluid_fountain_case.py (dr = d / N,
-the kernel's support 2.8 dr unless the run says otherwise)
+the kernel's support 2.8 dr unless the run says otherwise, the authors' boundaries: the
+absorbing cooler and no-slip glass)
 into RUNS/cases and runs it into RUNS/NAME (default RUNS = out/superfluid), snapshots every
 2.5 ms; a run that stopped early (a session's end) is continued from its last snapshot into
 RUNS/NAME-2, NAME-3, ... (`revsph run --from`), so repeating the command chains it to the end.
@@ -16,10 +17,10 @@ The runs (viscosity mu; Re = W / (T0 s0 mu), eq. 33):
   fountain-n6-w60, fountain-n6-w80          N = 6
   fountain-n8-w80                           N = 8
   fountain-n4-w80-2h                        N = 4, support 5.6 dr (eq. 17 as printed: 2h)
-  fountain-n4-w80-glass                     N = 4, no-slip glass (physics.dummy_slip, the
-                                            authors' code)
-  fountain-n4-w80-cooler                    N = 4, the authors' absorbing cooler (physics.cooler)
-  fountain-n4-w80-authors                   N = 4, both: the boundaries of the authors' code
+  fountain-n4-w80-conducting                N = 4, the boundaries of issue 17: a conducting
+                                            cooler, free-slip glass
+  fountain-n4-w80-glass                     N = 4, no-slip glass alone (conducting cooler)
+  fountain-n4-w80-cooler                    N = 4, the absorbing cooler alone (free-slip glass)
   fountain-n4-w80-mu3e-4, -mu1e-3           N = 4, Re about 480 and 145 (Fig. 11)
   fountain-n4-w80-start                     N = 4, to t = 1 ms, snapshots every 0.25 ms (Fig. 10)
 Writes into --out (default docs/figures):
@@ -74,10 +75,10 @@ RUNS = {
     "fountain-n6-w80": dict(n=6, power=80.0, mu=1e-4),
     "fountain-n8-w80": dict(n=8, power=80.0, mu=1e-4),
     "fountain-n4-w80-2h": dict(n=4, power=80.0, mu=1e-4, support=5.6),
-    "fountain-n4-w80-glass": dict(n=4, power=80.0, mu=1e-4, sets=["physics.dummy_slip=no_slip"]),
-    "fountain-n4-w80-cooler": dict(n=4, power=80.0, mu=1e-4, sets=["physics.cooler=absorbing"]),
-    "fountain-n4-w80-authors": dict(n=4, power=80.0, mu=1e-4, sets=[
-        "physics.cooler=absorbing", "physics.dummy_slip=no_slip"]),
+    "fountain-n4-w80-conducting": dict(n=4, power=80.0, mu=1e-4, sets=[
+        "physics.cooler=conducting", "physics.dummy_slip=free"]),
+    "fountain-n4-w80-glass": dict(n=4, power=80.0, mu=1e-4, sets=["physics.cooler=conducting"]),
+    "fountain-n4-w80-cooler": dict(n=4, power=80.0, mu=1e-4, sets=["physics.dummy_slip=free"]),
     "fountain-n4-w80-mu3e-4": dict(n=4, power=80.0, mu=3e-4),
     "fountain-n4-w80-mu1e-3": dict(n=4, power=80.0, mu=1e-3),
     "fountain-n4-w80-start": dict(n=4, power=80.0, mu=1e-4, t_end=1e-3, every=2.5e-4),

@@ -91,7 +91,8 @@ lattice_origin = {origin}
 # mirror-image glass bodies (adiabatic dummy shells, {layers} layers), each an L with rounded corners,
 # and the capillary's walls, placed at x = xi - (17.1 + r_cap + dr / 2), r_cap = d / 2 = 0.775;
 # the superleak |x| < 15, y = 1 +- 2, rate 1e6 / s; the heater, a Wendland kernel of support
-# 4 mm at (0, 8), ramped over 0.02 s; the cryostat's walls the cooler (T0).
+# 4 mm at (0, 8), ramped over 0.02 s; the cryostat's walls the cooler (s0, free v_s: second
+# sound and heat leave through them, as in the authors' fountain_2d.jl).
 # dr = d / {n} (the paper: d / 40). Written by tools/plots/superfluid_fountain_case.py.{" The reversible core only: no dissipation, superleak or heater." if reversible else ""}
 model = "superfluid"
 dimension = 2
@@ -107,6 +108,8 @@ normal_fraction_slope = 5.851e-4
 heat_capacity = 1861.0             # eq. (14): u2 = 20.37 m/s
 {dissipation}
 gravity = 9.81                     # not given: standard gravity
+cooler = "absorbing"               # the cryostat's walls as the authors' code has them
+dummy_slip = "no_slip"             # the glass: no-slip for the normal fluid (authors' code)
 
 [discretisation]
 dr = {fmt(dr)}
