@@ -9,7 +9,9 @@ Usage: /usr/bin/python3 tools/plots/entropic_cavity.py [--make-runs] [--runs DIR
 --make-runs runs the cases models/entropic/cases/cavity-*.toml into RUNS/NAME (default RUNS =
 out/entropic; Ra = 1e4 takes about 3 minutes on 2 threads, Ra = 1e5 about 20, their Boussinesq
 variants 1 and 3, the conduction check 1, Rayleigh-Benard about 40; cavity-ra1e{4,5}-s{4.5,6.5}:
-the kernel's support at 4.5 and 6.5 dr, walls as thick, about 2.5 and 5 times the cost).
+the kernel's support at 4.5 and 6.5 dr, walls as thick, about 2.5 and 5 times the cost;
+rayleigh-benard-s6.5 and -s6.5-conduction: the authors' RaBe.jl support, seeded or from the
+conduction profile).
 Writes into --out (default docs/figures):
   entropic_cavity.png  the Nusselt numbers of the hot and the cold wall over time against the
                        benchmark, and the temperature field with the velocities at the end.
@@ -78,6 +80,31 @@ def wider_kernel(case, dr, support):
 for _support in (4.5, 6.5):
     RUNS[f"cavity-ra1e4-s{_support}"] = wider_kernel("cavity-ra1e4.toml", 0.025, _support)
     RUNS[f"cavity-ra1e5-s{_support}"] = wider_kernel("cavity-ra1e5.toml", 0.0125, _support)
+
+
+def wider_kernel_rayleigh_benard(support, conduction_start=False):
+    """rayleigh-benard with the authors' RaBe.jl kernel (support 6.5 dr): heater and cooler rows
+    and the side walls ceil(support) layers thick, dt = 0.65 dr / c0; conduction_start: the
+    authors' start from the conduction profile (T from 1.05 at the bottom to 0.95 at the top)
+    instead of uniform T with a seeded roll."""
+    dr = 1.0 / 105.0
+    t = np.ceil(support - 1e-9) * dr
+    lo, hi = -t, 1.0 + t
+    command = ["run", str(CASES / "rayleigh-benard.toml"),
+               "--set", f"discretisation.support_radius_over_dr={support!r}",
+               "--set", f"discretisation.courant_number={0.65 / support!r}",
+               "--set", f"domain.min=[{lo - 0.02!r}, {lo - 0.02!r}]",
+               "--set", f"domain.max=[{hi + 0.02!r}, {hi + 0.02!r}]",
+               "--set", f"particles[1].min=[{lo!r}, {lo!r}]", "--set", f"particles[1].max=[{hi!r}, 0.0]",
+               "--set", f"particles[2].min=[{lo!r}, 1.0]", "--set", f"particles[2].max=[{hi!r}, {hi!r}]",
+               "--set", f"particles[3].min=[{lo!r}, 0.0]", "--set", "particles[4].max=[" + repr(hi) + ", 1.0]"]
+    if conduction_start:
+        command += ["--set", "initial.temperature_gradient=[0.0, -0.1]"]
+    return command
+
+
+RUNS["rayleigh-benard-s6.5"] = wider_kernel_rayleigh_benard(6.5)
+RUNS["rayleigh-benard-s6.5-conduction"] = wider_kernel_rayleigh_benard(6.5, True)
 
 # de Vahl Davis (1983), Int. J. Numer. Methods Fluids 3, 249-264: mean Nusselt numbers of the
 # benchmark solution (Pr = 0.71).
