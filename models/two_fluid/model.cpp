@@ -2,6 +2,7 @@
 
 #include "core/verlet.hpp"
 #include "models/two_fluid/helium_ii.hpp"
+#include "models/two_fluid/rigid_walls.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -221,6 +222,12 @@ void Model<D, Arith>::drift(double dt) {
                              layout_.part_of_set(std::span<const double>(mass_), set), dt, faults);
   });
   faults.throw_if_any();
+  // Rigid walls turn by dt Omega (rigid_walls.hpp), exactly reversible like the fluid's drift.
+  if (D == 2 && parameters_.rigid_walls.rate.size() == state_.wall.position.count() &&
+      parameters_.rigid_walls.any()) {
+    turn_rigid_walls<Arith>(state_.wall.position, state_.wall.velocity, parameters_.rigid_walls, dt,
+                            faults);
+  }
 
   density_valid_ = false;
   impulses_valid_ = false;
