@@ -124,9 +124,18 @@ private:
   // e with de/drho = p / rho^2, e(rho_k) = 0.
   double pressure(double density, double rest) const;
   double internal_energy(double density, double rest) const;
-  // Adds the kick's impulses and, where counted, the work of the non-gradient forces.
+  // Adds the kick's impulses and, where counted, the work of the non-gradient forces and of
+  // rigid walls.
   template <class Sums>
   void add_impulses(const Sums& sums);
+  // Wall blocks turn rigidly (parameters.hpp, RigidWalls).
+  bool rigid_walls_on() const {
+    return D == 2 && parameters_.rigid_walls.rate.size() == state_.wall.position.count() &&
+           parameters_.rigid_walls.any();
+  }
+  // The work the rigid walls did on the fluid through the kick's gradient impulses `sums`.
+  template <class Sums>
+  double rigid_wall_work(const Sums& sums) const;
   // After `sums`' impulses J (components 0..D-1) were added to the momenta: the sum over the
   // moving particles of w . (p_after - J / 2) / m, w the components weight..weight+D-1. With
   // w = J it is the kinetic energy J changed, exactly; summed in particle order (independent
