@@ -177,6 +177,14 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
       kind.mass.push_back(parameters.rest_density(is_superfluid) * volume);
     }
   }
+  // N / N_n is the normal share of a random mixture (model.hpp, normal_pair_factor): it means
+  // nothing for layers of pure kinds.
+  const bool any_mixed = std::any_of(blocks.begin(), blocks.end(),
+                                     [](const auto& block) { return block.kind == "mixed"; });
+  if (parameters.undiluted_viscosity && !any_mixed) {
+    case_file.fail("physics.separate_phase_viscosity",
+                   "\"undiluted\" is for a random mixture: the case has no mixed block");
+  }
   if (superfluid.position.empty() && normal.position.empty()) {
     case_file.fail("particles", "the case has no superfluid or normal particles");
   }
