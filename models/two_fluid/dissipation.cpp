@@ -14,12 +14,17 @@ std::string Model<D, Arith>::dissipation_acts(const Model& model) {
   std::ostringstream text;
   if (model.viscosity() > 0.0) {
     text << "normal-fluid viscosity (eta_bar + eta_r = " << model.viscosity() << " Pa s, "
-         << (p.central_viscosity ? "central form" : "eqs. 34, 39") << ")";
+         << (p.central_viscosity ? "central form" : "eqs. 34, 39");
+    if (model.normal_pair_factor() != 1.0) {
+      text << ", undiluted: normal pairs times N / N_n = " << model.normal_pair_factor();
+    }
+    text << ")";
   }
   if (p.mutual_friction.active()) {
     text << (text.tellp() > 0 ? " and " : "")
          << "mutual friction (eqs. 29, 35; C_L(0) = " << p.mutual_friction.coefficient(0.0)
-         << " kg/(m^3 s))";
+         << " kg/(m^3 s)"
+         << (p.mutual_friction.wall_at_initial_line_density ? ", held at the walls" : "") << ")";
   }
   if (p.contact.collision) {
     text << (text.tellp() > 0 ? " and " : "")
@@ -37,10 +42,12 @@ std::string Model<D, Arith>::dissipation_acts(const Model& model) {
 
 template <int D, class Arith>
 void Model<D, Arith>::dissipate(double tau) {
-  const double friction =
-      parameters_.mutual_friction.active() ? parameters_.mutual_friction.coefficient(time_) : 0.0;
+  const MutualFriction& mutual_friction = parameters_.mutual_friction;
+  const double friction = mutual_friction.active() ? mutual_friction.coefficient(time_) : 0.0;
+  const double wall_friction =
+      mutual_friction.active() ? mutual_friction.wall_coefficient(time_) : 0.0;
   const Contact& contact = parameters_.contact;
-  if (viscosity() == 0.0 && friction == 0.0 && !contact.any()) {
+  if (viscosity() == 0.0 && friction == 0.0 && wall_friction == 0.0 && !contact.any()) {
     return;
   }
   update_density();
@@ -66,7 +73,8 @@ void Model<D, Arith>::dissipate(double tau) {
       in.velocity[k][wall[i]] = Arith::real(state_.wall.velocity.at(k, i), v_scale);
     }
   }
-  if (friction > 0.0) {
+  const bool any_friction = friction > 0.0 || wall_friction > 0.0;
+  if (any_friction) {
     // The weights move with the particles only: the density's layout is this sub-step's.
     sum_pairs<Arith>(layout_, NormalWeightTerm<D>{kernel_, in.kind}, normal_weight_sums_);
   }
@@ -75,10 +83,12 @@ void Model<D, Arith>::dissipate(double tau) {
       in,
       inputs_.volume,
       inputs_.phase_volume,
-      friction > 0.0 ? normal_weight_sums_.values(0) : std::span<const double>{},
+      any_friction ? normal_weight_sums_.values(0) : std::span<const double>{},
       viscosity(),
+      normal_pair_factor(),
       parameters_.central_viscosity,
       friction,
+      wall_friction,
       {contact.any() ? parameters_.dr : 0.0, contact.collision, contact.restitution,
        contact.riemann, contact.limiter, parameters_.sound_speed, inputs_.mass, inputs_.density},
       tau};

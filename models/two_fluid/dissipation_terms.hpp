@@ -75,10 +75,13 @@ struct ContactInputs {
 //     or, in the central form (Monaghan's, README), the impulse -(D + 2) K_ab (v_ab . n) n along
 //     n = x_ab / r, which keeps angular momentum (2 (D + 2) sum_b V_b (v_ab . x_ab) x_ab W' / r^3
 //     is the Laplacian of a divergence-free v)
+//     with the normal-normal pairs' K times N / N_n in a separate phases' mixture whose
+//     viscosity is undiluted (normal_pair_factor)
 //   mutual friction (29, 35 with the reaction's sign fixed: README), superfluid a - normal or
 //   wall b:
 //     K_ab = tau C_L V_a W_ab / w_a   (V_a the superfluid phase's volume with interpenetrating
-//     phases: the friction per unit volume C_L (v_s - v_n) over the superfluid's share of it)
+//     phases: the friction per unit volume C_L (v_s - v_n) over the superfluid's share of it;
+//     against walls C_L may be held at C_L(0), wall_friction)
 //   and the contact terms above.
 // Components 0..D-1: the impulse; D: the work the wall did on the fluid particle, f_a . v_wall
 // (walls move nothing but give no-slip).
@@ -91,8 +94,12 @@ struct DissipationTerm {
   std::span<const double> phase_volume;  // V_k = V rho / rho_k, interpenetrating phases (else V)
   std::span<const double> normal_weight; // w of eq. (29), superfluid slots
   double viscosity;                      // eta + eta_r, Pa s
-  bool central_viscosity;                // the central form instead of eq. (34)'s
-  double friction;                       // C_L of eq. (29) at this time, kg/(m^3 s)
+  // Times the normal-normal (not normal-wall) pairs' viscous coefficient: N / N_n for a separate
+  // phases' mixture whose viscosity is undiluted (Model::normal_pair_factor, README), else 1.
+  double normal_pair_factor;
+  bool central_viscosity; // the central form instead of eq. (34)'s
+  double friction;        // C_L of eq. (29) at this time, kg/(m^3 s)
+  double wall_friction;   // C_L against wall partners: C_L(t), or C_L(0) (README, "Wall grip")
   ContactInputs contact;
   double tau;
 
@@ -109,18 +116,23 @@ struct DissipationTerm {
       if (viscosity == 0.0 || (ka == wall_kind && kb == wall_kind)) {
         return {0.0, 0.0};
       }
-      const double k =
-          -2.0 * tau * viscosity * phase_volume[a] * phase_volume[b] * kernel.derivative_over_r(r);
+      const double pair_factor = ka == wall_kind || kb == wall_kind ? 1.0 : normal_pair_factor;
+      const double k = -2.0 * tau * viscosity * pair_factor * phase_volume[a] * phase_volume[b] *
+                       kernel.derivative_over_r(r);
       return central_viscosity ? std::pair{0.0, (D + 2) * k} : std::pair{k, 0.0};
     }
-    if (friction == 0.0 || a_normal == b_normal) {
+    if (a_normal == b_normal) {
       return {0.0, 0.0}; // superfluid pairs: no viscosity (the superfluid is inviscid)
+    }
+    const double c_l = ka == wall_kind || kb == wall_kind ? wall_friction : friction;
+    if (c_l == 0.0) {
+      return {0.0, 0.0};
     }
     const std::uint32_t s = ka == superfluid_kind ? a : b;
     if (!(normal_weight[s] > 0.0)) {
       return {0.0, 0.0}; // every normal neighbour on the kernel's edge: W = 0 there
     }
-    return {tau * friction * phase_volume[s] * kernel.value(r) / normal_weight[s], 0.0};
+    return {tau * c_l * phase_volume[s] * kernel.value(r) / normal_weight[s], 0.0};
   }
 
   // The contact terms' impulse added to f.

@@ -38,6 +38,10 @@ struct MutualFriction {
   double circulation_quantum = 0.0;  // kappa, m^2/s
   double initial_line_density = 0.0; // L0, 1/m^2
   double vinen_beta = 0.0;           // beta_v, m^2/s
+  // mutual_friction.wall_line_density = "initial": against the wall particles the friction keeps
+  // C_L(0) (L = L0) for the whole run, while the fluid-fluid friction follows Vinen's L(t)
+  // (README, "Wall grip").
+  bool wall_at_initial_line_density = false;
 
   bool active() const { return alpha > 0.0 && initial_line_density > 0.0; }
   double line_density(double time) const {
@@ -46,6 +50,10 @@ struct MutualFriction {
   // Per volume and per unit of relative velocity: F_sn = C_L v_sn (eq. 8), kg/(m^3 s).
   double coefficient(double time) const {
     return 2.0 / 3.0 * superfluid_density * alpha * circulation_quantum * line_density(time);
+  }
+  // C_L of a superfluid particle's pairs with the wall particles.
+  double wall_coefficient(double time) const {
+    return coefficient(wall_at_initial_line_density ? 0.0 : time);
   }
 };
 

@@ -2,9 +2,11 @@
 
 #include "core/verlet.hpp"
 #include "models/two_fluid/helium_ii.hpp"
+#include "models/two_fluid/rigid_walls.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace revsph::two_fluid {
 
@@ -174,7 +176,8 @@ void Model<D, Arith>::update_impulses(double tau) {
                                    thermomechanical,
                                    spin_on(),
                                    p.thermomechanical.difference_form,
-                                   slot_temperature_};
+                                   slot_temperature_,
+                                   rigid_walls_on()};
   };
   if (counts_force_work()) {
     sum_pairs<Arith>(layout_, term(std::true_type{}), counted_impulse_sums_);
@@ -195,11 +198,37 @@ void Model<D, Arith>::add_impulses(const Sums& sums) {
     add_pair_totals<Arith>(kind.momentum, sums, 0, layout_.slots_of_set(set), faults);
   });
   faults.throw_if_any();
+  if (rigid_walls_on()) {
+    wall_work_ += rigid_wall_work(sums);
+  }
   if (!counts_force_work()) {
     return;
   }
   // The work of the non-gradient impulses (components D..2D-1).
   force_work_ += work_of_impulses(sums, D);
+}
+
+template <int D, class Arith>
+template <class Sums>
+double Model<D, Arith>::rigid_wall_work(const Sums& sums) const {
+  // A turning wall moves the internal energy sum m e(rho), which depends on its position, by
+  // -F_w . dx_w, F_w the gradient (pressure) force on it: that is the work it does on the fluid.
+  // Each kick of tau adds -J_w . v_w with J_w = F_w tau (the non-gradient spin share, components
+  // D..2D-1 where counted, left out: its work on the fluid is force_work's), so the two kicks of a
+  // step make the trapezoid rule over the step, second order as the integrator.
+  const std::span<const std::uint32_t> slots = layout_.slots_of_set(wall_set);
+  const auto& v_scale = state_.wall.velocity.info().scale;
+  double work = 0.0;
+  for (std::size_t i = 0; i < slots.size(); ++i) {
+    for (int k = 0; k < D; ++k) {
+      double impulse = sums.value(k, slots[i]);
+      if constexpr (std::is_same_v<Sums, PairSums<Arith, 2 * D>>) {
+        impulse -= sums.value(D + k, slots[i]);
+      }
+      work -= impulse * Arith::real(state_.wall.velocity.at(k, i), v_scale);
+    }
+  }
+  return work;
 }
 
 template <int D, class Arith>
@@ -221,6 +250,11 @@ void Model<D, Arith>::drift(double dt) {
                              layout_.part_of_set(std::span<const double>(mass_), set), dt, faults);
   });
   faults.throw_if_any();
+  // Rigid walls turn by dt Omega (rigid_walls.hpp), exactly reversible like the fluid's drift.
+  if (rigid_walls_on()) {
+    turn_rigid_walls<Arith>(state_.wall.position, state_.wall.velocity, parameters_.rigid_walls, dt,
+                            faults);
+  }
 
   density_valid_ = false;
   impulses_valid_ = false;

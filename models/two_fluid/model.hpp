@@ -78,6 +78,23 @@ private:
     const Parameters<D>& p = parameters_;
     return p.normal_viscosity > 0.0 ? p.normal_viscosity + p.rotational_viscosity : 0.0;
   }
+  // The factor on the normal-normal pairs' viscous coefficient (README, "Wall grip"). With
+  // separate phases a random mixture's normal particles are a share phi = N_n / N of all, so the
+  // Laplacian sum of eq. (34) over a normal particle's normal neighbours samples phi of its
+  // volume: per normal mass rho_n V it gives phi nu_n lap v. Undiluted, those pairs' K is
+  // multiplied by N / N_n = 1 / phi; the normal-wall pairs keep theirs, as the wall region is
+  // wholly normal (its sum is not diluted). This is what the interpenetrating phases' volumes
+  // V rho / rho_n (ratio rho / rho_n = 1 / phi by the draw) do per normal mass rho V: normal
+  // pairs (1 / phi)^2 V_a V_b / (rho V) = (1 / phi) V_b / (rho_n V), wall pairs 1 / (rho_n V).
+  // Still one K per pair: momentum exact, and the accounts count the applied impulses.
+  double normal_pair_factor() const {
+    const std::size_t normal = state_.normal.position.count();
+    if (!parameters_.undiluted_viscosity || normal == 0) {
+      return 1.0;
+    }
+    return static_cast<double>(state_.superfluid.position.count() + normal) /
+           static_cast<double>(normal);
+  }
   CarrierField<Arith> carrier_position() const {
     return {&state_.superfluid.position, &state_.normal.position, &state_.wall.position};
   }
@@ -107,9 +124,18 @@ private:
   // e with de/drho = p / rho^2, e(rho_k) = 0.
   double pressure(double density, double rest) const;
   double internal_energy(double density, double rest) const;
-  // Adds the kick's impulses and, where counted, the work of the non-gradient forces.
+  // Adds the kick's impulses and, where counted, the work of the non-gradient forces and of
+  // rigid walls.
   template <class Sums>
   void add_impulses(const Sums& sums);
+  // Wall blocks turn rigidly (parameters.hpp, RigidWalls).
+  bool rigid_walls_on() const {
+    return D == 2 && parameters_.rigid_walls.rate.size() == state_.wall.position.count() &&
+           parameters_.rigid_walls.any();
+  }
+  // The work the rigid walls did on the fluid through the kick's gradient impulses `sums`.
+  template <class Sums>
+  double rigid_wall_work(const Sums& sums) const;
   // After `sums`' impulses J (components 0..D-1) were added to the momenta: the sum over the
   // moving particles of w . (p_after - J / 2) / m, w the components weight..weight+D-1. With
   // w = J it is the kinetic energy J changed, exactly; summed in particle order (independent

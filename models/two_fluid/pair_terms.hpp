@@ -76,8 +76,11 @@ struct ImpulseTerm {
   bool spin_on;
   bool thermomechanical_difference = false;
   std::span<const double> temperature = {}; // T by slot, for the difference form
+  // Rigid walls (rigid_walls.hpp) take their impulses too, never applied: the model counts the
+  // work the turning walls do on the fluid through them.
+  bool walls_receive = false;
 
-  bool receives(std::uint32_t s) const { return in.moves[s] != 0; }
+  bool receives(std::uint32_t s) const { return in.moves[s] != 0 || walls_receive; }
 
   double pressure_factor(std::uint32_t a, std::uint32_t b) const {
     switch (form) {

@@ -42,6 +42,29 @@ MutualFriction read_mutual_friction(const CaseFile& case_file, double superfluid
   return f;
 }
 
+// Read whether or not the friction is on, so that a bad value is never passed over.
+bool read_wall_line_density(const CaseFile& case_file) {
+  const std::string value = case_file.string_or("mutual_friction.wall_line_density", "decaying");
+  if (value != "decaying" && value != "initial") {
+    case_file.fail("mutual_friction.wall_line_density",
+                   "expected \"decaying\" or \"initial\", got \"" + value + "\"");
+  }
+  return value == "initial";
+}
+
+bool read_undiluted_viscosity(const CaseFile& case_file, bool interpenetrating) {
+  const std::string value = case_file.string_or("physics.separate_phase_viscosity", "diluted");
+  if (value != "diluted" && value != "undiluted") {
+    case_file.fail("physics.separate_phase_viscosity",
+                   "expected \"diluted\" or \"undiluted\", got \"" + value + "\"");
+  }
+  if (value == "undiluted" && interpenetrating) {
+    case_file.fail("physics.separate_phase_viscosity",
+                   "interpenetrating phases are undiluted already (phase volumes); remove it");
+  }
+  return value == "undiluted";
+}
+
 // Sec. IV.1: dt below the CFL, diffusion and body-force limits of its ref. [54] (Morris, Fox &
 // Zhu 1997): courant_number h_s / c (read_particle_discretisation), viscous_number h^2 / nu and
 // force_number sqrt(h / g), h = support / 2 the Wendland kernel's smoothing length and nu the
@@ -119,7 +142,9 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
                    "expected \"laplacian\" or \"central\", got \"" + viscosity_form + "\"");
   }
   p.central_viscosity = viscosity_form == "central";
+  p.undiluted_viscosity = read_undiluted_viscosity(case_file, p.interpenetrating);
   p.mutual_friction = read_mutual_friction(case_file, p.superfluid_density);
+  p.mutual_friction.wall_at_initial_line_density = read_wall_line_density(case_file);
   p.contact.collision = case_file.boolean_or("collision.on", false);
   p.contact.restitution = case_file.number_or("collision.restitution", p.contact.restitution);
   if (!(p.contact.restitution >= 0.0 && p.contact.restitution <= 1.0)) {
@@ -230,6 +255,16 @@ const KeyTable& case_keys() {
            "\"laplacian\": eq. (34), the pair force along v_a - v_b; \"central\": Monaghan's, "
            "along x_ab, which keeps angular momentum (README)",
            {"laplacian", "central"}});
+    t.add({"physics.separate_phase_viscosity",
+           T::string,
+           "-",
+           "\"diluted\"",
+           "with separate phases: \"diluted\": eq. (34) as is, so that in a random mixture the "
+           "normal particles, N_n / N of all, diffuse momentum at N_n / N of nu_n; \"undiluted\": "
+           "the normal-normal pairs' coefficient times N / N_n (normal-wall pairs unchanged), "
+           "nu_n = (eta_bar + eta_r) / rho_n as the interpenetrating phases' volumes give "
+           "(README, \"Wall grip\")",
+           {"diluted", "undiluted"}});
     t.add({"pressure.form",
            T::string,
            "-",
@@ -265,6 +300,14 @@ const KeyTable& case_keys() {
            "L0 of eq. (9); > 0"});
     t.add({"mutual_friction.vinen_beta", T::number, "m^2/s", "0",
            "beta_v of eq. (9): 1 / L(t) = 1 / L0 + beta_v t; >= 0"});
+    t.add({"mutual_friction.wall_line_density",
+           T::string,
+           "-",
+           "\"decaying\"",
+           "L of the friction against wall particles: \"decaying\": Vinen's L(t) as the fluid's; "
+           "\"initial\": L0 for the whole run (a wall that keeps its grip on the superfluid, "
+           "README, \"Wall grip\")",
+           {"decaying", "initial"}});
     t.add({"collision.on", T::boolean, "-", "false",
            "the pair collision of sec. IV.1 (ref. [40]) for r < dr, approaching pairs only; "
            "irreversible"});
@@ -302,6 +345,15 @@ const KeyTable& case_keys() {
            "omega x (x - centre), seen by the irreversible terms only"});
     t.add({"particles[].rotation_centre", T::numbers, "m", "origin",
            "centre of a turning wall block"});
+    t.add({"particles[].wall_motion",
+           T::string,
+           "-",
+           "\"frozen\"",
+           "a turning wall block: \"frozen\": its particles stay where they are, their velocity "
+           "omega x (x - centre) seen by the irreversible terms only; \"rigid\": they turn with "
+           "it, position and velocity rotated by dt omega about rotation_centre in each drift "
+           "(exactly reversible, README, \"Wall grip\"); 2D, no velocity key",
+           {"frozen", "rigid"}});
     t.add({"discretisation.viscous_number", T::number, "1", "0.125",
            "dt <= viscous_number h^2 / nu (h = support / 2, nu = (eta_bar + eta_r) / rho_n) "
            "where dt comes from courant_number (sec. IV.1, Morris et al. 1997); > 0"});

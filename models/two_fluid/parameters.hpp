@@ -9,9 +9,12 @@
 #include "fixedpoint/scale.hpp"
 #include "models/two_fluid/helium_ii.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <vector>
 
 namespace revsph::two_fluid {
 
@@ -51,6 +54,17 @@ struct Contact {
   bool any() const { return collision || riemann; }
 };
 
+// Wall blocks with `wall_motion = "rigid"` (README, "Wall grip"): per wall particle, in the wall
+// set's order, the rate |Omega| of its block (0: frozen, the default) and the block's centre. The
+// drift turns such a particle's position and velocity about the centre by dt Omega.
+struct RigidWalls {
+  std::vector<double> rate;                  // 1/s, >= 0; the sense is the velocity's (odd)
+  std::vector<std::array<double, 2>> centre; // m (2D only)
+  bool any() const {
+    return std::any_of(rate.begin(), rate.end(), [](double r) { return r > 0.0; });
+  }
+};
+
 template <int D>
 struct Parameters {
   double superfluid_density = 0.0; // rho_s: the superfluid particles' Tait reference and mass
@@ -72,9 +86,14 @@ struct Parameters {
   // Irreversible terms.
   double normal_viscosity = 0.0;  // eta_bar = eta_n of eqs. (34, 39), Pa s
   bool central_viscosity = false; // physics.viscosity_form = "central" (README)
+  // physics.separate_phase_viscosity = "undiluted": with separate phases the normal-normal pairs'
+  // viscous coefficient is multiplied by N / N_n (README, "Wall grip"), so that the normal
+  // particles of a random mixture diffuse momentum at nu = (eta_bar + eta_r) / rho_n.
+  bool undiluted_viscosity = false;
   MutualFriction mutual_friction;
   Contact contact;
   Interface interface;
+  RigidWalls rigid_walls;       // filled by the setup from the wall blocks
   double random_velocity = 0.0; // each velocity component uniform in [-value, value] at start
   std::uint64_t seed = 1;
   // [discretisation]

@@ -67,10 +67,39 @@ Vec<D> wall_velocity(const CaseFile& case_file, const std::string& key, const Ve
   return v;
 }
 
+// A block's `wall_motion`: true for "rigid" (the particles turn with the block, README "Wall
+// grip"), false for "frozen" (the default). Read on every block, so that a bad value is named
+// before the check that the key belongs to walls.
+bool rigid_wall(const CaseFile& case_file, const std::string& key) {
+  const std::string motion = case_file.string_or(key + ".wall_motion", "frozen");
+  if (motion != "frozen" && motion != "rigid") {
+    case_file.fail(key + ".wall_motion",
+                   "expected \"frozen\" or \"rigid\", got \"" + motion + "\"");
+  }
+  return motion == "rigid";
+}
+
+// The rate |omega| of a rigid wall block.
+template <int D>
+double rigid_rate(const CaseFile& case_file, const std::string& key) {
+  if (D != 2) {
+    case_file.fail(key + ".wall_motion", "a rigid turning wall is 2D only");
+  }
+  if (case_file.has(key + ".velocity")) {
+    case_file.fail(key + ".wall_motion",
+                   "a rigid wall moves by its rotation only: remove velocity");
+  }
+  const double rate = case_file.number_or(key + ".rotation_rate", 0.0);
+  if (!(std::isfinite(rate) && rate != 0.0)) {
+    case_file.fail(key + ".wall_motion", "a rigid wall needs a non-zero rotation_rate");
+  }
+  return std::abs(rate);
+}
+
 template <int D, class Arith>
 std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const SimulationOptions& options) {
   using Raw = typename Arith::Raw;
-  const Parameters<D> parameters = read_parameters<D>(case_file);
+  Parameters<D> parameters = read_parameters<D>(case_file);
   if (D != 2 && parameters.spin != 0.0) {
     case_file.fail("spin.coefficient", "the spin term (eq. 40) is implemented in 2D only");
   }
@@ -80,7 +109,9 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
       {bytes_per_particle(D, reach), options.memory_budget_bytes, neighbour_list_bytes(D, reach)});
   KindParticles<D> superfluid, normal, wall;
   for (const auto& block : blocks) {
-    for (const char* wall_only : {".velocity", ".rotation_rate", ".rotation_centre"}) {
+    const bool rigid = rigid_wall(case_file, block.key);
+    for (const char* wall_only :
+         {".velocity", ".rotation_rate", ".rotation_centre", ".wall_motion"}) {
       if (block.kind != "wall" && case_file.has(block.key + wall_only)) {
         case_file.fail(block.key + wall_only, "only for kind = \"wall\"");
       }
@@ -93,10 +124,18 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
     }
     const double volume = block.volume_per_particle;
     if (block.kind == "wall") {
+      const double rate = rigid ? rigid_rate<D>(case_file, block.key) : 0.0;
+      std::array<double, 2> centre{};
+      if (rate > 0.0 && case_file.has(block.key + ".rotation_centre")) {
+        const std::vector<double> given = case_file.numbers(block.key + ".rotation_centre", D);
+        centre = {given[0], given[1]};
+      }
       for (const Vec<D>& x : block.positions) {
         wall.position.push_back(x);
         wall.velocity.push_back(wall_velocity<D>(case_file, block.key, x));
         wall.mass.push_back(parameters.rest_density(false) * volume);
+        parameters.rigid_walls.rate.push_back(rate);
+        parameters.rigid_walls.centre.push_back(centre);
       }
       continue;
     }
@@ -137,6 +176,14 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
       kind.position.push_back(x);
       kind.mass.push_back(parameters.rest_density(is_superfluid) * volume);
     }
+  }
+  // N / N_n is the normal share of a random mixture (model.hpp, normal_pair_factor): it means
+  // nothing for layers of pure kinds.
+  const bool any_mixed = std::any_of(blocks.begin(), blocks.end(),
+                                     [](const auto& block) { return block.kind == "mixed"; });
+  if (parameters.undiluted_viscosity && !any_mixed) {
+    case_file.fail("physics.separate_phase_viscosity",
+                   "\"undiluted\" is for a random mixture: the case has no mixed block");
   }
   if (superfluid.position.empty() && normal.position.empty()) {
     case_file.fail("particles", "the case has no superfluid or normal particles");

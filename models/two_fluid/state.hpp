@@ -40,7 +40,9 @@ inline constexpr char normal_name[] = "normal";
 
 // Walls: frozen normal particles (several layers, sec. V.1), in the density and every pair
 // force like a normal particle at the wall's temperature, with a velocity (a lid, a turning
-// vessel) that only the irreversible terms see (no-slip).
+// vessel) that only the irreversible terms see (no-slip). A block with wall_motion = "rigid"
+// turns instead: the drift turns its positions and velocities exactly (rigid_walls.hpp), though
+// the fields stay declared as not evolved (so the state, and every case's hash, is unchanged).
 template <int D, class Raw>
 struct Wall {
   static constexpr SetInfo set{.name = "wall", .motion = Motion::fixed};

@@ -139,12 +139,17 @@ TEST(Restart, EnergyAccountsOfHeaterAndWallsGoOn) {
 
 // The two-fluid rotating cylinder: the mutual friction's L(t) decays with the time (eq. 9), and
 // the dissipated energy and the walls' work are the model's accounts. A continued run must take
-// the time from the step count and the accounts from the snapshot: same state, same budget.
-TEST(Restart, TwoFluidFrictionClockAndAccountsGoOn) {
+// the time from the step count and the accounts from the snapshot: same state, same budget. Also
+// with the wall-grip options (README "Wall grip"): the wall friction held at L0, the undiluted
+// viscosity and the wall turning rigidly (its positions and velocities are in the snapshot).
+class TwoFluidRestart : public ::testing::TestWithParam<std::vector<std::string>> {};
+
+TEST_P(TwoFluidRestart, FrictionClockAndAccountsGoOn) {
   TempDirectory directory("revsph-restart-test");
   const std::int64_t n = 60;
-  run_whole_then_continue(directory.path(), "rotating-cylinder-small",
-                          {"output.snapshot_every=30", "output.energy_every=30"}, n);
+  std::vector<std::string> overrides{"output.snapshot_every=30", "output.energy_every=30"};
+  overrides.insert(overrides.end(), GetParam().begin(), GetParam().end());
+  run_whole_then_continue(directory.path(), "rotating-cylinder-small", overrides, n);
 
   const auto uninterrupted_end =
       revsph::read_checked_snapshot(directory.path() / "whole" / "snapshots" / snapshot_name(n));
@@ -158,6 +163,13 @@ TEST(Restart, TwoFluidFrictionClockAndAccountsGoOn) {
     EXPECT_EQ(restarted.at(column), uninterrupted.at(column)) << column;
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(TwoFluid, TwoFluidRestart,
+                         ::testing::Values(std::vector<std::string>{},
+                                           std::vector<std::string>{
+                                               "mutual_friction.wall_line_density=initial",
+                                               "physics.separate_phase_viscosity=undiluted",
+                                               "particles[1].wall_motion=rigid"}));
 
 TEST(Restart, OverridesOfTheOriginalRunAreKept) {
   TempDirectory directory("revsph-restart-test");

@@ -286,7 +286,8 @@ TEST(TwoFluidDissipation, InterpenetratingFrictionRelaxesAtTheContinuumRate) {
 // interpenetrating phases the normal phase of the mixture, its own volumes V rho / rho_n, keeps
 // that rate; with separate phases it sums over its normal neighbours with the whole mixture's
 // volumes while each particle carries rho_n, and its rate is N_n / N times it (the emulsion of
-// README). The draw's local fractions (about 5 normal neighbours a particle) make the mixture's
+// README); with separate phases and physics.separate_phase_viscosity = "undiluted" the normal
+// pairs' coefficient times N / N_n restores the normal fluid's own rate. The draw's local fractions (about 5 normal neighbours a particle) make the mixture's
 // pair sum vary by 15 % (one standard deviation) from seed to seed, so the ratios are averaged
 // over 10 draws (standard error 5 %) and held to 12 %.
 struct ShearWaveDecay {
@@ -312,7 +313,7 @@ ShearWaveDecay shear_wave_decay(std::vector<Override> more) {
 TEST(TwoFluidDissipation, InterpenetratingViscosityIsTheNormalFluidsOwn) {
   const ShearWaveDecay alone = shear_wave_decay({{"particles[0].superfluid_fraction", "1e-9"}});
   ASSERT_EQ(alone.normal_share, 1.0);
-  double interpenetrating = 0.0, separate = 0.0;
+  double interpenetrating = 0.0, separate = 0.0, undiluted = 0.0;
   const int seeds = 10;
   for (int seed = 1; seed <= seeds; ++seed) {
     const std::string draw = std::to_string(seed);
@@ -322,12 +323,18 @@ TEST(TwoFluidDissipation, InterpenetratingViscosityIsTheNormalFluidsOwn) {
         alone.rate / seeds;
     const ShearWaveDecay emulsion = shear_wave_decay({{"particles[0].seed", draw}});
     separate += emulsion.rate / (emulsion.normal_share * alone.rate) / seeds;
+    undiluted += shear_wave_decay({{"physics.separate_phase_viscosity", "\"undiluted\""},
+                                   {"particles[0].seed", draw}})
+                     .rate /
+                 alone.rate / seeds;
   }
   std::printf("shear-wave decay rate over %d draws, against the normal fluid alone (%.4e 1/s): "
-              "interpenetrating %.3f, separate over its normal share %.3f\n",
-              seeds, alone.rate, interpenetrating, separate);
+              "interpenetrating %.3f, separate over its normal share %.3f, separate undiluted "
+              "%.3f\n",
+              seeds, alone.rate, interpenetrating, separate, undiluted);
   EXPECT_NEAR(interpenetrating, 1.0, 0.12);
   EXPECT_NEAR(separate, 1.0, 0.12);
+  EXPECT_NEAR(undiluted, 1.0, 0.12);
 }
 
 // Without viscosity and friction, at the full case's dt (its viscous limit, 1e-4 s: without

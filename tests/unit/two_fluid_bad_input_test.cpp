@@ -50,6 +50,23 @@ std::vector<Defect> defects() {
       {"interpenetrating_at_another_fraction", cylinder, "superfluid_fraction = 0.834",
        "superfluid_fraction = 0.5", "physics.phases=interpenetrating",
        "particles[0].superfluid_fraction", "it must be rho_s / (rho_s + rho_n)"},
+      {"unknown_wall_line_density", cylinder, "", "", "mutual_friction.wall_line_density=frozen",
+       "mutual_friction.wall_line_density", "expected \"decaying\" or \"initial\", got \"frozen\""},
+      {"unknown_separate_phase_viscosity", mixture, "", "",
+       "physics.separate_phase_viscosity=emulsion", "physics.separate_phase_viscosity",
+       "expected \"diluted\" or \"undiluted\", got \"emulsion\""},
+      {"undiluted_with_interpenetrating_phases", cylinder, "[physics]",
+       "[physics]\nphases = \"interpenetrating\"", "physics.separate_phase_viscosity=undiluted",
+       "physics.separate_phase_viscosity", "undiluted already"},
+      {"undiluted_without_a_mixture", "rayleigh-taylor-small", "", "",
+       "physics.separate_phase_viscosity=undiluted", "physics.separate_phase_viscosity",
+       "the case has no mixed block"},
+      {"unknown_wall_motion", cylinder, "", "", "particles[1].wall_motion=spinning",
+       "particles[1].wall_motion", "expected \"frozen\" or \"rigid\", got \"spinning\""},
+      {"wall_motion_on_a_fluid_block", cylinder, "", "", "particles[0].wall_motion=rigid",
+       "particles[0].wall_motion", "only for kind = \"wall\""},
+      {"rigid_wall_without_rotation", mixture, "", "", "particles[1].wall_motion=rigid",
+       "particles[1].wall_motion", "needs a non-zero rotation_rate"},
   };
 }
 

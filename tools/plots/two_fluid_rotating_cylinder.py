@@ -20,6 +20,18 @@ Usage: /usr/bin/python3 tools/plots/two_fluid_rotating_cylinder.py [--make-runs]
   cylinder-interp-nofriction  the same, friction off too (alpha = 0), to 2 s: the continuum
                             leaves the superfluid at rest; what moves it is the particles' own
                             coupling (README)
+  cylinder-grip-wall-l      as cylinder-paper, the friction against the wall particles held at
+                            L0 (mutual_friction.wall_line_density = "initial"; README, "Wall grip")
+  cylinder-grip-undiluted   as cylinder-paper, the normal pairs' viscosity undiluted
+                            (physics.separate_phase_viscosity = "undiluted")
+  cylinder-grip-rigid       as cylinder-paper, the wall turning rigidly (particles[1].wall_motion =
+                            "rigid")
+  cylinder-grip-all         the three together
+  cylinder-grip-all-central the three with physics.viscosity_form = "central" (undiluted, eq. 34's
+                            non-central pair force brakes rigid rotation N / N_n times harder), the
+                            spin term off (it repairs eq. 34's torque; beside the central form its
+                            fixed spin drives the fluid past the wall) and viscous_number 0.02
+                            (0.125 blew the small vessel up at step 11): six times the steps
 Writes into --out (default docs/figures):
   two_fluid_rotating_cylinder.png  the normal fluid alone against Navier-Stokes; |v| against r at
                                    0.5 s and 5 s; the slope against t; the scan: vortex strength
@@ -28,6 +40,8 @@ Writes into --out (default docs/figures):
   two_fluid_rotating_cylinder.csv  run, C_omega, beta_v, t, kind, slope of |v| against r, vortex
                                    strength, analytic slopes (normal fluid alone, fluids locked)
   two_fluid_rotating_cylinder.md   the numbers (also printed)
+  two_fluid_cylinder_grip.png      the cylinder-grip runs' slopes against t and the two-fluid
+                                   continuum (their numbers in the .md too)
 
 The slope is the least-squares fit |v| = k r through the origin over every particle of a kind.
 The vortex strength is the rms of v minus the kind's mean azimuthal velocity at that radius
@@ -65,6 +79,15 @@ INTERPENETRATING = {"cylinder-interp": (0.01, 4.76e-9), "cylinder-interp-nospin"
 RUNS.update(INTERPENETRATING)
 FRICTIONLESS = "cylinder-interp-nofriction"  # interpenetrating, spin and friction off, to 2 s
 RUNS[FRICTIONLESS] = (0.0, 4.76e-9)
+# The wall-grip options (README, "Wall grip"), each alone and all together, on cylinder-paper.
+GRIP_OPTIONS = {"wall-l": "mutual_friction.wall_line_density=initial",
+                "undiluted": "physics.separate_phase_viscosity=undiluted",
+                "rigid": "particles[1].wall_motion=rigid"}
+GRIP = {f"cylinder-grip-{k}": [v] for k, v in GRIP_OPTIONS.items()}
+GRIP["cylinder-grip-all"] = list(GRIP_OPTIONS.values())
+GRIP["cylinder-grip-all-central"] = [*GRIP_OPTIONS.values(), "physics.viscosity_form=central",
+                                     "spin.coefficient=0", "discretisation.viscous_number=0.02"]
+RUNS.update({name: (0.01, 4.76e-9) for name in GRIP})
 RHO_S = RHO - RHO_N
 ALPHA, KAPPA, L0, BETA_V = 0.0968, 9.9693e-8, 1.0e10, 4.76e-9  # the case's mutual friction
 
@@ -83,6 +106,8 @@ def command(name):
         arguments += ["--set", "physics.phases=interpenetrating"]
     if name == FRICTIONLESS:
         arguments += ["--set", "mutual_friction.alpha=0", "--t-end", "2"]
+    for setting in GRIP.get(name, []):
+        arguments += ["--set", setting]
     if beta != 4.76e-9:
         arguments += ["--set", f"mutual_friction.vinen_beta={beta!r}"]
     if c_omega != 0.01:
@@ -330,13 +355,39 @@ def make_figures(runs, out, report, names):
                          for r in rows)
 
 
+def make_grip_figure(runs, out, report):
+    """The cylinder-grip runs' slopes against t, with the two-fluid continuum of the case's
+    C_L(t) (4.41 / 3.72 rad/s at 5 s) and its +-10 % band at 5 s."""
+    fig, axis = plt.subplots(figsize=(8, 6))
+    t_all = np.linspace(0.0, 5.0, 101)
+    continuum = two_fluid_spin_up(t_all[1:], RHO_N, RHO_S, 2 * ETA_N, friction_coefficient,
+                                  RADIUS, OMEGA)
+    for k, kind in enumerate(("normal", "superfluid")):
+        final = continuum[-1][k]
+        axis.plot(t_all[1:], [c[k] for c in continuum], "k" + ("-." if k else ":"),
+                  label=f"two-fluid continuum, {kind}")
+        axis.errorbar([5.0], [final], yerr=[0.1 * final], color="k", capsize=4)
+        for name in GRIP:
+            h = [r for r in history(runs / name) if r[1] == kind]
+            axis.plot([r[0] for r in h], [r[2] for r in h], "os"[k], ms=3, mfc="none",
+                      label=f"{name}, {kind}")
+            report.append((f"{name}: {kind}'s slope at {h[-1][0]:.3g} s (continuum {final:.2f})",
+                           f"{h[-1][2]:.3f} ({h[-1][2] / final - 1:+.1%})"))
+    axis.set(xlabel="t (s)", ylabel="slope of |v| against r (rad/s)",
+             title="wall-grip options against the two-fluid continuum")
+    axis.legend(fontsize=6)
+    save_figure(fig, out / "two_fluid_cylinder_grip.png")
+
+
 def main():
     parser = figure_parser(__doc__, "out/two_fluid", REPO / "docs" / "figures", RUNS)
     args = parser.parse_args()
     names = chosen_runs(parser, args, RUNS)
+    main_runs = [n for n in RUNS if n not in GRIP]
     return figure_script_main(
         args, {n: command(n) for n in names},
-        [(list(RUNS), lambda runs, out, report: make_figures(runs, out, report, list(RUNS)))],
+        [(main_runs, lambda runs, out, report: make_figures(runs, out, report, main_runs)),
+         (list(GRIP), make_grip_figure)],
         "two_fluid_rotating_cylinder.md")
 
 
