@@ -115,8 +115,9 @@ void Model<D, Arith>::dissipate(double dt) {
     inputs_.temperature[wall[i]] = parameters_.helium.reference_temperature;
     for (int k = 0; k < D; ++k) {
       const double v = Arith::real(state_.wall.velocity.at(k, i), wall_scale);
-      const double v_s = 0.5 * (Arith::real(state_.wall.superflow_velocity.at(k, i), wall_scale) +
-                                Arith::real(state_.wall.superflow_velocity_copy.at(k, i), wall_scale));
+      const double v_s =
+          0.5 * (Arith::real(state_.wall.superflow_velocity.at(k, i), wall_scale) +
+                 Arith::real(state_.wall.superflow_velocity_copy.at(k, i), wall_scale));
       inputs_.normal_velocity[k][wall[i]] = v + ratio * (v - v_s);
     }
   }
@@ -128,8 +129,7 @@ void Model<D, Arith>::dissipate(double dt) {
                         DissipationTerm<D>{kernel_, slot_mass_, slot_kind_, inputs_.inverse_density,
                                            inputs_.temperature, inputs_.normal_velocity,
                                            parameters_.viscosity, parameters_.heat_conductivity,
-                                           eta * eta, dt, slot_side_,
-                                           parameters_.dummy_no_slip},
+                                           eta * eta, dt, slot_side_, parameters_.dummy_no_slip},
                         dissipation_sums_);
   const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
   FaultRecorder faults;

@@ -303,8 +303,8 @@ void Model<D, Arith>::fill_rate_inputs(int from) {
       const double inverse_density = in.inverse_density[slot];
       for (int k = 0; k < D; ++k) {
         const double v = Arith::real(state_.wall.velocity.at(k, i), w_scale);
-        const double v_s = value(one.wall_superflow_velocity, two.wall_superflow_velocity, k, i,
-                                 v_scale);
+        const double v_s =
+            value(one.wall_superflow_velocity, two.wall_superflow_velocity, k, i, v_scale);
         const double u = v - v_s;
         in.relative[k][slot] = u;
         in.entropy_flux[k][slot] = s0 * ratio * inverse_density * u;
@@ -321,9 +321,8 @@ template <int D, class Arith>
 void Model<D, Arith>::sum_increments(int from, double tau) {
   fill_rate_inputs(from);
   sum_pairs_over<Arith>(layout_, fluid_pairs_,
-                        RateTerm<D>{kernel_, slot_mass_, slot_is_fluid_, slot_interacts_,
-                                    inputs_, tau,
-                                    parameters_.gravity,
+                        RateTerm<D>{kernel_, slot_mass_, slot_is_fluid_, slot_interacts_, inputs_,
+                                    tau, parameters_.gravity,
                                     parameters_.helium.normal_fraction == 1.0 &&
                                         parameters_.helium.normal_fraction_slope == 0.0},
                         increment_sums_);
@@ -331,8 +330,8 @@ void Model<D, Arith>::sum_increments(int from, double tau) {
 
 template <int D, class Arith>
 void Model<D, Arith>::count_wall_work(double tau) {
-  const RateTerm<D> rate{kernel_, slot_mass_, slot_is_fluid_, slot_interacts_, inputs_, tau,
-                         parameters_.gravity, false};
+  const RateTerm<D> rate{kernel_, slot_mass_, slot_is_fluid_,      slot_interacts_,
+                         inputs_, tau,        parameters_.gravity, false};
   sum_pairs_over<Arith>(layout_, wall_pairs_, WallWorkTerm<D>{rate}, wall_work_sums_);
   // Summed in the particles' canonical order (slots_of_set), so the same for any thread count
   // and cell size; the mean of the copies receives half of each copy's increments.

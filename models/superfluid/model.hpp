@@ -131,7 +131,7 @@ private:
   std::vector<Raw> density_constant_;
   std::vector<std::uint8_t> is_fluid_;
   std::vector<std::uint8_t> interacts_; // fluid, and absorbing walls (pair_terms.hpp)
-  std::vector<std::uint8_t> kind_; // CarrierKind per carrier (dissipation_terms.hpp)
+  std::vector<std::uint8_t> kind_;      // CarrierKind per carrier (dissipation_terms.hpp)
   bool density_valid_ = false;
   // sum_b w(x_a - x_b) over a full square lattice of spacing dr (b = a included): a unit-mass
   // particle's kernel sum inside the liquid at the start.

@@ -167,9 +167,9 @@ struct WallWorkTerm {
     const std::array<double, RateTerm<D>::width>& d = a_is_fluid ? increment_a : increment_b;
     const RateInputs<D>& in = rate.in;
     const double sign = a_is_fluid ? 1.0 : -1.0; // x_fw = sign x_ab
-    const double pressure_part = -rate.mass[w] * rate.tau * rate.kernel.derivative_over_r(p.r) *
-                                 (in.pressure_over_density_squared[p.a] +
-                                  in.pressure_over_density_squared[p.b]);
+    const double pressure_part =
+        -rate.mass[w] * rate.tau * rate.kernel.derivative_over_r(p.r) *
+        (in.pressure_over_density_squared[p.a] + in.pressure_over_density_squared[p.b]);
     const double ratio = in.flux_factor[f] / in.inverse_density[f]; // chi_s / chi_n
     double work = in.temperature[f] * d[2 * D];
     for (int k = 0; k < D; ++k) {

@@ -3,9 +3,9 @@
 // random states whose two copies differ; the hash does not depend on the cell size; each copy's
 // momentum and total entropy are kept in integers; golden hashes.
 
+#include "case_text.hpp"
 #include "core/threads.hpp"
 #include "reversibility_expectations.hpp"
-#include "case_text.hpp"
 #include "simulation_fixture.hpp"
 #include "verify/reversibility.hpp"
 
@@ -107,8 +107,7 @@ TEST(Superfluid, HashDoesNotDependOnTheCellSize) {
 // ratio 4.0; the exchange 0.030 J/m against E = 0.0026 J/m).
 TEST(Superfluid, AbsorbingCoolerBudgetClosesAtSecondOrder) {
   auto largest_error = [](const char* courant, double& exchanged) {
-    auto simulation = make_simulation("cooler-small",
-                                      {{"discretisation.courant_number", courant}});
+    auto simulation = make_simulation("cooler-small", {{"discretisation.courant_number", courant}});
     const double e0 = simulation->energy().total();
     const std::int64_t steps = static_cast<std::int64_t>(std::lround(3e-3 / simulation->info().dt));
     double largest = 0.0;
@@ -257,8 +256,8 @@ TEST(Superfluid, NoSlipDummiesTakeMomentumAndKeepEnergy) {
     simulation->apply_substep(dissipate, 10.0 * simulation->info().dt);
     const revsph::StateSnapshot after = simulation->capture_state();
     const double energy_after = simulation->energy().total();
-    const double moved = std::abs(named_value(simulation->energy().terms, "kinetic") -
-                                  kinetic_before);
+    const double moved =
+        std::abs(named_value(simulation->energy().terms, "kinetic") - kinetic_before);
     const revsph::FieldSnapshot& entropy = *after.find("fluid", "entropy");
     const double rounding = static_cast<double>(entropy.count) *
                             after.find("fluid", "mass")->real(0, 0) * 2.0 *
