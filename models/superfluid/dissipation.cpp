@@ -103,22 +103,24 @@ void Model<D, Arith>::dissipate(double dt) {
   const bool walls = state_.wall.position.count() > 0;
   const double energy_before = walls ? energy().total() : 0.0;
   fill_rate_inputs(-1); // the mean of the copies: T, v_n, u = v - v_s, 1 / rho
-  // The walls: T0 as temperature (s = s0); v_n their own velocity (no counterflow), or with
-  // absorbing walls v_n = v + (chi_s / chi_n)(v - v_s) of the copies' mean v_s (eq. 22).
-  const std::span<const std::uint32_t> wall = layout_.slots_of_set(wall_set);
-  const auto& wall_scale = state_.wall.velocity.info().scale;
-  const double s0 = parameters_.helium.reference_entropy;
-  const double ratio = parameters_.absorbing_walls
-                           ? (1.0 - parameters_.helium.chi_n(s0)) / parameters_.helium.chi_n(s0)
-                           : 0.0;
-  for (std::size_t i = 0; i < wall.size(); ++i) {
-    inputs_.temperature[wall[i]] = parameters_.helium.reference_temperature;
-    for (int k = 0; k < D; ++k) {
-      const double v = Arith::real(state_.wall.velocity.at(k, i), wall_scale);
-      const double v_s =
-          0.5 * (Arith::real(state_.wall.superflow_velocity.at(k, i), wall_scale) +
-                 Arith::real(state_.wall.superflow_velocity_copy.at(k, i), wall_scale));
-      inputs_.normal_velocity[k][wall[i]] = v + ratio * (v - v_s);
+  // Conducting walls: their own velocity as v_n, T0 as temperature (s = s0, no counterflow).
+  // Absorbing walls got theirs, with their v_s, from fill_rate_inputs; no-slip dummies are at rest.
+  if (!parameters_.absorbing_walls) {
+    const std::span<const std::uint32_t> wall = layout_.slots_of_set(wall_set);
+    const auto& wall_scale = state_.wall.velocity.info().scale;
+    for (std::size_t i = 0; i < wall.size(); ++i) {
+      inputs_.temperature[wall[i]] = parameters_.helium.reference_temperature;
+      for (int k = 0; k < D; ++k) {
+        inputs_.normal_velocity[k][wall[i]] =
+            Arith::real(state_.wall.velocity.at(k, i), wall_scale);
+      }
+    }
+  }
+  if (parameters_.dummy_no_slip) {
+    for (const std::uint32_t slot : layout_.slots_of_set(dummy_set)) {
+      for (int k = 0; k < D; ++k) {
+        inputs_.normal_velocity[k][slot] = 0.0;
+      }
     }
   }
   fill_superleak_sides();

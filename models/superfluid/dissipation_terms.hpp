@@ -65,15 +65,11 @@ struct DissipationTerm {
     to_b.fill(0.0);
     const std::uint8_t kind_a = kind[p.a];
     const std::uint8_t kind_b = kind[p.b];
-    const bool both_fluid = kind_a == fluid && kind_b == fluid;
-    if (no_slip_dummies && (kind_a == dummy || kind_b == dummy)) {
-      if (kind_a == fluid || kind_b == fluid) {
-        glass_pair(p, kind_a == fluid ? to_a : to_b, kind_a == fluid ? 1.0 : -1.0);
-      }
-      return;
-    }
-    if (!both_fluid && !(kind_a == fluid && kind_b == wall) &&
-        !(kind_a == wall && kind_b == fluid)) {
+    // A fluid particle's partner: fluid, a wall, or a no-slip dummy (glass: v_n = 0, adiabatic).
+    const bool glass = no_slip_dummies && ((kind_a == fluid && kind_b == dummy) ||
+                                           (kind_a == dummy && kind_b == fluid));
+    const bool partners = kind_a == fluid ? kind_b != dummy : kind_b == fluid && kind_a == wall;
+    if (!glass && !partners) {
       return;
     }
     const std::uint32_t a = p.a;
@@ -91,6 +87,10 @@ struct DissipationTerm {
       to_b[k] = -mass[a] * c * p.x_ab[k];
     }
     const double dissipated = -mass[a] * mass[b] * c * vn_dot_x;
+    if (glass) { // no conduction; the glass receives nothing, so its fluid particle takes it all
+      (kind_a == fluid ? to_a : to_b)[D] = dissipated;
+      return;
+    }
     const double t_a = temperature[a];
     const double t_b = temperature[b];
     const bool cut = side[a] * side[b] < 0;
@@ -99,25 +99,6 @@ struct DissipationTerm {
                                   (t_a * t_a - t_b * t_b);
     to_a[D] = 0.5 * dissipated + heat;
     to_b[D] = 0.5 * dissipated - heat;
-  }
-
-  // A fluid particle f against a dummy d at rest: the viscosity only, its whole dissipated power
-  // to f; sign = +1 when f is a, -1 when f is b (x_fd = sign x_ab).
-  void glass_pair(const PairGeometry<D>& p, std::array<double, width>& to_fluid,
-                  double sign) const {
-    const std::uint32_t f = sign > 0.0 ? p.a : p.b;
-    const std::uint32_t d = sign > 0.0 ? p.b : p.a;
-    const double slope = kernel.derivative_over_r(p.r);
-    double vn_dot_x = 0.0;
-    for (int k = 0; k < D; ++k) {
-      vn_dot_x += normal_velocity[k][f] * sign * p.x_ab[k];
-    }
-    const double c = tau * 2.0 * (D + 2) * viscosity * slope * inverse_density[f] *
-                     inverse_density[d] * vn_dot_x / (p.r_squared + eta_squared);
-    for (int k = 0; k < D; ++k) {
-      to_fluid[k] = mass[d] * c * sign * p.x_ab[k];
-    }
-    to_fluid[D] = -mass[f] * mass[d] * c * vn_dot_x;
   }
 };
 

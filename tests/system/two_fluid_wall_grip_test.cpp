@@ -4,6 +4,7 @@
 // rotated initial positions to rounding, the energy budget closed with the work they do. (The undiluted viscosity's shear-wave test is beside the
 // interpenetrating one in two_fluid_dissipation_test.cpp.)
 
+#include "cylinder_budget.hpp"
 #include "reversibility_expectations.hpp"
 #include "simulation_fixture.hpp"
 #include "verify/reversibility.hpp"
@@ -162,28 +163,7 @@ TEST(TwoFluidWallGrip, RigidWallParticlesFollowTheRotation) {
 // and the budget closes as with frozen walls (two_fluid_dissipation_test.cpp): within 1 % of the
 // work put in, its error second order in dt.
 TEST(TwoFluidWallGrip, EnergyBudgetClosesWithRigidWalls) {
-  auto budget_error = [](const char* viscous_number, std::int64_t steps) {
-    auto simulation = make_simulation("rotating-cylinder-small",
-                                      {{"discretisation.viscous_number", viscous_number},
-                                       {"particles[1].wall_motion", "\"rigid\""}});
-    const double initial = simulation->energy().total();
-    double worst = 0.0, wall_work = 0.0;
-    for (std::int64_t s = 0; s < steps; s += steps / 10) {
-      simulation->advance(steps / 10);
-      const revsph::EnergyBudget budget = simulation->energy();
-      wall_work = -revsph::testing::named_value(budget.terms, "wall_work");
-      worst = std::max(worst, std::abs(budget.total() - initial));
-    }
-    std::printf("viscous number %s: %lld steps, wall work %.4e, worst budget error %.4e\n",
-                viscous_number, static_cast<long long>(steps), wall_work, worst);
-    EXPECT_GT(wall_work, 0.0) << "the turning wall drives the fluid";
-    return std::pair{worst, wall_work};
-  };
-  const auto [coarse, work] = budget_error("0.125", 200);
-  const auto [fine, fine_work] = budget_error("0.0625", 400);
-  EXPECT_LT(coarse, 0.01 * work) << "the budget misses more than 1 % of the work put in";
-  EXPECT_GT(coarse / fine, 3.0);
-  EXPECT_LT(coarse / fine, 5.5);
+  revsph::testing::expect_cylinder_budget_closes({{"particles[1].wall_motion", "\"rigid\""}});
 }
 
 } // namespace
