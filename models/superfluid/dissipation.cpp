@@ -131,12 +131,18 @@ void Model<D, Arith>::dissipate(double dt) {
                         DissipationTerm<D>{kernel_, slot_mass_, slot_kind_, inputs_.inverse_density,
                                            inputs_.temperature, inputs_.normal_velocity,
                                            parameters_.viscosity, parameters_.heat_conductivity,
-                                           eta * eta, dt, slot_side_, parameters_.dummy_no_slip},
+                                           eta * eta, dt, slot_side_, parameters_.dummy_no_slip,
+                                           parameters_.absorbing_walls},
                         dissipation_sums_);
   const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
   FaultRecorder faults;
   add_pair_totals<Arith>(state_.fluid.velocity, dissipation_sums_, 0, fluid, faults);
   add_pair_totals<Arith>(state_.fluid.velocity_copy, dissipation_sums_, 0, fluid, faults);
+  if (parameters_.absorbing_walls) { // the cooler's v_s, dragged by the viscosity (terms' header)
+    const std::span<const std::uint32_t> wall = layout_.slots_of_set(wall_set);
+    add_pair_totals<Arith>(state_.wall.superflow_velocity, dissipation_sums_, 0, wall, faults);
+    add_pair_totals<Arith>(state_.wall.superflow_velocity_copy, dissipation_sums_, 0, wall, faults);
+  }
   // The heat: what the pairs gave, less the kinetic energy the increments themselves carry,
   // m |dv|^2 / (2 chi_n) (e is quadratic in v with curvature 1 / chi_n at fixed v_s, s), so that
   // the heats add up to the mechanical energy removed.

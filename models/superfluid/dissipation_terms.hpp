@@ -22,7 +22,11 @@
 // fountain code has it): the whole dissipated power then heats the fluid particle, since
 // de/dv = v_n at fixed v_s, s makes its kinetic loss m_a v_n,a . dv_a exactly that power.
 // Wall particles (no-slip, cooler) act on the fluid with their own velocity as v_n and T0 as
-// temperature, and receive nothing: what they give or take is the model's wall_exchange energy.
+// temperature: what they give or take is the model's wall_exchange energy. Conducting walls
+// receive nothing. Absorbing walls (the authors' cooler, v held, v_s free, v_n = -(chi_s /
+// chi_n) v_s) receive the viscous increment with its sign turned, for their v_s: the holding
+// force that keeps v takes it out of v_s too, as in the authors' fountain_2d.jl (the cooler's
+// v_s gains dt (a_s - a), a holding the viscous force): a drag on the wall's v_s.
 
 #include "core/geometry.hpp"
 #include "core/kernel_wendland.hpp"
@@ -53,11 +57,14 @@ struct DissipationTerm {
   // no heat crosses between the two sides (sec. III.C).
   std::span<const std::int8_t> side;
   bool no_slip_dummies = false;
+  bool absorbing_walls = false;
   static constexpr std::uint8_t fluid = static_cast<std::uint8_t>(CarrierKind::fluid);
   static constexpr std::uint8_t wall = static_cast<std::uint8_t>(CarrierKind::wall);
   static constexpr std::uint8_t dummy = static_cast<std::uint8_t>(CarrierKind::dummy);
 
-  bool receives(std::uint32_t s) const { return kind[s] == fluid; }
+  bool receives(std::uint32_t s) const {
+    return kind[s] == fluid || (absorbing_walls && kind[s] == wall);
+  }
 
   void pair(const PairGeometry<D>& p, std::array<double, width>& to_a,
             std::array<double, width>& to_b) const {
@@ -99,6 +106,13 @@ struct DissipationTerm {
                                   (t_a * t_a - t_b * t_b);
     to_a[D] = 0.5 * dissipated + heat;
     to_b[D] = 0.5 * dissipated - heat;
+    if (absorbing_walls && kind_a != kind_b) { // the wall's share goes to its v_s, turned
+      std::array<double, width>& to_wall = kind_a == wall ? to_a : to_b;
+      for (int k = 0; k < D; ++k) {
+        to_wall[k] = -to_wall[k];
+      }
+      to_wall[D] = 0.0;
+    }
   }
 };
 
