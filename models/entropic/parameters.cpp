@@ -118,6 +118,38 @@ double Parameters<D>::initial_temperature() const {
                     gas_law);
 }
 
+// Hydrostatic equilibrium dp/dz = -rho g with p + B = R rho T (R = (gamma-1) c_V, both laws)
+// and the linear T = T0 + G z: d ln(p + B) / dz = -g / (R T), so
+// p + B = (p_c + B) exp(-(g / R) I(z)), I = ln(T / T0) / G (z / T0 for G = 0), rho = (p + B) / (R T).
+template <int D>
+std::optional<std::pair<double, double>> Parameters<D>::hydrostatic_state(double z) const {
+  const double t0 = initial_temperature();
+  const double g_t = initial_temperature_gradient[static_cast<std::size_t>(D - 1)];
+  const double t = t0 + g_t * z;
+  if (!(t > 0.0)) {
+    return std::nullopt;
+  }
+  return std::visit(
+      [&](const auto& law) -> std::optional<std::pair<double, double>> {
+        double stiffening = 0.0;
+        if constexpr (std::is_same_v<std::decay_t<decltype(law)>, StiffenedGas>) {
+          stiffening = stiffening_pressure(law);
+        }
+        const double r = (law.gamma - 1.0) * law.heat_capacity;
+        const double integral = g_t != 0.0 ? std::log(t / t0) / g_t : z / t0;
+        const double shifted =
+            (initial_pressure + stiffening) * std::exp(-gravity / r * integral); // p + B
+        const double density = shifted / (r * t);
+        const std::optional<double> sigma =
+            specific_entropy_for_pressure(gas_law, density, shifted - stiffening);
+        if (!sigma || !(density > 0.0) || !std::isfinite(density)) {
+          return std::nullopt;
+        }
+        return std::pair{density, *sigma};
+      },
+      gas_law);
+}
+
 template <int D>
 double Parameters<D>::initial_sound_speed() const {
   const double sigma = initial_specific_entropy();
@@ -239,6 +271,17 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.initial_temperature_perturbation = case_file.number_or("initial.temperature_perturbation", 0.0);
   if (!std::isfinite(p.initial_temperature_perturbation)) {
     case_file.fail("initial.temperature_perturbation", "must be finite");
+  }
+
+  p.initial_hydrostatic = case_file.boolean_or("initial.hydrostatic", false);
+  if (p.initial_hydrostatic) {
+    for (int k = 0; k + 1 < D; ++k) {
+      if (p.initial_temperature_gradient[static_cast<std::size_t>(k)] != 0.0) {
+        case_file.fail("initial.temperature_gradient",
+                       "with initial.hydrostatic = true only its last (vertical) component may be "
+                       "non-zero: a horizontal gradient has no hydrostatic state");
+      }
+    }
   }
 
   const ParticleDiscretisation discretisation =
@@ -373,6 +416,12 @@ const KeyTable& case_keys() {
            "dT/dx of the initial state: T = T0 + gradient . (x - centre of the gas) at the "
            "initial density, T0 the temperature of (density, pressure); sets each gas "
            "particle's entropy"});
+    t.add({"initial.hydrostatic", T::boolean, "-", "false",
+           "start in hydrostatic equilibrium under physics.gravity, as the authors' RaBe.jl "
+           "does: initial.density and initial.pressure hold at the gas's centre height, the "
+           "temperature follows initial.temperature_gradient (vertical only), and gas, dummy and "
+           "thermal particles get the density and entropy of their own height (masses rho(y) "
+           "dr^D); false: uniform density and pressure"});
     t.add({"initial.temperature_perturbation", T::number, "K", "0",
            "amplitude A of one convection roll added to the initial temperature, A cos(pi xi_1) "
            "sin(pi xi_D), xi the position scaled to [0, 1] across the gas (first and last axis): "

@@ -12,6 +12,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <utility>
 #include <variant>
 
 namespace revsph::entropic {
@@ -73,6 +75,9 @@ struct Parameters {
   // A (K): one convection roll's worth of temperature on top, A cos(pi xi_1) sin(pi xi_D) with
   // xi the position scaled to [0, 1] across the gas (a seed for Rayleigh-Benard convection).
   double initial_temperature_perturbation = 0.0;
+  // The gas (and its dummy and thermal particles) in hydrostatic equilibrium under gravity,
+  // density and pressure holding at the gas's centre height (the authors' RaBe.jl start).
+  bool initial_hydrostatic = false;
   // [discretisation]
   double dr = 0.0;               // particle spacing (m)
   double support_radius = 0.0;   // kernel support radius h (m; the paper's h, §3.4)
@@ -98,6 +103,9 @@ struct Parameters {
   double initial_specific_entropy() const;
   // T0 = T(initial density, initial specific entropy) (K).
   double initial_temperature() const;
+  // The hydrostatic start (initial.hydrostatic) at height z above the gas's centre: density and
+  // specific entropy, or nothing where no state of positive temperature and p + B exists.
+  std::optional<std::pair<double, double>> hydrostatic_state(double z) const;
 };
 
 template <int D>

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <sstream>
 #include <stdexcept>
 
@@ -75,6 +76,66 @@ void apply_initial_temperature(const CaseFile& case_file, const Parameters<D>& p
   }
 }
 
+// initial.hydrostatic: every particle (gas, dummy, thermal) takes the density and specific
+// entropy of the hydrostatic start at its own height (Parameters::hydrostatic_state), its mass
+// scaled from rho_c to rho(y); the gas's seed roll (initial.temperature_perturbation) on top, at
+// the particle's density.
+template <int D>
+void apply_hydrostatic_start(const CaseFile& case_file, const Parameters<D>& parameters,
+                             const std::vector<Vec<D>>& gas_positions,
+                             std::span<const std::vector<Vec<D>>* const> positions,
+                             std::span<std::vector<double>* const> masses,
+                             std::span<std::vector<double>* const> entropies) {
+  double lowest = gas_positions.front()[D - 1];
+  double highest = lowest;
+  Vec<D> low = gas_positions.front();
+  Vec<D> high = low;
+  for (const Vec<D>& x : gas_positions) {
+    for (int k = 0; k < D; ++k) {
+      low[k] = std::min(low[k], x[k]);
+      high[k] = std::max(high[k], x[k]);
+    }
+  }
+  lowest = low[D - 1];
+  highest = high[D - 1];
+  const double centre = 0.5 * (lowest + highest);
+  const double t0 = parameters.initial_temperature();
+  const double gradient = parameters.initial_temperature_gradient[static_cast<std::size_t>(D - 1)];
+  const double perturbation = parameters.initial_temperature_perturbation;
+  for (std::size_t set = 0; set < positions.size(); ++set) {
+    const bool gas = set == 0;
+    for (std::size_t i = 0; i < positions[set]->size(); ++i) {
+      const Vec<D>& x = (*positions[set])[i];
+      const double z = x[D - 1] - centre;
+      const auto state = parameters.hydrostatic_state(z);
+      if (!state) {
+        case_file.fail("initial.hydrostatic",
+                       "no hydrostatic state of positive temperature and pressure + B at height " +
+                           format_scientific(x[D - 1], 3) +
+                           " m (raise initial.pressure or lower physics.gravity)");
+      }
+      double sigma = state->second;
+      if (gas && perturbation != 0.0) {
+        const auto scaled = [&](int k) {
+          const double width = high[k] - low[k];
+          return width > 0.0 ? (x[k] - low[k]) / width : 0.5;
+        };
+        const double t = t0 + gradient * z;
+        const double seeded = t + perturbation * std::cos(std::numbers::pi * scaled(0)) *
+                                      std::sin(std::numbers::pi * scaled(D - 1));
+        if (!(seeded > 0.0)) {
+          case_file.fail("initial.temperature_perturbation",
+                         "gives a temperature <= 0 K at a gas particle");
+        }
+        sigma += parameters.heat_capacity() * std::log(seeded / t);
+      }
+      double& m = (*masses[set])[i];
+      m *= state->first / parameters.initial_density;
+      (*entropies[set])[i] = m * sigma;
+    }
+  }
+}
+
 std::string scientific(double value) {
   return format_scientific(value, 6);
 }
@@ -133,7 +194,14 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   if (gas_positions.empty()) {
     case_file.fail("particles", "the case has no gas particles");
   }
-  apply_initial_temperature<D>(case_file, parameters, gas_positions, gas_masses, gas_entropies);
+  if (parameters.initial_hydrostatic) {
+    const std::vector<Vec<D>>* positions[] = {&gas_positions, &dummy_positions, &thermal_positions};
+    std::vector<double>* masses[] = {&gas_masses, &dummy_masses, &thermal_masses};
+    std::vector<double>* entropies[] = {&gas_entropies, &dummy_entropies, &thermal_entropies};
+    apply_hydrostatic_start<D>(case_file, parameters, gas_positions, positions, masses, entropies);
+  } else {
+    apply_initial_temperature<D>(case_file, parameters, gas_positions, gas_masses, gas_entropies);
+  }
   double largest_mass = *std::max_element(gas_masses.begin(), gas_masses.end());
   for (const double m : dummy_masses) {
     largest_mass = std::max(largest_mass, m);

@@ -52,6 +52,7 @@ std::vector<Defect> defects() {
        "expected \"free\" or \"no_slip\", got \"sticky\""},
       {"gradient_below_absolute_zero", "initial.temperature_gradient=[1000.0, 0.0]",
        "initial.temperature_gradient", "gives a temperature <= 0 K"},
+      {"hydrostatic_not_a_boolean", "initial.hydrostatic=1", "initial.hydrostatic", ""},
       {"perturbation_below_absolute_zero", "initial.temperature_perturbation=-1000",
        "initial.temperature_perturbation", "gives a temperature <= 0 K"},
       {"unknown_buoyancy", "physics.buoyancy=boussinesque", "physics.buoyancy",
