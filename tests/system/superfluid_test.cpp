@@ -97,8 +97,9 @@ TEST(Superfluid, HashDoesNotDependOnTheCellSize) {
 // The absorbing cooler's budget: the energy its pair terms give the fluid (wall_exchange,
 // counted to first order per sub-step) closes the budget at the scheme's own second order:
 // the largest |E(t) - E(0)| over 3 ms falls about 4 times when dt halves, while the walls move
-// more energy than the whole droplet holds (measured: 2.8e-5 and 7.0e-6 of E's largest term,
-// ratio 4.0; the exchange 0.030 J/m against E = 0.0026 J/m).
+// more energy than the whole droplet holds (measured with the cooler's v_s driven by the
+// thermomechanical force: 4.9e-7 and 1.2e-7 J/m, ratio 4.0; the exchange 0.034 J/m against
+// E = 0.0026 J/m).
 TEST(Superfluid, AbsorbingCoolerBudgetClosesAtSecondOrder) {
   auto largest_error = [](const char* courant, double& exchanged) {
     auto simulation = make_simulation("cooler-small", {{"discretisation.courant_number", courant}});
