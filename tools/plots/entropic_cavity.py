@@ -165,9 +165,40 @@ REFERENCE.update({f"cavity-ra1e4-s{s}-hydro": REFERENCE["cavity-ra1e4"] for s in
 # The Rayleigh-Benard case (paper 4 Fig. 12) has no reference number: its Nu is reported only.
 
 
+def segments(run):
+    """The run's directories in order: RUN, RUN-2, RUN-3, ... (continued with revsph run --from)."""
+    found = [run]
+    k = 2
+    while (run.parent / f"{run.name}-{k}").is_dir():
+        found.append(run.parent / f"{run.name}-{k}")
+        k += 1
+    return found
+
+
+CUMULATIVE = ("heat_out_of_hot_walls", "heat_into_cold_walls")
+
+
+def stitched_diagnostics(run):
+    """diagnostics.csv over the run's segments: a continued run counts its walls' heat from
+    zero again, so each segment's cumulative heats are offset by where the last one ended."""
+    joined = None
+    for segment in segments(run):
+        part = read_csv(segment / "diagnostics.csv")
+        if joined is None:
+            joined = part
+            continue
+        keep = part["time"] > joined["time"][-1]
+        for name in joined:
+            values = part[name]
+            if name in CUMULATIVE:
+                values = values + joined[name][-1] - part[name][0]
+            joined[name] = np.concatenate([joined[name], values[keep]])
+    return joined
+
+
 def nusselt_series(run):
     case = case_of(run)
-    diagnostics = read_csv(run / "diagnostics.csv")
+    diagnostics = stitched_diagnostics(run)
     thermal = [block for block in case["particles"] if block["kind"] == "thermal"]
     held = [block["temperature"] for block in thermal]
     gas = next(block for block in case["particles"] if block["kind"] == "gas")
@@ -217,7 +248,7 @@ def make_figures(runs, out, report, names):
                 (f"{name}: reference (de Vahl Davis 1983; conduction: 1)", f"{REFERENCE[name]}"),
                 (f"{name}: relative difference", f"{mean / REFERENCE[name] - 1:+.2%}"),
             ]
-        with h5py.File(snapshots(run)[-1]) as f:
+        with h5py.File(snapshots(segments(run)[-1])[-1]) as f:
             gas = f["particles/gas"]
             x, v, temperature = gas["position"][:], gas["velocity"][:], gas["temperature"][:]
             time = float(f.attrs["time"])
