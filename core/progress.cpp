@@ -58,13 +58,14 @@ void ProgressReporter::print(std::int64_t steps_done, const std::string& note, b
   const double fraction =
       total_steps_ > 0 ? static_cast<double>(steps_done) / static_cast<double>(total_steps_) : 1.0;
   char line[512];
-  std::snprintf(
-      line, sizeof line, "%s %lld/%lld steps (%5.1f%%)  %.3g steps/s  t = %.5g s  %s %s%s%s",
-      label_.c_str(), static_cast<long long>(steps_done), static_cast<long long>(total_steps_),
-      100.0 * fraction, rate, static_cast<double>(steps_done) * dt_, final ? "elapsed" : "ETA",
-      final ? format_duration(elapsed).c_str()
-            : format_duration(rate > 0 ? remaining / rate : NAN).c_str(),
-      note.empty() ? "" : "  ", note.c_str());
+  std::snprintf(line, sizeof line,
+                "%s %lld/%lld steps (%5.1f%%)  %.3g steps/s  t = %.5g s  %s %s%s%s", label_.c_str(),
+                static_cast<long long>(steps_done), static_cast<long long>(total_steps_),
+                100.0 * fraction, rate, time_at_step_zero_ + static_cast<double>(steps_done) * dt_,
+                final ? "elapsed" : "ETA",
+                final ? format_duration(elapsed).c_str()
+                      : format_duration(rate > 0 ? remaining / rate : NAN).c_str(),
+                note.empty() ? "" : "  ", note.c_str());
   if (live_) {
     const int width = 24;
     const int filled = static_cast<int>(std::lround(fraction * width));

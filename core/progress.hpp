@@ -19,6 +19,9 @@ public:
   void finish(std::int64_t steps_done, const std::string& note = {});
 
   bool live() const { return live_; }
+  // The simulated time at step 0 as this run counts it (not 0 in a run continued at another
+  // dt than its snapshot's: Simulation::time_at).
+  void set_time_at_step_zero(double time) { time_at_step_zero_ = time; }
 
 private:
   void print(std::int64_t steps_done, const std::string& note, bool final);
@@ -32,6 +35,7 @@ private:
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_print_;
   std::int64_t first_step_ = -1;
+  double time_at_step_zero_ = 0.0;
 };
 
 std::string format_duration(double seconds);

@@ -140,12 +140,34 @@ public:
   virtual void apply_substep(std::size_t index, double dt) = 0;
 
   std::int64_t steps_taken() const { return steps_taken_; }
-  double time() const { return static_cast<double>(steps_taken_) * info().dt; }
-  // For a restart: the state came from a snapshot taken after `steps` steps.
-  void set_steps_taken(std::int64_t steps) { steps_taken_ = steps; }
+  double time() const { return time_at(steps_taken_); }
+  // The simulated time after `step` steps: step * dt, or, in a run continued from a snapshot
+  // written at another dt (`revsph run --from S --set discretisation.courant_number=...`), the
+  // snapshot's time plus the steps since at this dt. Continuing at the same dt keeps step * dt,
+  // so a continued run takes the same times, bit for bit, as one that never stopped.
+  double time_at(std::int64_t step) const {
+    const double dt = info().dt;
+    if (clock_origin_step_ < 0) {
+      return static_cast<double>(step) * dt;
+    }
+    return clock_origin_time_ + static_cast<double>(step - clock_origin_step_) * dt;
+  }
+  // For a restart: the state came from a snapshot taken after `steps` steps, at time `time`.
+  void continue_from(std::int64_t steps, double time) {
+    steps_taken_ = steps;
+    clock_origin_step_ = -1;
+    if (time != static_cast<double>(steps) * info().dt) {
+      clock_origin_step_ = steps;
+      clock_origin_time_ = time;
+    }
+  }
 
 protected:
   std::int64_t steps_taken_ = 0;
+
+private:
+  std::int64_t clock_origin_step_ = -1; // -1: time = steps * dt
+  double clock_origin_time_ = 0.0;
 };
 
 template <Model M>
@@ -166,7 +188,7 @@ public:
     for (std::int64_t s = 0; s < steps; ++s) {
       try {
         if constexpr (HasClock<M>) {
-          model_.set_time(static_cast<double>(steps_taken_) * dt);
+          model_.set_time(time_at(steps_taken_));
         }
         apply_step<M>(model_, M::palindrome(), dt);
         for (const StepHook<M>& hook : step_hooks_of<M>()) {

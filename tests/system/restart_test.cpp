@@ -197,6 +197,31 @@ TEST(Restart, OverridesOfTheOriginalRunAreKept) {
   EXPECT_EQ(revsph::testing::hash_of(*simulation), restarted.metadata.state_hash);
 }
 
+// Continued at another time step (say half the snapshot's, to see whether a fault depends on
+// it), the run's clock goes on from the snapshot's time, not from steps * the new dt: --t-end
+// means the simulated time, and the models that read the clock (a heater's ramp) see it.
+TEST(Restart, ContinuedAtAnotherTimeStepKeepsTheSnapshotsTime) {
+  TempDirectory directory("revsph-restart-test");
+  RunOptions first;
+  first.case_options.case_path = "dambreak-small";
+  first.case_options.overrides = {"discretisation.courant_number=0.1"}; // dt = 0.5e-4 s
+  first.out_dir = (directory.path() / "first").string();
+  first.steps = 200; // t = 0.01 s
+  ASSERT_EQ(run(first), 0);
+
+  RunOptions second;
+  second.case_options.from_snapshot =
+      (directory.path() / "first" / "snapshots" / snapshot_name(200)).string();
+  second.case_options.overrides = {"discretisation.courant_number=0.05"}; // dt = 0.25e-4 s
+  second.out_dir = (directory.path() / "second").string();
+  second.t_end = 0.015;
+  ASSERT_EQ(run(second), 0);
+  const fs::path end = directory.path() / "second" / "snapshots" / snapshot_name(400);
+  ASSERT_TRUE(fs::exists(end)) << "0.005 s more at dt = 0.25e-4 s is 200 steps: step 400";
+  const auto restarted = revsph::read_checked_snapshot(end);
+  EXPECT_NEAR(restarted.metadata.time, 0.015, 1e-12);
+}
+
 TEST(Restart, VerifyCanStartFromASnapshot) {
   TempDirectory directory("revsph-restart-test");
   RunOptions first;

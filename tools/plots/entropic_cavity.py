@@ -65,7 +65,7 @@ RUNS = {
 }
 
 
-def wider_kernel(case, dr, support, thickness=1, hydrostatic_pressure=None):
+def wider_kernel(case, dr, support, thickness=1, hydrostatic_pressure=None, refine=False):
     """The side-heated cavity with the kernel's support at `support` dr (issue 30: paper 4's
     cases use 3 dr, the authors' RaBe.jl 6.5 dr): the walls ceil(thickness * support) layers
     thick (1: no gas particle sees past them; 2: no wall particle that a gas particle sees has a
@@ -73,13 +73,16 @@ def wider_kernel(case, dr, support, thickness=1, hydrostatic_pressure=None):
     in the stiffened gas), and dt = 0.65 dr / c0 whatever the support (the authors' dt = 0.1 h / c
     with h = 6.5 dr; the committed cases have 0.75 dr / c0). hydrostatic_pressure: the
     authors' start and background pressure instead (as hydrostatic_rayleigh_benard), the
-    pressure at mid-height and the stiffened gas's reference pressure."""
+    pressure at mid-height and the stiffened gas's reference pressure. refine: dr is not the
+    case's own spacing; set it."""
     t = np.ceil(thickness * support - 1e-9) * dr
     lo, hi = -t, 1.0 + t
     extra = [] if hydrostatic_pressure is None else [
         "--set", "initial.hydrostatic=true",
         "--set", f"initial.pressure={hydrostatic_pressure!r}",
         "--set", f"physics.reference_pressure={hydrostatic_pressure!r}"]
+    if refine:
+        extra += ["--set", f"discretisation.dr={dr!r}"]
     if lo < -0.2:
         extra += ["--set", f"domain.min=[{lo - 0.02!r}, {lo - 0.02!r}]",
                   "--set", f"domain.max=[{hi + 0.02!r}, {hi + 0.02!r}]"]
@@ -101,6 +104,10 @@ for _support in (3.0, 4.5):
 # lattice's kernel-sum excess times c0^2 (4.5 dr: 0.074 %, 1.2; 6.5 dr: 0.012 %, 0.19).
 RUNS["cavity-ra1e4-s4.5-hydro"] = wider_kernel("cavity-ra1e4.toml", 0.025, 4.5, 2, 4.8)
 RUNS["cavity-ra1e4-s6.5-hydro"] = wider_kernel("cavity-ra1e4.toml", 0.025, 6.5, 2, 5.8)
+# The same at Ra 1e5 (80 x 80), and Ra 1e4 at 80 x 80: does the gap at Ra 1e4 close with dr?
+RUNS["cavity-ra1e5-s4.5-hydro"] = wider_kernel("cavity-ra1e5.toml", 0.0125, 4.5, 2, 4.8)
+RUNS["cavity-ra1e4-s4.5-hydro-n80"] = wider_kernel("cavity-ra1e4.toml", 0.0125, 4.5, 2, 4.8,
+                                                     refine=True)
 
 
 def wider_kernel_rayleigh_benard(support, conduction_start=False):
@@ -162,6 +169,8 @@ REFERENCE.update({f"cavity-ra1e{k}-s{s}": REFERENCE[f"cavity-ra1e{k}"]
                   for k in (4, 5) for s in (4.5, 6.5)})
 REFERENCE.update({f"cavity-ra1e4-s{s}-thick": REFERENCE["cavity-ra1e4"] for s in (3.0, 4.5)})
 REFERENCE.update({f"cavity-ra1e4-s{s}-hydro": REFERENCE["cavity-ra1e4"] for s in (4.5, 6.5)})
+REFERENCE["cavity-ra1e5-s4.5-hydro"] = REFERENCE["cavity-ra1e5"]
+REFERENCE["cavity-ra1e4-s4.5-hydro-n80"] = REFERENCE["cavity-ra1e4"]
 # The Rayleigh-Benard case (paper 4 Fig. 12) has no reference number: its Nu is reported only.
 
 

@@ -66,6 +66,7 @@ int run_command(const RunOptions& options) {
   DiagnosticsLog diagnostics((output.directory() / "diagnostics.csv").string());
   ProgressReporter progress(stdout, "run", simulation.steps_taken() + steps, simulation.info().dt,
                             loaded.settings.progress_interval);
+  progress.set_time_at_step_zero(simulation.time_at(0));
 
   RunSummary summary;
   summary.case_source = loaded.case_file.source_name();

@@ -65,7 +65,7 @@ LoadedCase load_from_snapshot(const CaseOptions& options) {
     throw SnapshotError(options.from_snapshot +
                         ": does not fit the model its case describes: " + mismatch.what());
   }
-  loaded.simulation->set_steps_taken(metadata.step);
+  loaded.simulation->continue_from(metadata.step, metadata.time);
   if (metadata.energy_accounts.empty() && !loaded.simulation->energy_accounts().empty() &&
       snapshot.metadata.reference_energy) {
     // Written before snapshots kept the energy exchanged with the outside: the budget can only
@@ -135,6 +135,11 @@ std::int64_t resolve_steps(const LoadedCase& loaded, std::optional<std::int64_t>
         "shorter than one time step (%.6g s < dt = %.6g s): give a later end or --steps N", *t_end,
         dt);
     throw CaseError(source, "--t-end", reason);
+  }
+  if (end.t_end) {
+    // Continued at another dt than its snapshot's, the run's clock is offset from steps * dt
+    // (Simulation::time_at); 0 otherwise, exactly.
+    *end.t_end -= simulation.time() - static_cast<double>(simulation.steps_taken()) * dt;
   }
   const std::int64_t remaining = end.steps_for(dt) - simulation.steps_taken();
   if (remaining < 0) {
