@@ -4,7 +4,6 @@
 #include "core/snapshot_file.hpp"
 #include "fixedpoint/conversion.hpp"
 #include "tools/revsph/commands.hpp"
-#include "tools/revsph/openmp_waiting.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -90,7 +89,6 @@ void record_given(const CaseOptionHandles& handles, CaseOptions& options) {
 } // namespace
 
 int main(int argc, char** argv) {
-  revsph::cli::use_short_openmp_spinning(argv);
   CLI::App app{"revsph: smoothed particle hydrodynamics whose simulations are bitwise reversible.\n"
                "Run forward, reverse the velocities, run forward again: every bit of the initial\n"
                "state comes back."};
