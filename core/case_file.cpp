@@ -43,12 +43,6 @@ double number_value(const toml::node& node) {
   return node.as_floating_point()->get();
 }
 
-std::string format_number(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
 std::string table_names(const std::vector<const KeyTable*>& tables) {
   std::string names;
   for (const KeyTable* table : tables) {
@@ -66,24 +60,6 @@ void check_default(const KeyDecl& decl, std::string_view key, bool same, bool li
                            "from the declared default " +
                            decl.default_value);
   }
-}
-
-std::optional<double> literal_number(const std::string& text) {
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
-    return std::nullopt;
-  }
-  return value;
-}
-
-std::optional<std::int64_t> literal_integer(const std::string& text) {
-  std::int64_t value = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
-    return std::nullopt;
-  }
-  return value;
 }
 
 struct UnreadKey {
@@ -117,6 +93,12 @@ void collect_unread(const toml::node& node, const std::string& path,
 }
 
 } // namespace
+
+std::string format_number(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
 
 CaseError::CaseError(std::string file, std::string key, std::string reason)
     : std::runtime_error(file + ": " + (key.empty() ? std::string() : key + ": ") + reason),

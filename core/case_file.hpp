@@ -28,6 +28,9 @@ class node;
 
 namespace revsph {
 
+// A number as the error messages write it ("0.001", "1e+20").
+std::string format_number(double value);
+
 class KeyTable;
 struct KeyDecl;
 enum class KeyType;

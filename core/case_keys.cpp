@@ -1,6 +1,7 @@
 #include "core/case_keys.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <numeric>
 #include <stdexcept>
 
@@ -136,6 +137,24 @@ std::string nearest_declared_key(const std::vector<const KeyTable*>& tables, std
     }
   }
   return nearest.empty() ? nearest : with_indices_of(key, nearest);
+}
+
+std::optional<double> literal_number(const std::string& text) {
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
+    return std::nullopt;
+  }
+  return value;
+}
+
+std::optional<std::int64_t> literal_integer(const std::string& text) {
+  std::int64_t value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
+    return std::nullopt;
+  }
+  return value;
 }
 
 } // namespace revsph

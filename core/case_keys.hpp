@@ -9,6 +9,8 @@
 // Keys are dotted paths; an element of an array of tables is written with empty brackets:
 // "particles[].min" declares particles[0].min, particles[1].min, …
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -83,5 +85,10 @@ const KeyTable& common_case_keys();
 // blocks with the particle kinds the model has.
 std::vector<KeyDecl> domain_case_keys();
 std::vector<KeyDecl> particle_block_case_keys(const std::vector<std::string>& kinds);
+
+// A declared default that is a TOML number or integer ("0.1", "20"), or nullopt for a description
+// ("dr") or "required".
+std::optional<double> literal_number(const std::string& text);
+std::optional<std::int64_t> literal_integer(const std::string& text);
 
 } // namespace revsph

@@ -1,0 +1,52 @@
+#include "core/case_key.hpp"
+
+namespace revsph {
+
+std::string expected_one_of(const std::vector<std::string>& names, const std::string& got) {
+  std::string list;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) {
+      list += i + 1 == names.size() ? " or " : ", ";
+    }
+    list += "\"" + names[i] + "\"";
+  }
+  return "expected " + list + ", got \"" + got + "\"";
+}
+
+std::string positive_or_why(const double& value) {
+  return value > 0.0 ? std::string() : "must be > 0 (got " + format_number(value) + ")";
+}
+
+const KeyDecl& KeySet::add(KeyDecl decl) {
+  table_.add(std::move(decl));
+  return table_.keys().back();
+}
+
+Key<double> KeySet::number(std::string path, std::string unit, std::string default_value,
+                           std::string meaning, KeyCheck<double> check) {
+  return {add({std::move(path), KeyType::number, std::move(unit), std::move(default_value),
+               std::move(meaning)}),
+          std::move(check)};
+}
+
+Key<std::int64_t> KeySet::integer(std::string path, std::string default_value, std::string meaning,
+                                  KeyCheck<std::int64_t> check) {
+  return {
+      add({std::move(path), KeyType::integer, "-", std::move(default_value), std::move(meaning)}),
+      std::move(check)};
+}
+
+Key<bool> KeySet::boolean(std::string path, std::string default_value, std::string meaning) {
+  return {
+      add({std::move(path), KeyType::boolean, "-", std::move(default_value), std::move(meaning)}),
+      {}};
+}
+
+Key<std::string> KeySet::text(std::string path, std::string default_value, std::string meaning,
+                              KeyCheck<std::string> check) {
+  return {
+      add({std::move(path), KeyType::string, "-", std::move(default_value), std::move(meaning)}),
+      std::move(check)};
+}
+
+} // namespace revsph
