@@ -54,6 +54,11 @@ public:
   T read(const CaseFile& case_file) const;
   // The file's value, else `computed`: for a default the declaration describes ("dr").
   T read_or(const CaseFile& case_file, T computed) const;
+  // The file's value, which must be there: for a key required only with another one
+  // ("required with a power").
+  T require(const CaseFile& case_file) const;
+  // The file's value if it is there ("none" by default).
+  std::optional<T> read_optional(const CaseFile& case_file) const;
 
 private:
   T checked(const CaseFile& case_file, T value) const;
@@ -81,6 +86,9 @@ private:
 
 // "must be > 0 (got -1)": the check of a required positive number (as CaseFile::positive_number).
 std::string positive_or_why(const double& value);
+// A finite number >= 0 (a rate, a power, an amplitude); `zero_means` says in the error what 0
+// does ("no heater"), if anything (as CaseFile::non_negative_number_or).
+KeyCheck<double> non_negative(std::string zero_means = {});
 
 // "expected \"a\", \"b\" or \"c\", got \"x\"": the error of a choice key.
 std::string expected_one_of(const std::vector<std::string>& names, const std::string& got);
@@ -209,6 +217,19 @@ template <class T>
 T Key<T>::read_or(const CaseFile& case_file, T computed) const {
   return checked(case_file, case_file.has(path_) ? key_detail::read_present<T>(case_file, path_)
                                                  : std::move(computed));
+}
+
+template <class T>
+T Key<T>::require(const CaseFile& case_file) const {
+  return checked(case_file, key_detail::read_present<T>(case_file, path_));
+}
+
+template <class T>
+std::optional<T> Key<T>::read_optional(const CaseFile& case_file) const {
+  if (!case_file.has(path_)) {
+    return std::nullopt;
+  }
+  return require(case_file);
 }
 
 template <class E>
