@@ -1,5 +1,6 @@
 #include "models/entropic/parameters.hpp"
 
+#include "core/case_key.hpp"
 #include "core/case_values.hpp"
 #include "core/particle_blocks.hpp"
 
@@ -47,55 +48,200 @@ void check_constants(const CaseFile& case_file, const Law& law) {
   }
 }
 
-constexpr const char* stiffened_only[] = {"physics.rest_density", "physics.reference_pressure",
-                                          "physics.sound_speed"};
+// "must be >= 0 and finite (got 1.000e+00)".
+std::string non_negative_finite(const double& value) {
+  return value >= 0.0 && std::isfinite(value)
+             ? std::string()
+             : "must be >= 0 and finite (got " + format_scientific(value, 3) + ")";
+}
+
+enum class GasLawName { ideal_gas, stiffened_gas };
+
+// Every key of an entropic case file beyond common_case_keys(), including those the core's
+// readers and setup.cpp read, in the reference's order.
+struct Keys : KeySet {
+  Keys() : KeySet("entropic") {}
+  const std::string dimension =
+      declare({"dimension", KeyType::integer, "-", "required", "1, 2 or 3"});
+  const Choice<GasLawName> equation_of_state = choice<GasLawName>(
+      "physics.equation_of_state", "required",
+      "the gas law of App. C: the ideal gas (eqs. 88-89, sigma = 0 at p = rho^gamma) or the "
+      "stiffened gas (eqs. 90-92, sigma = 0 at rho0, p0)",
+      {{"ideal_gas", GasLawName::ideal_gas}, {"stiffened_gas", GasLawName::stiffened_gas}});
+  const Key<double> gamma =
+      number("physics.gamma", "1", "required", "adiabatic index c_P / c_V; > 1");
+  const Key<double> heat_capacity = number("physics.heat_capacity", "J/(kg K)", "required",
+                                           "specific heat at constant volume c_V; > 0");
+  const Key<double> rest_density =
+      number("physics.rest_density", "kg/m^3", "required for the stiffened gas",
+             "reference density rho0 of the stiffened gas; > 0 (not for the ideal gas)");
+  const Key<double> reference_pressure =
+      number("physics.reference_pressure", "Pa", "required for the stiffened gas",
+             "pressure p0 of the stiffened gas at rho0 and sigma = 0 (not for the ideal gas)");
+  const Key<double> sound_speed =
+      number("physics.sound_speed", "m/s", "required for the stiffened gas",
+             "sound speed c0 of the stiffened gas at rho0 and sigma = 0; > 0 (not for the ideal "
+             "gas)");
+  const Choice<ParticleVolume> volume = choice<ParticleVolume>(
+      "physics.particle_volume", "\"mass\"",
+      "the particle volume of §3.2: mass V = m / rho (eq. 23), entropic V = S / s (eq. 24; "
+      "needs S > 0), direct V = 1 / sum W (eq. 25), implicit (eq. 26: W V = 1 "
+      "over the gas, dummy particles at their lattice volume) or mixed (eq. 28)",
+      {{"mass", ParticleVolume::mass},
+       {"entropic", ParticleVolume::entropic},
+       {"direct", ParticleVolume::direct},
+       {"implicit", ParticleVolume::implicit},
+       {"mixed", ParticleVolume::mixed}});
+  const Key<double> viscosity =
+      number("physics.viscosity", "Pa s", "0",
+             "shear viscosity mu of the viscous dissipation, paper 4 eq. (60); >= 0 (0: off)",
+             non_negative_finite);
+  const Key<double> heat_conductivity =
+      number("physics.heat_conductivity", "W/(m K^3)", "0",
+             "lambda_F of the Fourier heat conduction lambda(T) = lambda_F T^2, paper 4 eq. (51); "
+             ">= 0 (0: off)",
+             non_negative_finite);
+  const Choice<HeatConduction> conduction = choice<HeatConduction>(
+      "physics.heat_conduction", "\"two_pass\"",
+      "the discretisation of the heat conduction: \"two_pass\", the paper's q = lambda "
+      "G(1/T) and its divergence (eqs. 54-56); \"pairwise\", one pass, Q_ab = 2 lambda_F "
+      "V_a V_b (W'/r) (T_a - T_b), which makes entropy pair by pair and holds a wall's "
+      "temperature at its surface",
+      {{"two_pass", HeatConduction::two_pass}, {"pairwise", HeatConduction::pairwise}});
+  const Choice<bool> no_slip_walls = choice<bool>(
+      "physics.wall_slip", "\"free\"",
+      "\"no_slip\": the viscosity of eq. (60) also acts between the gas and the dummy and "
+      "thermal particles, which are at rest; \"free\": it does not",
+      {{"free", false}, {"no_slip", true}});
+  const std::string thermal_temperature = declare(
+      {"particles[].temperature", KeyType::number, "K", "required for kind = \"thermal\"",
+       "the temperature a thermal wall (heater, cooler) is held at; > 0. Its particles conduct "
+       "heat to the gas (eqs. 51-56) and take part in the kernel sums like dummies"});
+  const Key<bool> particles_move =
+      boolean("physics.particles_move", "true",
+              "false holds every gas particle at its place (kick and drift do nothing): a heat "
+              "conducting solid, as the hyperbolic heat conduction of paper 4 §5.5 needs");
+  const Key<double> flux_energy_coefficient =
+      number("hyperbolic_heat.energy_coefficient", "1", "0",
+             "c_w of the entropy-flux energy c_w sum V |w|^2 of paper 4 §5.5 (Fig. 13: 0.05); > 0 "
+             "switches on the hyperbolic heat conduction, eqs. (68)-(69); 0: off",
+             non_negative_finite);
+  const Key<double> relaxation_time =
+      number("hyperbolic_heat.relaxation_time", "s", "none: no relaxation",
+             "relaxation time tau of eq. (69), w' = -2 c_w V w / tau (irreversible); > 0. Without "
+             "it the exchange of eq. (68) is bitwise reversible",
+             [](const double& tau) {
+               return tau > 0.0 ? std::string()
+                                : "must be > 0 (leave it out for no relaxation; got " +
+                                      format_scientific(tau, 3) + ")";
+             });
+  const Choice<DissipationSplitting> splitting = choice<DissipationSplitting>(
+      "dissipation.splitting", "\"strang\"",
+      "where the dissipative update goes: \"strang\", half steps at both ends of the "
+      "reversible step (second order); \"midpoint\", one full update between two half "
+      "drifts (second order, about 1.5 times cheaper); \"first_order\", one full step "
+      "after it (the paper's)",
+      {{"strang", DissipationSplitting::strang},
+       {"midpoint", DissipationSplitting::midpoint},
+       {"first_order", DissipationSplitting::first_order}});
+  const Key<double> gravity = number("physics.gravity", "m/s^2", "0",
+                                     "gravitational acceleration g, along minus the last axis");
+  const Choice<bool> boussinesq = choice<bool>(
+      "physics.buoyancy", "\"density\"",
+      "how gravity acts: \"density\", m g downwards on every gas particle (the buoyancy "
+      "comes from the gas's density); \"boussinesq\", the body force m g (T - T0) / T0 "
+      "upwards instead (a diagnostic: no potential, the energy budget does not close)",
+      {{"density", false}, {"boussinesq", true}});
+  const Key<double> gravity_reference_height =
+      number("physics.gravity_reference_height", "m", "0",
+             "height of zero gravitational potential (shifts the reported energy only)");
+  const Key<double> initial_density =
+      number("initial.density", "kg/m^3", "required",
+             "density rho of the gas at rest: particle masses are rho times the lattice cell "
+             "volume; > 0",
+             positive_or_why);
+  const Key<double> initial_pressure =
+      number("initial.pressure", "Pa", "required",
+             "pressure p of the gas at rest: with rho it gives every particle's entropy "
+             "S = m sigma(rho, p); > 0",
+             positive_or_why);
+  const std::string temperature_gradient =
+      declare({"initial.temperature_gradient", KeyType::numbers, "K/m", "0 on every axis",
+               "dT/dx of the initial state: T = T0 + gradient . (x - centre of the gas) at the "
+               "initial density, T0 the temperature of (density, pressure); sets each gas "
+               "particle's entropy"});
+  const Key<bool> hydrostatic = boolean(
+      "initial.hydrostatic", "false",
+      "start in hydrostatic equilibrium under physics.gravity, as the authors' RaBe.jl "
+      "does: initial.density and initial.pressure hold at the gas's centre height, the "
+      "temperature follows initial.temperature_gradient (vertical only), and gas, dummy and "
+      "thermal particles get the density and entropy of their own height (masses rho(y) "
+      "dr^D); false: uniform density and pressure");
+  const Key<double> temperature_perturbation =
+      number("initial.temperature_perturbation", "K", "0",
+             "amplitude A of one convection roll added to the initial temperature, A cos(pi xi_1) "
+             "sin(pi xi_D), xi the position scaled to [0, 1] across the gas (first and last "
+             "axis): a seed that breaks the lattice's symmetry (Rayleigh-Benard)",
+             must<double>([](double a) { return std::isfinite(a); }, "must be finite"));
+  const int discretisation =
+      (declare(particle_discretisation_case_keys(
+           "kernel support radius h in units of dr (the paper's h, §3.4: h = 3 dr)",
+           "time step as a fraction of h / c: dt = courant_number * h / c, c the sound speed of "
+           "the initial state")),
+       declare(wall_case_keys("paper 1 eq. 7")), declare(domain_case_keys()),
+       declare(particle_block_case_keys({"gas", "wall", "dummy", "thermal"})), 0);
+  // Default scales: positions keep 52 fraction bits below the domain size, so the double view of
+  // a position is exact; momenta resolve m c * 2^-50 and entropies max(|m sigma0|, m c_V) * 2^-48
+  // for the particle mass m = rho dr^D; kernel sums resolve rho * 2^-48.
+  const std::string position_exponent =
+      declare({"fixed_point.position_exponent", KeyType::integer, "-",
+               "covers the domain with 52 fraction bits",
+               "positions are stored as integers times 2^exponent"});
+  const std::string momentum_exponent = declare(
+      {"fixed_point.momentum_exponent", KeyType::integer, "-",
+       "covers m c with 50 fraction bits (m = rho dr^D, c the initial sound speed)",
+       "momenta (and the pair impulses of a kick) are stored as integers times 2^exponent"});
+  const std::string entropy_exponent =
+      declare({"fixed_point.entropy_exponent", KeyType::integer, "-",
+               "covers max(|m sigma|, m c_V) with 48 fraction bits (m = rho dr^D, sigma the "
+               "initial specific entropy)",
+               "particle entropies are stored as integers times 2^exponent"});
+  const std::string density_exponent =
+      declare({"fixed_point.density_exponent", KeyType::integer, "-",
+               "covers the initial density with 48 fraction bits",
+               "scale of the density sums rho_a = sum_b m_b W_ab (eq. 32a)"});
+  const std::string entropy_flux_exponent = declare(
+      {"fixed_point.entropy_flux_exponent", KeyType::integer, "-",
+       "covers sqrt(rho c_V T0 / c_w) with 48 fraction bits",
+       "the entropy-flux variable w of the hyperbolic heat conduction is stored as integers "
+       "times 2^exponent"});
+};
+
+const Keys& keys() {
+  static const Keys declared;
+  return declared;
+}
 
 GasLaw read_gas_law(const CaseFile& case_file) {
-  const std::string name = case_file.string("physics.equation_of_state");
-  const double gamma = case_file.number("physics.gamma");
-  const double heat_capacity = case_file.number("physics.heat_capacity");
-  if (name == "ideal_gas") {
-    for (const char* key : stiffened_only) {
-      if (case_file.has(key)) {
-        case_file.fail(key, "only for equation_of_state = \"stiffened_gas\" (the ideal gas of "
-                            "eq. 88 has no reference state)");
+  const Keys& k = keys();
+  const GasLawName name = k.equation_of_state.read(case_file);
+  const double gamma = k.gamma.read(case_file);
+  const double heat_capacity = k.heat_capacity.read(case_file);
+  if (name == GasLawName::ideal_gas) {
+    for (const Key<double>* key : {&k.rest_density, &k.reference_pressure, &k.sound_speed}) {
+      if (case_file.has(key->path())) {
+        case_file.fail(key->path(), "only for equation_of_state = \"stiffened_gas\" (the ideal "
+                                    "gas of eq. 88 has no reference state)");
       }
     }
     const IdealGas law{gamma, heat_capacity};
     check_constants(case_file, law);
     return law;
   }
-  if (name == "stiffened_gas") {
-    const StiffenedGas law{gamma, heat_capacity, case_file.number("physics.rest_density"),
-                           case_file.number("physics.reference_pressure"),
-                           case_file.number("physics.sound_speed")};
-    check_constants(case_file, law);
-    return law;
-  }
-  case_file.fail("physics.equation_of_state",
-                 "expected \"ideal_gas\" or \"stiffened_gas\", got \"" + name + "\"");
-}
-
-ParticleVolume read_volume(const CaseFile& case_file) {
-  const std::string name = case_file.string_or("physics.particle_volume", "mass");
-  if (name == "mass") {
-    return ParticleVolume::mass;
-  }
-  if (name == "entropic") {
-    return ParticleVolume::entropic;
-  }
-  if (name == "direct") {
-    return ParticleVolume::direct;
-  }
-  if (name == "mixed") {
-    return ParticleVolume::mixed;
-  }
-  if (name == "implicit") {
-    return ParticleVolume::implicit;
-  }
-  case_file.fail("physics.particle_volume",
-                 "expected \"mass\", \"entropic\", \"direct\", \"implicit\" or \"mixed\", got \"" +
-                     name + "\"");
+  const StiffenedGas law{gamma, heat_capacity, k.rest_density.require(case_file),
+                         k.reference_pressure.require(case_file), k.sound_speed.require(case_file)};
+  check_constants(case_file, law);
+  return law;
 }
 
 } // namespace
@@ -160,124 +306,76 @@ double Parameters<D>::initial_sound_speed() const {
 
 template <int D>
 Parameters<D> read_parameters(const CaseFile& case_file) {
+  const Keys& k = keys();
   Parameters<D> p;
   p.gas_law = read_gas_law(case_file);
-  p.volume = read_volume(case_file);
-  p.gravity = case_file.number_or("physics.gravity", 0.0);
-  p.gravity_reference_height = case_file.number_or("physics.gravity_reference_height", 0.0);
-  const std::string buoyancy = case_file.string_or("physics.buoyancy", "density");
-  if (buoyancy == "boussinesq") {
-    p.boussinesq = true;
-  } else if (buoyancy != "density") {
-    case_file.fail("physics.buoyancy",
-                   "expected \"density\" or \"boussinesq\", got \"" + buoyancy + "\"");
-  }
-  p.viscosity = case_file.number_or("physics.viscosity", 0.0);
-  if (!(p.viscosity >= 0.0) || !std::isfinite(p.viscosity)) {
-    case_file.fail("physics.viscosity",
-                   "must be >= 0 and finite (got " + format_scientific(p.viscosity, 3) + ")");
-  }
-  p.heat_conductivity = case_file.number_or("physics.heat_conductivity", 0.0);
-  if (!(p.heat_conductivity >= 0.0) || !std::isfinite(p.heat_conductivity)) {
-    case_file.fail("physics.heat_conductivity", "must be >= 0 and finite (got " +
-                                                    format_scientific(p.heat_conductivity, 3) +
-                                                    ")");
-  }
-  const std::string conduction = case_file.string_or("physics.heat_conduction", "two_pass");
-  if (conduction == "pairwise") {
-    p.conduction = HeatConduction::pairwise;
-  } else if (conduction != "two_pass") {
-    case_file.fail("physics.heat_conduction",
-                   "expected \"two_pass\" or \"pairwise\", got \"" + conduction + "\"");
-  }
-  const std::string slip = case_file.string_or("physics.wall_slip", "free");
-  if (slip == "no_slip") {
-    p.no_slip_walls = true;
-  } else if (slip != "free") {
-    case_file.fail("physics.wall_slip", "expected \"free\" or \"no_slip\", got \"" + slip + "\"");
-  }
-  const std::string splitting = case_file.string_or("dissipation.splitting", "strang");
-  if (splitting == "first_order") {
-    p.splitting = DissipationSplitting::first_order;
-  } else if (splitting == "midpoint") {
-    p.splitting = DissipationSplitting::midpoint;
-  } else if (splitting != "strang") {
-    case_file.fail("dissipation.splitting",
-                   "expected \"strang\", \"midpoint\" or \"first_order\", got \"" + splitting +
-                       "\"");
-  }
+  p.volume = k.volume.read(case_file);
+  p.gravity = k.gravity.read(case_file);
+  p.gravity_reference_height = k.gravity_reference_height.read(case_file);
+  p.boussinesq = k.boussinesq.read(case_file);
+  p.viscosity = k.viscosity.read(case_file);
+  p.heat_conductivity = k.heat_conductivity.read(case_file);
+  p.conduction = k.conduction.read(case_file);
+  p.no_slip_walls = k.no_slip_walls.read(case_file);
+  p.splitting = k.splitting.read(case_file);
 
-  p.particles_move = case_file.boolean_or("physics.particles_move", true);
-  p.flux_energy_coefficient = case_file.number_or("hyperbolic_heat.energy_coefficient", 0.0);
-  if (!(p.flux_energy_coefficient >= 0.0) || !std::isfinite(p.flux_energy_coefficient)) {
-    case_file.fail("hyperbolic_heat.energy_coefficient",
-                   "must be >= 0 and finite (got " +
-                       format_scientific(p.flux_energy_coefficient, 3) + ")");
-  }
-  p.relaxation_time = case_file.number_or("hyperbolic_heat.relaxation_time",
-                                          std::numeric_limits<double>::infinity());
-  if (!(p.relaxation_time > 0.0)) {
-    case_file.fail("hyperbolic_heat.relaxation_time",
-                   "must be > 0 (leave it out for no relaxation; got " +
-                       format_scientific(p.relaxation_time, 3) + ")");
-  }
+  p.particles_move = k.particles_move.read(case_file);
+  p.flux_energy_coefficient = k.flux_energy_coefficient.read(case_file);
+  p.relaxation_time = k.relaxation_time.read_or(case_file, std::numeric_limits<double>::infinity());
   if (p.hyperbolic() && p.particles_move) {
-    case_file.fail("hyperbolic_heat.energy_coefficient",
+    case_file.fail(k.flux_energy_coefficient.path(),
                    "the hyperbolic heat conduction of paper 4 §5.5 is derived for particles at "
                    "rest: set physics.particles_move = false");
   }
   if (p.hyperbolic() && p.volume != ParticleVolume::mass && p.volume != ParticleVolume::direct) {
-    case_file.fail("hyperbolic_heat.energy_coefficient",
+    case_file.fail(k.flux_energy_coefficient.path(),
                    "needs a particle volume that does not depend on the entropies (the energy "
                    "c_w V |w|^2 of Fig. 13 and T = dE/dS): physics.particle_volume = \"mass\" "
                    "or \"direct\"");
   }
 
-  p.initial_density = case_file.positive_number("initial.density");
-  p.initial_pressure = case_file.positive_number("initial.pressure");
+  p.initial_density = k.initial_density.read(case_file);
+  p.initial_pressure = k.initial_pressure.read(case_file);
   if (!specific_entropy_for_pressure(p.gas_law, p.initial_density, p.initial_pressure)) {
     if (const auto* law = std::get_if<StiffenedGas>(&p.gas_law)) {
-      case_file.fail("initial.pressure",
+      case_file.fail(k.initial_pressure.path(),
                      "no temperature gives this pressure at initial.density: p + B must be > 0, "
                      "B = (rho0 c0^2 - gamma p0) / gamma = " +
                          format_scientific(stiffening_pressure(*law), 3) +
                          " (eq. 92), and the specific entropy finite");
     }
-    case_file.fail("initial.pressure",
+    case_file.fail(k.initial_pressure.path(),
                    "the specific entropy of this pressure at initial.density is not finite");
   }
   // The entropic volume V = S / s (eq. 24) needs S > 0 for every particle (§2.2; the paper's
   // conclusion: it is "sensitive to negative particle entropies").
   if (p.volume == ParticleVolume::entropic && !(p.initial_specific_entropy() > 0.0)) {
-    case_file.fail("physics.particle_volume",
+    case_file.fail(k.volume.path(),
                    "the entropic volume V = S / s needs positive particle entropies, but the "
                    "initial specific entropy is " +
                        format_scientific(p.initial_specific_entropy(), 3) +
                        " (raise initial.pressure at this initial.density)");
   }
   const double sound_speed = p.initial_sound_speed();
-  require_positive_finite(case_file, "initial.pressure", "the initial sound speed c", sound_speed);
-  if (case_file.has("initial.temperature_gradient")) {
-    const std::vector<double> gradient = case_file.numbers("initial.temperature_gradient", D);
-    for (int k = 0; k < D; ++k) {
-      if (!std::isfinite(gradient[static_cast<std::size_t>(k)])) {
-        case_file.fail("initial.temperature_gradient", "must be finite");
+  require_positive_finite(case_file, k.initial_pressure.path().c_str(), "the initial sound speed c",
+                          sound_speed);
+  if (case_file.has(k.temperature_gradient)) {
+    const std::vector<double> gradient = case_file.numbers(k.temperature_gradient, D);
+    for (std::size_t axis = 0; axis < static_cast<std::size_t>(D); ++axis) {
+      if (!std::isfinite(gradient[axis])) {
+        case_file.fail(k.temperature_gradient, "must be finite");
       }
-      p.initial_temperature_gradient[static_cast<std::size_t>(k)] =
-          gradient[static_cast<std::size_t>(k)];
+      p.initial_temperature_gradient[axis] = gradient[axis];
     }
   }
 
-  p.initial_temperature_perturbation = case_file.number_or("initial.temperature_perturbation", 0.0);
-  if (!std::isfinite(p.initial_temperature_perturbation)) {
-    case_file.fail("initial.temperature_perturbation", "must be finite");
-  }
+  p.initial_temperature_perturbation = k.temperature_perturbation.read(case_file);
 
-  p.initial_hydrostatic = case_file.boolean_or("initial.hydrostatic", false);
+  p.initial_hydrostatic = k.hydrostatic.read(case_file);
   if (p.initial_hydrostatic) {
-    for (int k = 0; k + 1 < D; ++k) {
-      if (p.initial_temperature_gradient[static_cast<std::size_t>(k)] != 0.0) {
-        case_file.fail("initial.temperature_gradient",
+    for (std::size_t axis = 0; axis + 1 < static_cast<std::size_t>(D); ++axis) {
+      if (p.initial_temperature_gradient[axis] != 0.0) {
+        case_file.fail(k.temperature_gradient,
                        "with initial.hydrostatic = true only its last (vertical) component may be "
                        "non-zero: a horizontal gradient has no hydrostatic state");
       }
@@ -301,21 +399,21 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   const double entropy_magnitude =
       std::max(std::abs(mass * p.initial_specific_entropy()), mass * p.heat_capacity());
   p.position_scale = position_scale_or(case_file, p.domain.max_abs_coordinate(), p.dr);
-  p.momentum_scale = scale_or(case_file, "fixed_point.momentum_exponent", mass * sound_speed, 50);
-  p.entropy_scale = scale_or(case_file, "fixed_point.entropy_exponent", entropy_magnitude, 48);
-  p.density_scale = scale_or(case_file, "fixed_point.density_exponent", p.initial_density, 48);
+  p.momentum_scale = scale_or(case_file, k.momentum_exponent.c_str(), mass * sound_speed, 50);
+  p.entropy_scale = scale_or(case_file, k.entropy_exponent.c_str(), entropy_magnitude, 48);
+  p.density_scale = scale_or(case_file, k.density_exponent.c_str(), p.initial_density, 48);
   // |w| stays below sqrt(rho c_V T / c_w): its energy c_w V |w|^2 cannot exceed the heat m c_V T.
   const double largest_flux = p.hyperbolic()
                                   ? std::sqrt(p.initial_density * p.heat_capacity() *
                                               p.initial_temperature() / p.flux_energy_coefficient)
                                   : 1.0;
-  require_positive_finite(case_file, "hyperbolic_heat.energy_coefficient",
+  require_positive_finite(case_file, k.flux_energy_coefficient.path().c_str(),
                           "sqrt(rho c_V T0 / c_w), the scale of the entropy flux w", largest_flux);
-  p.entropy_flux_scale = scale_or(case_file, "fixed_point.entropy_flux_exponent", largest_flux, 48);
+  p.entropy_flux_scale = scale_or(case_file, k.entropy_flux_exponent.c_str(), largest_flux, 48);
   // The heat flux q of eq. (54) reaches about lambda_F T0^2 / h (model.cpp).
   if (p.heat_conductivity > 0.0) {
     const double t0 = p.initial_temperature();
-    require_positive_finite(case_file, "physics.heat_conductivity",
+    require_positive_finite(case_file, k.heat_conductivity.path().c_str(),
                             "lambda_F T0^2 / h, the scale of the heat flux",
                             p.heat_conductivity * t0 * t0 / p.support_radius);
   }
@@ -323,136 +421,7 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
 }
 
 const KeyTable& case_keys() {
-  static const KeyTable table = [] {
-    using T = KeyType;
-    KeyTable t("entropic");
-    t.add({"dimension", T::integer, "-", "required", "1, 2 or 3"});
-    t.add({"physics.equation_of_state",
-           T::string,
-           "-",
-           "required",
-           "the gas law of App. C: the ideal gas (eqs. 88-89, sigma = 0 at p = rho^gamma) or the "
-           "stiffened gas (eqs. 90-92, sigma = 0 at rho0, p0)",
-           {"ideal_gas", "stiffened_gas"}});
-    t.add({"physics.gamma", T::number, "1", "required", "adiabatic index c_P / c_V; > 1"});
-    t.add({"physics.heat_capacity", T::number, "J/(kg K)", "required",
-           "specific heat at constant volume c_V; > 0"});
-    t.add({"physics.rest_density", T::number, "kg/m^3", "required for the stiffened gas",
-           "reference density rho0 of the stiffened gas; > 0 (not for the ideal gas)"});
-    t.add({"physics.reference_pressure", T::number, "Pa", "required for the stiffened gas",
-           "pressure p0 of the stiffened gas at rho0 and sigma = 0 (not for the ideal gas)"});
-    t.add({"physics.sound_speed", T::number, "m/s", "required for the stiffened gas",
-           "sound speed c0 of the stiffened gas at rho0 and sigma = 0; > 0 (not for the ideal "
-           "gas)"});
-    t.add({"physics.particle_volume",
-           T::string,
-           "-",
-           "\"mass\"",
-           "the particle volume of §3.2: mass V = m / rho (eq. 23), entropic V = S / s (eq. 24; "
-           "needs S > 0), direct V = 1 / sum W (eq. 25), implicit (eq. 26: W V = 1 "
-           "over the gas, dummy particles at their lattice volume) or mixed (eq. 28)",
-           {"mass", "entropic", "direct", "implicit", "mixed"}});
-    t.add({"physics.viscosity", T::number, "Pa s", "0",
-           "shear viscosity mu of the viscous dissipation, paper 4 eq. (60); >= 0 (0: off)"});
-    t.add({"physics.heat_conductivity", T::number, "W/(m K^3)", "0",
-           "lambda_F of the Fourier heat conduction lambda(T) = lambda_F T^2, paper 4 eq. (51); "
-           ">= 0 (0: off)"});
-    t.add({"physics.heat_conduction",
-           T::string,
-           "-",
-           "\"two_pass\"",
-           "the discretisation of the heat conduction: \"two_pass\", the paper's q = lambda "
-           "G(1/T) and its divergence (eqs. 54-56); \"pairwise\", one pass, Q_ab = 2 lambda_F "
-           "V_a V_b (W'/r) (T_a - T_b), which makes entropy pair by pair and holds a wall's "
-           "temperature at its surface",
-           {"two_pass", "pairwise"}});
-    t.add({"physics.wall_slip",
-           T::string,
-           "-",
-           "\"free\"",
-           "\"no_slip\": the viscosity of eq. (60) also acts between the gas and the dummy and "
-           "thermal particles, which are at rest; \"free\": it does not",
-           {"free", "no_slip"}});
-    t.add({"particles[].temperature", T::number, "K", "required for kind = \"thermal\"",
-           "the temperature a thermal wall (heater, cooler) is held at; > 0. Its particles conduct "
-           "heat to the gas (eqs. 51-56) and take part in the kernel sums like dummies"});
-    t.add({"physics.particles_move", T::boolean, "-", "true",
-           "false holds every gas particle at its place (kick and drift do nothing): a heat "
-           "conducting solid, as the hyperbolic heat conduction of paper 4 §5.5 needs"});
-    t.add({"hyperbolic_heat.energy_coefficient", T::number, "1", "0",
-           "c_w of the entropy-flux energy c_w sum V |w|^2 of paper 4 §5.5 (Fig. 13: 0.05); > 0 "
-           "switches on the hyperbolic heat conduction, eqs. (68)-(69); 0: off"});
-    t.add({"hyperbolic_heat.relaxation_time", T::number, "s", "none: no relaxation",
-           "relaxation time tau of eq. (69), w' = -2 c_w V w / tau (irreversible); > 0. Without "
-           "it the exchange of eq. (68) is bitwise reversible"});
-    t.add({"dissipation.splitting",
-           T::string,
-           "-",
-           "\"strang\"",
-           "where the dissipative update goes: \"strang\", half steps at both ends of the "
-           "reversible step (second order); \"midpoint\", one full update between two half "
-           "drifts (second order, about 1.5 times cheaper); \"first_order\", one full step "
-           "after it (the paper's)",
-           {"strang", "midpoint", "first_order"}});
-    t.add({"physics.gravity", T::number, "m/s^2", "0",
-           "gravitational acceleration g, along minus the last axis"});
-    t.add({"physics.buoyancy",
-           T::string,
-           "-",
-           "\"density\"",
-           "how gravity acts: \"density\", m g downwards on every gas particle (the buoyancy "
-           "comes from the gas's density); \"boussinesq\", the body force m g (T - T0) / T0 "
-           "upwards instead (a diagnostic: no potential, the energy budget does not close)",
-           {"density", "boussinesq"}});
-    t.add({"physics.gravity_reference_height", T::number, "m", "0",
-           "height of zero gravitational potential (shifts the reported energy only)"});
-    t.add({"initial.density", T::number, "kg/m^3", "required",
-           "density rho of the gas at rest: particle masses are rho times the lattice cell "
-           "volume; > 0"});
-    t.add({"initial.pressure", T::number, "Pa", "required",
-           "pressure p of the gas at rest: with rho it gives every particle's entropy "
-           "S = m sigma(rho, p); > 0"});
-    t.add({"initial.temperature_gradient", T::numbers, "K/m", "0 on every axis",
-           "dT/dx of the initial state: T = T0 + gradient . (x - centre of the gas) at the "
-           "initial density, T0 the temperature of (density, pressure); sets each gas "
-           "particle's entropy"});
-    t.add({"initial.hydrostatic", T::boolean, "-", "false",
-           "start in hydrostatic equilibrium under physics.gravity, as the authors' RaBe.jl "
-           "does: initial.density and initial.pressure hold at the gas's centre height, the "
-           "temperature follows initial.temperature_gradient (vertical only), and gas, dummy and "
-           "thermal particles get the density and entropy of their own height (masses rho(y) "
-           "dr^D); false: uniform density and pressure"});
-    t.add({"initial.temperature_perturbation", T::number, "K", "0",
-           "amplitude A of one convection roll added to the initial temperature, A cos(pi xi_1) "
-           "sin(pi xi_D), xi the position scaled to [0, 1] across the gas (first and last axis): "
-           "a seed that breaks the lattice's symmetry (Rayleigh-Benard)"});
-    t.add(particle_discretisation_case_keys(
-        "kernel support radius h in units of dr (the paper's h, §3.4: h = 3 dr)",
-        "time step as a fraction of h / c: dt = courant_number * h / c, c the sound speed of "
-        "the initial state"));
-    t.add(wall_case_keys("paper 1 eq. 7"));
-    t.add(domain_case_keys());
-    t.add(particle_block_case_keys({"gas", "wall", "dummy", "thermal"}));
-    t.add({"fixed_point.position_exponent", T::integer, "-",
-           "covers the domain with 52 fraction bits",
-           "positions are stored as integers times 2^exponent"});
-    t.add({"fixed_point.momentum_exponent", T::integer, "-",
-           "covers m c with 50 fraction bits (m = rho dr^D, c the initial sound speed)",
-           "momenta (and the pair impulses of a kick) are stored as integers times 2^exponent"});
-    t.add({"fixed_point.entropy_exponent", T::integer, "-",
-           "covers max(|m sigma|, m c_V) with 48 fraction bits (m = rho dr^D, sigma the initial "
-           "specific entropy)",
-           "particle entropies are stored as integers times 2^exponent"});
-    t.add({"fixed_point.density_exponent", T::integer, "-",
-           "covers the initial density with 48 fraction bits",
-           "scale of the density sums rho_a = sum_b m_b W_ab (eq. 32a)"});
-    t.add({"fixed_point.entropy_flux_exponent", T::integer, "-",
-           "covers sqrt(rho c_V T0 / c_w) with 48 fraction bits",
-           "the entropy-flux variable w of the hyperbolic heat conduction is stored as integers "
-           "times 2^exponent"});
-    return t;
-  }();
-  return table;
+  return keys().table();
 }
 
 template struct Parameters<1>;
