@@ -32,6 +32,25 @@ KeyCheck<double> non_negative(std::string zero_means) {
   };
 }
 
+ScaleKey KeySet::scale(const std::string& quantity, const std::string& magnitude, int fraction_bits,
+                       std::string meaning, const std::string& note) {
+  std::string covers =
+      "covers " + magnitude + " with " + std::to_string(fraction_bits) + " fraction bits";
+  if (!note.empty()) {
+    covers += " " + note;
+  }
+  return {declare({"fixed_point." + quantity + "_exponent", KeyType::integer, "-",
+                   std::move(covers), std::move(meaning)}),
+          fraction_bits};
+}
+
+PositionScaleKey KeySet::position_scale() {
+  declare({"fixed_point.position_exponent", KeyType::integer, "-",
+           "covers the domain with " + std::to_string(position_fraction_bits) + " fraction bits",
+           "positions are stored as integers times 2^exponent"});
+  return {};
+}
+
 const KeyDecl& KeySet::add(KeyDecl decl) {
   table_.add(std::move(decl));
   return table_.keys().back();

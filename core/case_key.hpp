@@ -19,6 +19,8 @@
 
 #include "core/case_file.hpp"
 #include "core/case_keys.hpp"
+#include "core/case_values.hpp"
+#include "fixedpoint/scale.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -84,6 +86,32 @@ private:
   std::vector<std::pair<std::string, E>> values_;
 };
 
+// A fixed-point scale's exponent key, fixed_point.QUANTITY_exponent: the scale it gives, or by
+// default the one that covers a magnitude known at setup with `fraction_bits` bits below it
+// (scale_or, core/case_values.hpp). The bits are stated here once: the reference's default text
+// is made from them.
+class ScaleKey {
+public:
+  ScaleKey(std::string path, int fraction_bits)
+      : path_(std::move(path)), fraction_bits_(fraction_bits) {}
+  const std::string& path() const { return path_; }
+  fixedpoint::Scale read(const CaseFile& case_file, double magnitude) const {
+    return scale_or(case_file, path_.c_str(), magnitude, fraction_bits_);
+  }
+
+private:
+  std::string path_;
+  int fraction_bits_;
+};
+
+// fixed_point.position_exponent, the same key in every model (position_scale_or).
+class PositionScaleKey {
+public:
+  fixedpoint::Scale read(const CaseFile& case_file, double max_abs_coordinate, double dr) const {
+    return position_scale_or(case_file, max_abs_coordinate, dr);
+  }
+};
+
 // "must be > 0 (got -1)": the check of a required positive number (as CaseFile::positive_number).
 std::string positive_or_why(const double& value);
 // A finite number >= 0 (a rate, a power, an amplitude); `zero_means` says in the error what 0
@@ -120,6 +148,11 @@ protected:
                           std::move(meaning), std::move(names)}),
                      std::move(values));
   }
+  // fixed_point.QUANTITY_exponent, by default covering `magnitude` (its name in the reference:
+  // "u1", "rho0") with `fraction_bits` bits; `note` follows the default's text.
+  ScaleKey scale(const std::string& quantity, const std::string& magnitude, int fraction_bits,
+                 std::string meaning, const std::string& note = {});
+  PositionScaleKey position_scale();
   // A key read elsewhere (by a core reader, or an array of numbers read with the dimension):
   // declared here, read through the path this returns.
   std::string declare(KeyDecl decl) { return add(std::move(decl)).path; }

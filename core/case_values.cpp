@@ -33,7 +33,8 @@ fixedpoint::Scale scale_or(const CaseFile& case_file, const char* key, double ma
 fixedpoint::Scale position_scale_or(const CaseFile& case_file, double max_abs_coordinate,
                                     double dr) {
   constexpr const char* key = "fixed_point.position_exponent";
-  const fixedpoint::Scale scale = scale_or(case_file, key, max_abs_coordinate, 52);
+  const fixedpoint::Scale scale =
+      scale_or(case_file, key, max_abs_coordinate, position_fraction_bits);
   if (!(scale.unit() <= std::ldexp(dr, -16))) {
     case_file.fail(case_file.has(key) ? key : "domain.max",
                    "positions would be stored in units of " + format_scientific(scale.unit(), 3) +

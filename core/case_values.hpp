@@ -18,6 +18,10 @@ void require_positive_finite(const CaseFile& case_file, const char* key, const c
 fixedpoint::Scale scale_or(const CaseFile& case_file, const char* key, double magnitude,
                            int fraction_bits);
 
+// Positions keep this many fraction bits below the domain's largest coordinate by default, so
+// that the double view of a position is exact.
+constexpr int position_fraction_bits = 52;
+
 // The positions' scale: fixed_point.position_exponent, or by default the one that covers the
 // domain's largest coordinate with 52 fraction bits. Either way its unit must resolve dr to
 // 2^-16 (a domain at most 2^36 dr across by default): coarser, the lattice would be rounded onto

@@ -193,28 +193,21 @@ struct Keys : KeySet {
   // Default scales: positions keep 52 fraction bits below the domain size, so the double view of
   // a position is exact; momenta resolve m c * 2^-50 and entropies max(|m sigma0|, m c_V) * 2^-48
   // for the particle mass m = rho dr^D; kernel sums resolve rho * 2^-48.
-  const std::string position_exponent =
-      declare({"fixed_point.position_exponent", KeyType::integer, "-",
-               "covers the domain with 52 fraction bits",
-               "positions are stored as integers times 2^exponent"});
-  const std::string momentum_exponent = declare(
-      {"fixed_point.momentum_exponent", KeyType::integer, "-",
-       "covers m c with 50 fraction bits (m = rho dr^D, c the initial sound speed)",
-       "momenta (and the pair impulses of a kick) are stored as integers times 2^exponent"});
-  const std::string entropy_exponent =
-      declare({"fixed_point.entropy_exponent", KeyType::integer, "-",
-               "covers max(|m sigma|, m c_V) with 48 fraction bits (m = rho dr^D, sigma the "
-               "initial specific entropy)",
-               "particle entropies are stored as integers times 2^exponent"});
-  const std::string density_exponent =
-      declare({"fixed_point.density_exponent", KeyType::integer, "-",
-               "covers the initial density with 48 fraction bits",
-               "scale of the density sums rho_a = sum_b m_b W_ab (eq. 32a)"});
-  const std::string entropy_flux_exponent = declare(
-      {"fixed_point.entropy_flux_exponent", KeyType::integer, "-",
-       "covers sqrt(rho c_V T0 / c_w) with 48 fraction bits",
-       "the entropy-flux variable w of the hyperbolic heat conduction is stored as integers "
-       "times 2^exponent"});
+  const PositionScaleKey position_exponent = position_scale();
+  const ScaleKey momentum_exponent =
+      scale("momentum", "m c", 50,
+            "momenta (and the pair impulses of a kick) are stored as integers times 2^exponent",
+            "(m = rho dr^D, c the initial sound speed)");
+  const ScaleKey entropy_exponent =
+      scale("entropy", "max(|m sigma|, m c_V)", 48,
+            "particle entropies are stored as integers times 2^exponent",
+            "(m = rho dr^D, sigma the initial specific entropy)");
+  const ScaleKey density_exponent =
+      scale("density", "the initial density", 48,
+            "scale of the density sums rho_a = sum_b m_b W_ab (eq. 32a)");
+  const ScaleKey entropy_flux_exponent = scale("entropy_flux", "sqrt(rho c_V T0 / c_w)", 48,
+                                               "the entropy-flux variable w of the hyperbolic heat "
+                                               "conduction is stored as integers times 2^exponent");
 };
 
 const Keys& keys() {
@@ -398,10 +391,10 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   const double mass = p.initial_density * std::pow(p.dr, D);
   const double entropy_magnitude =
       std::max(std::abs(mass * p.initial_specific_entropy()), mass * p.heat_capacity());
-  p.position_scale = position_scale_or(case_file, p.domain.max_abs_coordinate(), p.dr);
-  p.momentum_scale = scale_or(case_file, k.momentum_exponent.c_str(), mass * sound_speed, 50);
-  p.entropy_scale = scale_or(case_file, k.entropy_exponent.c_str(), entropy_magnitude, 48);
-  p.density_scale = scale_or(case_file, k.density_exponent.c_str(), p.initial_density, 48);
+  p.position_scale = k.position_exponent.read(case_file, p.domain.max_abs_coordinate(), p.dr);
+  p.momentum_scale = k.momentum_exponent.read(case_file, mass * sound_speed);
+  p.entropy_scale = k.entropy_exponent.read(case_file, entropy_magnitude);
+  p.density_scale = k.density_exponent.read(case_file, p.initial_density);
   // |w| stays below sqrt(rho c_V T / c_w): its energy c_w V |w|^2 cannot exceed the heat m c_V T.
   const double largest_flux = p.hyperbolic()
                                   ? std::sqrt(p.initial_density * p.heat_capacity() *
@@ -409,7 +402,7 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
                                   : 1.0;
   require_positive_finite(case_file, k.flux_energy_coefficient.path().c_str(),
                           "sqrt(rho c_V T0 / c_w), the scale of the entropy flux w", largest_flux);
-  p.entropy_flux_scale = scale_or(case_file, k.entropy_flux_exponent.c_str(), largest_flux, 48);
+  p.entropy_flux_scale = k.entropy_flux_exponent.read(case_file, largest_flux);
   // The heat flux q of eq. (54) reaches about lambda_F T0^2 / h (model.cpp).
   if (p.heat_conductivity > 0.0) {
     const double t0 = p.initial_temperature();

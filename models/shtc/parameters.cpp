@@ -130,29 +130,21 @@ struct Keys : KeySet {
   // is exact); velocities resolve c0 * 2^-50 and reach 2^13 c0; the constants resolve
   // rho0 * 2^-48; the dissipated energy per mass c0^2 2^-48; log det A resolves 2^-50 and U
   // 2^-48 (|U| < 2^15); the walls' clock resolves dt 2^-28 and runs 2^34 steps.
-  const std::string position_exponent =
-      declare({"fixed_point.position_exponent", KeyType::integer, "-",
-               "covers the domain with 52 fraction bits",
-               "positions are stored as integers times 2^exponent"});
-  const std::string velocity_exponent = declare(
-      {"fixed_point.velocity_exponent", KeyType::integer, "-", "covers c0 with 50 fraction bits",
-       "velocities are stored as integers times 2^exponent"});
-  const std::string density_exponent =
-      declare({"fixed_point.density_exponent", KeyType::integer, "-",
-               "covers rho0 with 48 fraction bits", "scale of the constants C_rho and C_lambda"});
-  const std::string dissipated_exponent =
-      declare({"fixed_point.dissipated_exponent", KeyType::integer, "-",
-               "covers c0^2 with 48 fraction bits",
-               "scale of the energy per mass removed by the relaxation"});
-  const std::string log_det_exponent = declare(
-      {"fixed_point.log_det_exponent", KeyType::integer, "-", "covers 1 with 50 fraction bits",
-       "scale of log det A, the volumetric part of the distortion"});
-  const std::string unimodular_exponent = declare(
-      {"fixed_point.unimodular_exponent", KeyType::integer, "-", "covers 1 with 48 fraction bits",
-       "scale of U, the unimodular part of the distortion"});
-  const std::string drive_time_exponent =
+  const PositionScaleKey position_exponent = position_scale();
+  const ScaleKey velocity_exponent =
+      scale("velocity", "c0", 50, "velocities are stored as integers times 2^exponent");
+  const ScaleKey density_exponent =
+      scale("density", "rho0", 48, "scale of the constants C_rho and C_lambda");
+  const ScaleKey dissipated_exponent =
+      scale("dissipated", "c0^2", 48, "scale of the energy per mass removed by the relaxation");
+  const ScaleKey log_det_exponent =
+      scale("log_det", "1", 50, "scale of log det A, the volumetric part of the distortion");
+  const ScaleKey unimodular_exponent =
+      scale("unimodular", "1", 48, "scale of U, the unimodular part of the distortion");
+  const ScaleKey drive_time_exponent{
       declare({"fixed_point.drive_time_exponent", KeyType::integer, "-", "resolves dt 2^-28",
-               "scale of the moving walls' clock"});
+               "scale of the moving walls' clock"}),
+      52};
 };
 
 const Keys& keys() {
@@ -303,14 +295,14 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   }
   p.domain = read_domain<D>(case_file);
 
-  p.position_scale = position_scale_or(case_file, p.domain.max_abs_coordinate(), p.dr);
-  p.velocity_scale = scale_or(case_file, k.velocity_exponent.c_str(), p.material.sound_speed, 50);
-  p.density_scale = scale_or(case_file, k.density_exponent.c_str(), p.material.rest_density, 48);
-  p.dissipated_scale = scale_or(case_file, k.dissipated_exponent.c_str(),
-                                p.material.sound_speed * p.material.sound_speed, 48);
-  p.distortion_scales.log_det = scale_or(case_file, k.log_det_exponent.c_str(), 1.0, 50);
-  p.distortion_scales.unimodular = scale_or(case_file, k.unimodular_exponent.c_str(), 1.0, 48);
-  p.drive_time_scale = scale_or(case_file, k.drive_time_exponent.c_str(), std::ldexp(p.dt, 24), 52);
+  p.position_scale = k.position_exponent.read(case_file, p.domain.max_abs_coordinate(), p.dr);
+  p.velocity_scale = k.velocity_exponent.read(case_file, p.material.sound_speed);
+  p.density_scale = k.density_exponent.read(case_file, p.material.rest_density);
+  p.dissipated_scale =
+      k.dissipated_exponent.read(case_file, p.material.sound_speed * p.material.sound_speed);
+  p.distortion_scales.log_det = k.log_det_exponent.read(case_file, 1.0);
+  p.distortion_scales.unimodular = k.unimodular_exponent.read(case_file, 1.0);
+  p.drive_time_scale = k.drive_time_exponent.read(case_file, std::ldexp(p.dt, 24));
   return p;
 }
 

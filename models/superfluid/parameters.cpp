@@ -152,23 +152,16 @@ struct Keys : KeySet {
   // u1 * 2^-50; entropies s0 * 2^-50 (room for 2^13 s0); density sums rho0 * 2^-48. The pair
   // increments of v, v_s and s are summed at the scales of v and s. The heat sums: a particle's
   // thermal energy scale m T0 s0 (m = rho0 dr^D) with 60 bits.
-  const std::string position_exponent =
-      declare({"fixed_point.position_exponent", KeyType::integer, "-",
-               "covers the domain with 52 fraction bits",
-               "positions are stored as integers times 2^exponent"});
-  const std::string velocity_exponent = declare(
-      {"fixed_point.velocity_exponent", KeyType::integer, "-", "covers u1 with 50 fraction bits",
-       "v and v_s are stored as integers times 2^exponent"});
-  const std::string entropy_exponent =
-      declare({"fixed_point.entropy_exponent", KeyType::integer, "-",
-               "covers s0 with 50 fraction bits", "s is stored as integers times 2^exponent"});
-  const std::string heat_exponent =
-      declare({"fixed_point.heat_exponent", KeyType::integer, "-",
-               "covers rho0 dr^D T0 s0 with 60 fraction bits",
-               "scale of the sums of the heat a particle receives in a dissipation sub-step"});
-  const std::string density_exponent = declare({"fixed_point.density_exponent", KeyType::integer,
-                                                "-", "covers rho0 with 48 fraction bits",
-                                                "scale of the density sums and the constants C_a"});
+  const PositionScaleKey position_exponent = position_scale();
+  const ScaleKey velocity_exponent =
+      scale("velocity", "u1", 50, "v and v_s are stored as integers times 2^exponent");
+  const ScaleKey entropy_exponent =
+      scale("entropy", "s0", 50, "s is stored as integers times 2^exponent");
+  const ScaleKey heat_exponent =
+      scale("heat", "rho0 dr^D T0 s0", 60,
+            "scale of the sums of the heat a particle receives in a dissipation sub-step");
+  const ScaleKey density_exponent =
+      scale("density", "rho0", 48, "scale of the density sums and the constants C_a");
 };
 
 const Keys& keys() {
@@ -313,13 +306,13 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.heater = read_heater<D>(case_file, p.domain);
 
   const Helium& he = p.helium;
-  p.position_scale = position_scale_or(case_file, p.domain.max_abs_coordinate(), p.dr);
-  p.velocity_scale = scale_or(case_file, k.velocity_exponent.c_str(), he.first_sound_speed, 50);
-  p.entropy_scale = scale_or(case_file, k.entropy_exponent.c_str(), he.reference_entropy, 50);
-  p.density_scale = scale_or(case_file, k.density_exponent.c_str(), he.rest_density, 48);
-  p.heat_scale = scale_or(
-      case_file, k.heat_exponent.c_str(),
-      he.rest_density * std::pow(p.dr, D) * he.reference_temperature * he.reference_entropy, 60);
+  p.position_scale = k.position_exponent.read(case_file, p.domain.max_abs_coordinate(), p.dr);
+  p.velocity_scale = k.velocity_exponent.read(case_file, he.first_sound_speed);
+  p.entropy_scale = k.entropy_exponent.read(case_file, he.reference_entropy);
+  p.density_scale = k.density_exponent.read(case_file, he.rest_density);
+  p.heat_scale =
+      k.heat_exponent.read(case_file, he.rest_density * std::pow(p.dr, D) *
+                                          he.reference_temperature * he.reference_entropy);
   return p;
 }
 

@@ -196,21 +196,14 @@ struct Keys : KeySet {
              "dt <= force_number sqrt(h / g) where dt comes from courant_number; > 0");
   // Default scales: positions 52 fraction bits below the domain size; momenta resolve
   // m c 2^-50 of the heavier kind's particle; number densities dr^-D 2^-48.
-  const std::string position_exponent =
-      declare({"fixed_point.position_exponent", KeyType::integer, "-",
-               "covers the domain with 52 fraction bits",
-               "positions are stored as integers times 2^exponent"});
-  const std::string momentum_exponent =
-      declare({"fixed_point.momentum_exponent", KeyType::integer, "-",
-               "covers max(rho_s, rho_n) dr^D c with 50 fraction bits",
-               "momenta are stored as integers times 2^exponent"});
-  const std::string density_exponent = declare({"fixed_point.density_exponent", KeyType::integer,
-                                                "-", "covers dr^-D with 48 fraction bits",
-                                                "scale of the number-density sums sum_j W_ij"});
-  const std::string energy_exponent =
-      declare({"fixed_point.energy_exponent", KeyType::integer, "-",
-               "covers max(rho_s, rho_n) dr^D c^2 with 60 fraction bits",
-               "scale of the walls' work summed over pairs (an energy account)"});
+  const PositionScaleKey position_exponent = position_scale();
+  const ScaleKey momentum_exponent = scale("momentum", "max(rho_s, rho_n) dr^D c", 50,
+                                           "momenta are stored as integers times 2^exponent");
+  const ScaleKey density_exponent =
+      scale("density", "dr^-D", 48, "scale of the number-density sums sum_j W_ij");
+  const ScaleKey energy_exponent =
+      scale("energy", "max(rho_s, rho_n) dr^D c^2", 60,
+            "scale of the walls' work summed over pairs (an energy account)");
 };
 
 const Keys& keys() {
@@ -349,11 +342,10 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   }
 
   const double heavier = std::max(p.rest_density(true), p.rest_density(false)) * std::pow(p.dr, D);
-  p.position_scale = position_scale_or(case_file, p.domain.max_abs_coordinate(), p.dr);
-  p.momentum_scale = scale_or(case_file, k.momentum_exponent.c_str(), heavier * p.sound_speed, 50);
-  p.density_scale = scale_or(case_file, k.density_exponent.c_str(), std::pow(p.dr, -D), 48);
-  p.energy_scale =
-      scale_or(case_file, k.energy_exponent.c_str(), heavier * p.sound_speed * p.sound_speed, 60);
+  p.position_scale = k.position_exponent.read(case_file, p.domain.max_abs_coordinate(), p.dr);
+  p.momentum_scale = k.momentum_exponent.read(case_file, heavier * p.sound_speed);
+  p.density_scale = k.density_exponent.read(case_file, std::pow(p.dr, -D));
+  p.energy_scale = k.energy_exponent.read(case_file, heavier * p.sound_speed * p.sound_speed);
   return p;
 }
 

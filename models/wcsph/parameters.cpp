@@ -82,19 +82,13 @@ struct Keys : KeySet {
   // Default scales: positions keep 52 fraction bits below the domain size, so the double view of
   // a position is exact; velocities resolve c * 2^-50 and reach 2^13 c; density sums resolve
   // rho0 * 2^-48; acceleration sums resolve (c^2 / h) * 2^-48.
-  const std::string position_exponent =
-      declare({"fixed_point.position_exponent", KeyType::integer, "-",
-               "covers the domain with 52 fraction bits",
-               "positions are stored as integers times 2^exponent"});
-  const std::string velocity_exponent = declare(
-      {"fixed_point.velocity_exponent", KeyType::integer, "-", "covers c with 50 fraction bits",
-       "velocities are stored as integers times 2^exponent"});
-  const std::string density_exponent = declare({"fixed_point.density_exponent", KeyType::integer,
-                                                "-", "covers rho0 with 48 fraction bits",
-                                                "scale of the density sums and the constants C_a"});
-  const std::string acceleration_exponent =
-      declare({"fixed_point.acceleration_exponent", KeyType::integer, "-",
-               "covers c^2 / h with 48 fraction bits", "scale of the acceleration sums"});
+  const PositionScaleKey position_exponent = position_scale();
+  const ScaleKey velocity_exponent =
+      scale("velocity", "c", 50, "velocities are stored as integers times 2^exponent");
+  const ScaleKey density_exponent =
+      scale("density", "rho0", 48, "scale of the density sums and the constants C_a");
+  const ScaleKey acceleration_exponent =
+      scale("acceleration", "c^2 / h", 48, "scale of the acceleration sums");
 };
 
 const Keys& keys() {
@@ -146,11 +140,11 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.isc.seed = static_cast<std::uint64_t>(k.isc_seed.read(case_file));
 
   p.domain = read_domain<D>(case_file);
-  p.position_scale = position_scale_or(case_file, p.domain.max_abs_coordinate(), p.dr);
-  p.velocity_scale = scale_or(case_file, k.velocity_exponent.c_str(), p.sound_speed, 50);
-  p.density_scale = scale_or(case_file, k.density_exponent.c_str(), p.rest_density, 48);
-  p.acceleration_scale = scale_or(case_file, k.acceleration_exponent.c_str(),
-                                  p.sound_speed * p.sound_speed / p.support_radius, 48);
+  p.position_scale = k.position_exponent.read(case_file, p.domain.max_abs_coordinate(), p.dr);
+  p.velocity_scale = k.velocity_exponent.read(case_file, p.sound_speed);
+  p.density_scale = k.density_exponent.read(case_file, p.rest_density);
+  p.acceleration_scale =
+      k.acceleration_exponent.read(case_file, p.sound_speed * p.sound_speed / p.support_radius);
   return p;
 }
 
