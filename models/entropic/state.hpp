@@ -9,6 +9,7 @@
 
 #include "core/particle_sets.hpp"
 #include "core/state_field.hpp"
+#include "core/units.hpp"
 
 #include <cstdint>
 #include <tuple>
@@ -18,11 +19,7 @@ namespace revsph::entropic {
 using Field = StateField<std::int64_t>;
 
 template <int D>
-inline constexpr const char* mass_unit = D == 1 ? "kg/m^2" : (D == 2 ? "kg/m" : "kg");
-template <int D>
 inline constexpr const char* momentum_unit = D == 1 ? "kg/(m s)" : (D == 2 ? "kg/s" : "kg m/s");
-template <int D>
-inline constexpr const char* entropy_unit = D == 1 ? "J/(K m^2)" : (D == 2 ? "J/(K m)" : "J/K");
 
 // The gas: positions and momenta M = m v evolve (eq. 11); the particle entropy S (extensive, eq.
 // 21) and the mass are constants of the reversible motion, except that the hyperbolic heat

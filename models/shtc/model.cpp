@@ -499,7 +499,6 @@ template <int D>
 void Model<D>::derived_views(const ViewSink& sink) {
   const auto values = carrier_values();
   const auto energies = particle_energies(values);
-  const std::string energy_unit = D == 2 ? "J/m" : "J";
   const std::vector<CarrierSet>& sets = layout_.sets();
   for (std::size_t set = 0; set < sets.size(); ++set) {
     const CarrierValues& of_set = values[set];
@@ -523,11 +522,11 @@ void Model<D>::derived_views(const ViewSink& sink) {
     sink(ParticleView{name, "pressure", "Pa", 1, std::move(pressure_values)});
     sink(ParticleView{name, "lambda", "kg/m^3", 1, of_set.lambda});
     sink(ParticleView{name, "distortion", "1", D * D, std::move(distortion)});
-    sink(ParticleView{name, "volumetric_energy", energy_unit, 1, e.bulk});
-    sink(ParticleView{name, "shear_energy", energy_unit, 1, e.shear});
-    sink(ParticleView{name, "penalty_energy", energy_unit, 1, e.penalty});
+    sink(ParticleView{name, "volumetric_energy", energy_unit<D>, 1, e.bulk});
+    sink(ParticleView{name, "shear_energy", energy_unit<D>, 1, e.shear});
+    sink(ParticleView{name, "penalty_energy", energy_unit<D>, 1, e.penalty});
     if (parameters_.relaxation_time) {
-      sink(ParticleView{name, "dissipated_energy", energy_unit, 1, e.dissipated});
+      sink(ParticleView{name, "dissipated_energy", energy_unit<D>, 1, e.dissipated});
     }
   }
   if (material_count() > 0) {
@@ -537,8 +536,8 @@ void Model<D>::derived_views(const ViewSink& sink) {
                                  acceleration_[k].end());
     }
     sink(ParticleView{"material", "acceleration", "m/s^2", D, std::move(acceleration_values)});
-    sink(
-        ParticleView{"material", "kinetic_energy", energy_unit, 1, energies[material_set].kinetic});
+    sink(ParticleView{"material", "kinetic_energy", energy_unit<D>, 1,
+                      energies[material_set].kinetic});
   }
   const std::span<const std::uint32_t> walls = layout_.slots_of_set(boundary_set);
   if (!walls.empty() && walls_work()) {

@@ -10,6 +10,7 @@
 
 #include "core/particle_sets.hpp"
 #include "core/state_field.hpp"
+#include "core/units.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -30,7 +31,7 @@ struct CarrierFields {
   // it the energy budget closes in a dissipative case.
   Field dissipated_energy{{.name = "dissipated_specific_energy", .unit = "J/kg"}};
   // Constants of the setup: masses and the integration constants C_rho (eq. 7), C_lambda (eq. 40).
-  Field mass{{.name = "mass", .unit = D == 2 ? "kg/m" : "kg", .evolved = false}};
+  Field mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
   Field density_constant{{.name = "density_constant", .unit = "kg/m^3", .evolved = false}};
   Field lambda_constant{{.name = "lambda_constant", .unit = "kg/m^3", .evolved = false}};
 

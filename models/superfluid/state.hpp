@@ -10,13 +10,11 @@
 
 #include "core/particle_sets.hpp"
 #include "core/state_field.hpp"
+#include "core/units.hpp"
 
 #include <tuple>
 
 namespace revsph::superfluid {
-
-template <int D>
-inline constexpr const char* mass_unit = D == 1 ? "kg/m^2" : (D == 2 ? "kg/m" : "kg");
 
 template <int D, class Raw>
 struct Fluid {

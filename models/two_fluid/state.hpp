@@ -5,13 +5,12 @@
 
 #include "core/particle_sets.hpp"
 #include "core/state_field.hpp"
+#include "core/units.hpp"
 
 #include <tuple>
 
 namespace revsph::two_fluid {
 
-template <int D>
-inline constexpr const char* mass_unit = D == 2 ? "kg/m" : "kg";
 // The spin omega of eq. (40): a rate about z in 2D, a vector in 3D.
 template <int D>
 inline constexpr int spin_components = D == 2 ? 1 : 3;

@@ -321,7 +321,6 @@ void Model<D, Arith>::derived_views(const ViewSink& sink) {
     }
     return values;
   };
-  const std::string energy_unit = D == 1 ? "J/m^2" : (D == 2 ? "J/m" : "J");
   // Each view is built, handed over and freed before the next (the snapshot write is the peak of
   // a run's memory).
   auto emit = [&](const char* set, const char* name, std::string unit, int components,
@@ -333,10 +332,10 @@ void Model<D, Arith>::derived_views(const ViewSink& sink) {
   emit("fluid", "density", "kg/m^3", 1, {fluid_density.begin(), fluid_density.end()});
   emit("fluid", "pressure", "Pa", 1, pressure_of(fluid_density));
   emit("fluid", "acceleration", "m/s^2", D, component_major(acceleration()));
-  emit("fluid", "kinetic_energy", energy_unit, 1, std::move(energies.kinetic));
-  emit("fluid", "gravitational_energy", energy_unit, 1, std::move(energies.gravitational));
-  emit("fluid", "compressional_energy", energy_unit, 1, std::move(energies.compressional));
-  emit("fluid", "wall_energy", energy_unit, 1, std::move(energies.wall));
+  emit("fluid", "kinetic_energy", energy_unit<D>, 1, std::move(energies.kinetic));
+  emit("fluid", "gravitational_energy", energy_unit<D>, 1, std::move(energies.gravitational));
+  emit("fluid", "compressional_energy", energy_unit<D>, 1, std::move(energies.compressional));
+  emit("fluid", "wall_energy", energy_unit<D>, 1, std::move(energies.wall));
   if (parameters_.shepard_every > 0) {
     emit("fluid", "filtered_velocity", "m/s", D, component_major(filtered_velocity()));
   }
@@ -344,7 +343,8 @@ void Model<D, Arith>::derived_views(const ViewSink& sink) {
   if (!dummy_density.empty()) {
     emit("dummy", "density", "kg/m^3", 1, {dummy_density.begin(), dummy_density.end()});
     emit("dummy", "pressure", "Pa", 1, pressure_of(dummy_density));
-    emit("dummy", "compressional_energy", energy_unit, 1, std::move(energies.dummy_compressional));
+    emit("dummy", "compressional_energy", energy_unit<D>, 1,
+         std::move(energies.dummy_compressional));
   }
 }
 

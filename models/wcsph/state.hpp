@@ -4,13 +4,11 @@
 
 #include "core/particle_sets.hpp"
 #include "core/state_field.hpp"
+#include "core/units.hpp"
 
 #include <tuple>
 
 namespace revsph::wcsph {
-
-template <int D>
-inline constexpr const char* mass_unit = D == 1 ? "kg/m^2" : (D == 2 ? "kg/m" : "kg");
 
 // The fluid: positions and velocities evolve (eqs. 1b, 1c); masses (per unit depth in 2D) and the
 // density integration constants C_a = rho0 - rho_a(t = 0) of eq. (5) are constants.

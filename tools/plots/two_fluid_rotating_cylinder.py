@@ -32,6 +32,8 @@ Usage: /usr/bin/python3 tools/plots/two_fluid_rotating_cylinder.py [--make-runs]
                             spin term off (it repairs eq. 34's torque; beside the central form its
                             fixed spin drives the fluid past the wall) and viscous_number 0.02
                             (0.125 blew the small vessel up at step 11): six times the steps
+  cylinder-interp-grip      cylinder-interp with the wall's friction at L0 and the wall turning
+                            rigidly (interpenetrating phases are undiluted already)
 Writes into --out (default docs/figures):
   two_fluid_rotating_cylinder.png  the normal fluid alone against Navier-Stokes; |v| against r at
                                    0.5 s and 5 s; the slope against t; the scan: vortex strength
@@ -87,6 +89,10 @@ GRIP = {f"cylinder-grip-{k}": [v] for k, v in GRIP_OPTIONS.items()}
 GRIP["cylinder-grip-all"] = list(GRIP_OPTIONS.values())
 GRIP["cylinder-grip-all-central"] = [*GRIP_OPTIONS.values(), "physics.viscosity_form=central",
                                      "spin.coefficient=0", "discretisation.viscous_number=0.02"]
+# The next experiment the wall-grip runs point to (README): the interpenetrating mixture, whose
+# normal fluid is not locked to superfluid particles, with the wall's grip (undiluted already).
+GRIP["cylinder-interp-grip"] = [GRIP_OPTIONS["wall-l"], GRIP_OPTIONS["rigid"]]
+INTERPENETRATING["cylinder-interp-grip"] = (0.01, 4.76e-9)
 RUNS.update({name: (0.01, 4.76e-9) for name in GRIP})
 RHO_S = RHO - RHO_N
 ALPHA, KAPPA, L0, BETA_V = 0.0968, 9.9693e-8, 1.0e10, 4.76e-9  # the case's mutual friction
