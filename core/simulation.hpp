@@ -64,7 +64,12 @@ concept Model = requires(M& model, const M& const_model) {
   // Forget cached quantities derived from the state (after the state was replaced).
   model.invalidate_derived();
   { const_model.info() } -> std::convertible_to<const SimulationInfo&>;
-  // The time reversal: negate odd variables (normally apply_time_reversal of the state).
+};
+
+// Optional: a time reversal of the model's own. Without it the reversal negates the state's odd
+// variables (apply_time_reversal), which is all a model whose state is its declaration needs.
+template <class M>
+concept HasOwnTimeReversal = requires(M& model) {
   model.reverse_time();
 };
 
@@ -201,7 +206,13 @@ public:
     }
   }
 
-  void reverse_time() override { model_.reverse_time(); }
+  void reverse_time() override {
+    if constexpr (HasOwnTimeReversal<M>) {
+      model_.reverse_time();
+    } else {
+      apply_time_reversal(model_.state());
+    }
+  }
   StateSnapshot capture_state() override { return revsph::capture_state(model_.state()); }
   void restore_state(const StateSnapshot& snapshot) override {
     revsph::restore_state(model_.state(), snapshot);

@@ -5,6 +5,7 @@
 // patterns. Capture, restore and the time reversal are generic over any declared state
 // (core/particle_sets.hpp).
 
+#include "core/arithmetic.hpp"
 #include "core/particle_sets.hpp"
 #include "core/state_field.hpp"
 
@@ -13,6 +14,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace revsph {
@@ -92,13 +94,18 @@ void restore_state(State& state, const StateSnapshot& snapshot) {
 
 // The time reversal R: negate every odd variable (design note §2). Throws on the one raw value
 // whose negation overflows.
-template <class Arith, DeclaredState State>
+// The arithmetic follows from the stored values: doubles (the float variant) or fixed-point
+// integers.
+template <DeclaredState State>
 void apply_time_reversal(State& state) {
   for_each_field(state, [](auto& field) {
     if (field.info().parity != Parity::odd) {
       return;
     }
     for (auto& value : field.all()) {
+      using Arith =
+          std::conditional_t<std::is_floating_point_v<std::remove_cvref_t<decltype(value)>>,
+                             FloatArithmetic, FixedArithmetic>;
       if (!Arith::try_negate(value)) {
         throw std::overflow_error("time reversal: " + field.info().name +
                                   " holds INT64_MIN, whose negation does not fit");

@@ -435,11 +435,6 @@ void Model<D>::drift(double dt) {
 }
 
 template <int D>
-void Model<D>::reverse_time() {
-  apply_time_reversal<FixedArithmetic>(state_);
-}
-
-template <int D>
 typename Model<D>::Thermodynamics Model<D>::thermodynamics() {
   update_geometry();
   const std::span<const std::uint32_t> slots = layout_.slots_of_set(gas_set);

@@ -63,7 +63,6 @@ public:
     geometry_valid_ = false;
     layout_current_ = false;
   }
-  void reverse_time();
 
   void kick(double dt);
   void drift(double dt);

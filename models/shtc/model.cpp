@@ -317,11 +317,6 @@ bool Model<D>::relax(ExactDistortion<D>& distortion, std::int64_t& dissipated, d
 }
 
 template <int D>
-void Model<D>::reverse_time() {
-  apply_time_reversal<FixedArithmetic>(state_);
-}
-
-template <int D>
 void Model<D>::update_constants() {
   if (constants_valid_) {
     return;

@@ -67,7 +67,6 @@ public:
     geometry_valid_ = false;
     force_valid_ = false;
   }
-  void reverse_time();
 
   void kick(double dt);
   void drift(double dt);

@@ -161,11 +161,6 @@ void Model<D, Arith>::update_copy(int to, double dt) {
 }
 
 template <int D, class Arith>
-void Model<D, Arith>::reverse_time() {
-  apply_time_reversal<Arith>(state_);
-}
-
-template <int D, class Arith>
 void Model<D, Arith>::update_constants() {
   if (constants_valid_) {
     return;

@@ -61,7 +61,6 @@ public:
     density_valid_ = false;
     constants_valid_ = false;
   }
-  void reverse_time();
 
   void drift(double dt);
   // Viscosity and heat conduction over dt from the mean of the copies (irreversible): the same

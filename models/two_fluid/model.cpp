@@ -260,11 +260,6 @@ void Model<D, Arith>::drift(double dt) {
   impulses_valid_ = false;
 }
 
-template <int D, class Arith>
-void Model<D, Arith>::reverse_time() {
-  apply_time_reversal<Arith>(state_);
-}
-
 template class Model<2, FixedArithmetic>;
 template class Model<3, FixedArithmetic>;
 template class Model<2, FloatArithmetic>;

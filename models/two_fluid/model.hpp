@@ -50,7 +50,6 @@ public:
     impulses_valid_ = false;
     constants_valid_ = false;
   }
-  void reverse_time();
 
   void kick(double dt);
   void drift(double dt);

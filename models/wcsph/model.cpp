@@ -76,11 +76,6 @@ void Model<D, Arith>::drift(double dt) {
 }
 
 template <int D, class Arith>
-void Model<D, Arith>::reverse_time() {
-  apply_time_reversal<Arith>(state_);
-}
-
-template <int D, class Arith>
 void Model<D, Arith>::update_constants() {
   if (constants_valid_) {
     return;

@@ -55,7 +55,6 @@ public:
     derived_valid_ = false;
     constants_valid_ = false;
   }
-  void reverse_time();
   // The active Shepard filter every shepard_every steps (App. A; irreversible where active).
   static std::span<const StepHook<Model>> step_hooks();
   void filter_velocity(std::int64_t step);
