@@ -34,6 +34,18 @@ inline bool try_to_fixed(double value, const Scale& scale, std::int64_t& raw) {
   return true;
 }
 
+// raw = ceil(value / unit), for an increment that rounding must never make smaller (the entropy
+// a dissipative step adds: rounded up, the total entropy never falls by rounding); false if it
+// would reach 2^62 in magnitude (room left for the sums it joins) or value is not finite.
+inline bool try_round_up_to_fixed(double value, const Scale& scale, std::int64_t& raw) {
+  const double units = std::ceil(value * scale.inverse_unit());
+  if (!(std::fabs(units) < 0x1p62)) {
+    return false;
+  }
+  raw = static_cast<std::int64_t>(units);
+  return true;
+}
+
 inline double to_real(std::int64_t raw, const Scale& scale) {
   return static_cast<double>(raw) * scale.unit();
 }

@@ -171,7 +171,6 @@ void Model<D>::dissipate(double tau) {
   // increment is rounded up, so that rounding never lowers the total entropy.
   const double heat_capacity = parameters_.heat_capacity();
   const fixedpoint::Scale& s_scale = entropy.info().scale;
-  const double per_entropy_unit = 1.0 / fixedpoint::to_real(1, s_scale);
   FaultRecorder faults;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < slots.size(); ++i) {
@@ -187,10 +186,9 @@ void Model<D>::dissipate(double tau) {
     const double heat = dissipation_sums_.value(D, s) - 0.5 * impulse_squared / gas_mass[i];
     const double thermal = gas_mass[i] * heat_capacity * temperature_[s];
     const double change = gas_mass[i] * heat_capacity * std::log1p(heat / thermal);
-    const double units = std::ceil(change * per_entropy_unit);
-    if (!fits || !std::isfinite(units) || std::fabs(units) > 0x1p62 ||
-        !fixedpoint::try_add(entropy.at(0, i), static_cast<std::int64_t>(units),
-                             entropy.at(0, i))) {
+    std::int64_t increment = 0;
+    if (!fits || !fixedpoint::try_round_up_to_fixed(change, s_scale, increment) ||
+        !fixedpoint::try_add(entropy.at(0, i), increment, entropy.at(0, i))) {
       faults.record(i, "gas", "entropy", "overflow or non-finite value in the dissipation");
     }
   }

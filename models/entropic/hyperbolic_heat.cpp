@@ -109,7 +109,6 @@ void Model<D>::relax_flux(double dt) {
   Field& flux = state_.gas.entropy_flux;
   Field& entropy = state_.gas.entropy;
   const fixedpoint::Scale& w_scale = flux.info().scale;
-  const double per_entropy_unit = 1.0 / fixedpoint::to_real(1, entropy.info().scale);
   const double heat_capacity = parameters_.heat_capacity();
   const double c_w = parameters_.flux_energy_coefficient;
   FaultRecorder faults;
@@ -131,11 +130,11 @@ void Model<D>::relax_flux(double dt) {
     }
     const double heat = c_w * volume_[s] * (before - after);
     const double thermal = gas_mass[i] * heat_capacity * temperature_[s];
-    const double units =
-        std::ceil(gas_mass[i] * heat_capacity * std::log1p(heat / thermal) * per_entropy_unit);
-    if (!fits || !std::isfinite(units) || std::fabs(units) > 0x1p62 ||
-        !fixedpoint::try_add(entropy.at(0, i), static_cast<std::int64_t>(units),
-                             entropy.at(0, i))) {
+    std::int64_t increment = 0;
+    if (!fits ||
+        !fixedpoint::try_round_up_to_fixed(gas_mass[i] * heat_capacity * std::log1p(heat / thermal),
+                                           entropy.info().scale, increment) ||
+        !fixedpoint::try_add(entropy.at(0, i), increment, entropy.at(0, i))) {
       faults.record(i, "gas", "entropy", "overflow or non-finite value in the relaxation");
     }
   }

@@ -57,13 +57,9 @@ bool Model<D, Arith>::add_entropy(std::size_t i, double ds) {
     return false;
   }
   if constexpr (Arith::kind == Arithmetic::fixed) {
-    // Rounded up: rounding never lowers the total entropy.
-    const double raw = std::ceil(ds * s1.info().scale.inverse_unit());
-    if (!(std::abs(raw) < 0x1.0p62)) {
-      return false;
-    }
-    const auto increment = static_cast<std::int64_t>(raw);
-    return fixedpoint::try_add(s1.at(0, i), increment, s1.at(0, i)) &&
+    std::int64_t increment = 0;
+    return fixedpoint::try_round_up_to_fixed(ds, s1.info().scale, increment) &&
+           fixedpoint::try_add(s1.at(0, i), increment, s1.at(0, i)) &&
            fixedpoint::try_add(s2.at(0, i), increment, s2.at(0, i));
   } else {
     s1.at(0, i) += ds;
