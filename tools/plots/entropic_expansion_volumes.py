@@ -43,13 +43,15 @@ from revsph_runs import (  # noqa: E402
 
 VOLUMES = ["mass", "entropic", "direct", "mixed"]
 SLICES = np.linspace(0.0, 2.0, 11)
-# expansion-small at dr = 0.025: the gas block and the slit wall move with dr (README,
-# "Expansion at lower resolution").
-REFINED = ["--set", "discretisation.dr=0.0125", "--set", "particles[0].max=[0.9875, 1.0]",
-           "--set", "particles[2].min=[0.9875, 0.0]", "--set", "particles[2].max=[1.0125, 0.4]",
-           "--set", "particles[3].min=[0.9875, 0.6]", "--set", "particles[3].max=[1.0125, 1.0]",
-           "--set", "initial.pressure=30.0", "--set", "output.snapshot_every=1000",
-           "--t-end", "15"]
+# expansion-small at dr = 0.0125: the gas block and the slit wall move with dr (README,
+# "Expansion at lower resolution"). REFINED_CASE is the case alone, without output and end time,
+# so that entropic_expansion_dt.py runs the same case.
+REFINED_CASE = ["--set", "discretisation.dr=0.0125", "--set", "particles[0].max=[0.9875, 1.0]",
+                "--set", "particles[2].min=[0.9875, 0.0]",
+                "--set", "particles[2].max=[1.0125, 0.4]",
+                "--set", "particles[3].min=[0.9875, 0.6]",
+                "--set", "particles[3].max=[1.0125, 1.0]", "--set", "initial.pressure=30.0"]
+REFINED = [*REFINED_CASE, "--set", "output.snapshot_every=1000", "--t-end", "15"]
 RUNS = {v: ["run", "expansion-small", *REFINED, "--set", f"physics.particle_volume={v}"]
         for v in VOLUMES}
 
