@@ -100,6 +100,21 @@ std::string format_number(double value) {
   return out.str();
 }
 
+std::string positive_or_why(const double& value) {
+  return value > 0.0 ? std::string() : "must be > 0 (got " + format_number(value) + ")";
+}
+
+std::string non_negative_or_why(double value, std::string_view zero_means) {
+  if (value >= 0.0 && std::isfinite(value)) {
+    return {};
+  }
+  std::string reason = "must be a finite number >= 0";
+  if (!zero_means.empty()) {
+    reason += " (0: " + std::string(zero_means) + ")";
+  }
+  return reason + " (got " + format_number(value) + ")";
+}
+
 CaseError::CaseError(std::string file, std::string key, std::string reason)
     : std::runtime_error(file + ": " + (key.empty() ? std::string() : key + ": ") + reason),
       file_(std::move(file)), key_(std::move(key)), reason_(std::move(reason)) {}
@@ -227,8 +242,8 @@ double CaseFile::number_or(std::string_view key, double fallback) const {
 
 double CaseFile::positive_number(std::string_view key) const {
   const double value = number(key);
-  if (!(value > 0.0)) {
-    fail(key, "must be > 0 (got " + format_number(value) + ")");
+  if (const std::string why = positive_or_why(value); !why.empty()) {
+    fail(key, why);
   }
   return value;
 }
@@ -236,12 +251,8 @@ double CaseFile::positive_number(std::string_view key) const {
 double CaseFile::non_negative_number_or(std::string_view key, double fallback,
                                         std::string_view zero_means) const {
   const double value = number_or(key, fallback);
-  if (!(value >= 0.0 && std::isfinite(value))) {
-    std::string reason = "must be a finite number >= 0";
-    if (!zero_means.empty()) {
-      reason += " (0: " + std::string(zero_means) + ")";
-    }
-    fail(key, reason + " (got " + format_number(value) + ")");
+  if (const std::string why = non_negative_or_why(value, zero_means); !why.empty()) {
+    fail(key, why);
   }
   return value;
 }

@@ -30,6 +30,11 @@ namespace revsph {
 
 // A number as the error messages write it ("0.001", "1e+20").
 std::string format_number(double value);
+// "" if the value is acceptable, else the one-line reason: > 0; a finite number >= 0, with what 0
+// does ("no heater") if anything. CaseFile's readers and the key checks (core/case_key.hpp) share
+// them.
+std::string positive_or_why(const double& value);
+std::string non_negative_or_why(double value, std::string_view zero_means = {});
 
 class KeyTable;
 struct KeyDecl;

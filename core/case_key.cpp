@@ -1,7 +1,5 @@
 #include "core/case_key.hpp"
 
-#include <cmath>
-
 namespace revsph {
 
 std::string expected_one_of(const std::vector<std::string>& names, const std::string& got) {
@@ -15,20 +13,9 @@ std::string expected_one_of(const std::vector<std::string>& names, const std::st
   return "expected " + list + ", got \"" + got + "\"";
 }
 
-std::string positive_or_why(const double& value) {
-  return value > 0.0 ? std::string() : "must be > 0 (got " + format_number(value) + ")";
-}
-
 KeyCheck<double> non_negative(std::string zero_means) {
   return [zero_means = std::move(zero_means)](const double& value) {
-    if (value >= 0.0 && std::isfinite(value)) {
-      return std::string();
-    }
-    std::string reason = "must be a finite number >= 0";
-    if (!zero_means.empty()) {
-      reason += " (0: " + zero_means + ")";
-    }
-    return reason + " (got " + format_number(value) + ")";
+    return non_negative_or_why(value, zero_means);
   };
 }
 

@@ -112,8 +112,7 @@ public:
   }
 };
 
-// "must be > 0 (got -1)": the check of a required positive number (as CaseFile::positive_number).
-std::string positive_or_why(const double& value);
+// positive_or_why (core/case_file.hpp) checks a positive number.
 // A finite number >= 0 (a rate, a power, an amplitude); `zero_means` says in the error what 0
 // does ("no heater"), if anything (as CaseFile::non_negative_number_or).
 KeyCheck<double> non_negative(std::string zero_means = {});
