@@ -33,6 +33,18 @@ public:
 
   std::size_t count() const { return count_; }
 
+  // Component c of one carrier, raw or as a physical value (what SlotLayout::build gathers into
+  // slot order without a per-carrier copy).
+  Raw raw(int component, std::size_t carrier) const {
+    const std::size_t set = set_of(carrier);
+    return fields_[set]->at(component, carrier - firsts_[set]);
+  }
+  double real(int component, std::size_t carrier) const {
+    const std::size_t set = set_of(carrier);
+    return Arith::real(fields_[set]->at(component, carrier - firsts_[set]),
+                       fields_[set]->info().scale);
+  }
+
   // Component c of every carrier, in carrier order, as physical values, into `out` (its
   // capacity reused from call to call).
   void fill_reals(int component, std::vector<double>& out) const {
@@ -91,6 +103,14 @@ public:
   }
 
 private:
+  std::size_t set_of(std::size_t carrier) const {
+    std::size_t set = fields_.size() - 1;
+    while (carrier < firsts_[set]) {
+      --set;
+    }
+    return set;
+  }
+
   std::vector<const StateField<Raw>*> fields_;
   std::vector<std::size_t> firsts_;
   std::size_t count_ = 0;

@@ -16,4 +16,10 @@ std::size_t available_memory_bytes();
 // "1.5 GB"
 std::string format_bytes(double bytes);
 
+// Gives a container's storage back (`c = {}` or clear() keep a vector's capacity).
+template <class Container>
+void free_storage(Container& container) {
+  Container().swap(container);
+}
+
 } // namespace revsph

@@ -130,6 +130,9 @@ public:
   virtual void advance(std::int64_t steps) = 0;
   virtual void reverse_time() = 0;
   virtual StateSnapshot capture_state() = 0;
+  // The state without a copy of its fixed-point fields (revsph::borrow_state): valid only until
+  // the state changes (for a snapshot write or a hash).
+  virtual StateSnapshot borrow_state() = 0;
   virtual void restore_state(const StateSnapshot& snapshot) = 0;
   virtual EnergyBudget energy() = 0;
   // Hands the physical views to `sink` one by one (see ViewSink).
@@ -214,6 +217,7 @@ public:
     }
   }
   StateSnapshot capture_state() override { return revsph::capture_state(model_.state()); }
+  StateSnapshot borrow_state() override { return revsph::borrow_state(model_.state()); }
   void restore_state(const StateSnapshot& snapshot) override {
     revsph::restore_state(model_.state(), snapshot);
     model_.invalidate_derived();

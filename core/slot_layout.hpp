@@ -16,6 +16,7 @@
 #include "core/geometry.hpp"
 #include "core/pair_list.hpp"
 
+#include <concepts>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -35,12 +36,24 @@ struct SetParticle {
   std::uint32_t index;
 };
 
-// A per-carrier array and where to put it in slot order (SlotLayout::build).
-template <class T>
+// Per-carrier values and where to put them in slot order (SlotLayout::build): an array
+// (by_carrier[c]) or a function of the carrier (by_carrier(c): a carrier field's raw values, say,
+// or whether the carrier is in a set), which saves a per-carrier copy of what the state holds.
+template <class T, class Source = std::span<const T>>
 struct Gathered {
-  std::span<const T> by_carrier;
+  Source by_carrier;
   std::vector<T>* by_slot;
+
+  T operator()(std::size_t carrier) const {
+    if constexpr (std::invocable<const Source&, std::size_t>) {
+      return by_carrier(carrier);
+    } else {
+      return by_carrier[carrier];
+    }
+  }
 };
+template <class T, class Source>
+Gathered(Source, std::vector<T>*) -> Gathered<T, Source>;
 
 template <int D>
 class SlotLayout {
@@ -54,14 +67,19 @@ public:
   // closer than `radius`. A carrier outside the domain becomes a SimulationFault (step unknown)
   // naming its set and index. Each `gathered` per-carrier array is copied into slot order in the
   // same pass (the masses and constants a model's pair terms read: no separate region each).
-  template <class Coordinate, class... T>
-  void build(const Coordinate& coordinate, double radius, Gathered<T>... gathered);
+  template <class Coordinate, class... T, class... Source>
+  void build(const Coordinate& coordinate, double radius, Gathered<T, Source>... gathered);
   // The same from the carriers' position field (one per carrier set, core/carrier_field.hpp).
-  template <class Arith, class... T>
-  void build(const CarrierField<Arith>& position, double radius, Gathered<T>... gathered) {
-    position.template fill_reals<D>(carrier_position_);
-    build([this](int axis, std::size_t carrier) { return carrier_position_[axis][carrier]; },
+  template <class Arith, class... T, class... Source>
+  void build(const CarrierField<Arith>& position, double radius, Gathered<T, Source>... gathered) {
+    build([&position](int axis, std::size_t carrier) { return position.real(axis, carrier); },
           radius, gathered...);
+  }
+  // Whether a carrier belongs to a set, for Gathered: 1 or 0.
+  auto in_set(std::size_t set) const {
+    return [first = first_carrier_[set], end = first_carrier_[set + 1]](std::size_t carrier) {
+      return static_cast<std::uint8_t>(carrier >= first && carrier < end);
+    };
   }
 
   std::size_t carrier_count() const { return carrier_count_; }
@@ -109,7 +127,6 @@ private:
   std::vector<std::size_t> first_carrier_; // one per set, then the total
   std::size_t carrier_count_ = 0;
   CellList<D> cells_;
-  CoordinateArrays<D> carrier_position_; // scratch of build(CarrierField)
   CoordinateArrays<D> slot_position_;
   std::vector<std::uint32_t> slot_of_carrier_;
   std::vector<SetParticle> particle_in_slot_;
@@ -117,8 +134,9 @@ private:
 };
 
 template <int D>
-template <class Coordinate, class... T>
-void SlotLayout<D>::build(const Coordinate& coordinate, double radius, Gathered<T>... gathered) {
+template <class Coordinate, class... T, class... Source>
+void SlotLayout<D>::build(const Coordinate& coordinate, double radius,
+                          Gathered<T, Source>... gathered) {
   try {
     cells_.build(carrier_count_, coordinate);
   } catch (const PointOutsideDomain& outside) {
@@ -140,7 +158,7 @@ void SlotLayout<D>::build(const Coordinate& coordinate, double radius, Gathered<
     }
     const std::size_t set = set_of_carrier(carrier[s]);
     slot_of_carrier_[carrier[s]] = static_cast<std::uint32_t>(s);
-    (((*gathered.by_slot)[s] = gathered.by_carrier[carrier[s]]), ...);
+    (((*gathered.by_slot)[s] = gathered(carrier[s])), ...);
     particle_in_slot_[s] = {static_cast<std::uint32_t>(set),
                             static_cast<std::uint32_t>(carrier[s] - first_carrier_[set])};
   }

@@ -7,6 +7,7 @@
 #include <array>
 #include <fstream>
 #include <set>
+#include <span>
 
 namespace revsph {
 
@@ -28,27 +29,45 @@ Handle open_or_create_group(hid_t parent, const std::string& name) {
 }
 
 // Rows are particles: (count, components), or (count,) for scalars, the shape h5py users and
-// XDMF expect. Storage is component-major, hence the transpose.
-template <class Value>
+// XDMF expect. Storage is component-major: column(c) gives component c of every particle, and
+// HDF5 writes it into its column of the dataset (a hyperslab), so no transposed copy is made.
+template <class Value, class Column>
 void write_matrix(hid_t group, const std::string& name, hid_t file_type, hid_t memory_type,
-                  std::size_t count, int components, const std::vector<Value>& component_major) {
-  std::vector<Value> rows(component_major.size());
-  for (std::size_t i = 0; i < count; ++i) {
-    for (int c = 0; c < components; ++c) {
-      rows[i * static_cast<std::size_t>(components) + static_cast<std::size_t>(c)] =
-          component_major[static_cast<std::size_t>(c) * count + i];
-    }
-  }
+                  std::size_t count, int components, const Column& column) {
   const std::array<hsize_t, 2> dims{count, static_cast<hsize_t>(components)};
   const Handle space(H5Screate_simple(components == 1 ? 1 : 2, dims.data(), nullptr), H5Sclose,
                      "cannot create a dataspace for " + name);
   const Handle dataset(
       H5Dcreate2(group, name.c_str(), file_type, space.id(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
       H5Dclose, "cannot create dataset " + name);
-  if (!rows.empty() &&
-      H5Dwrite(dataset.id(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, rows.data()) < 0) {
-    throw Hdf5Error("cannot write dataset " + name);
+  if (count == 0) {
+    return;
   }
+  const hsize_t length = count;
+  const Handle memory(H5Screate_simple(1, &length, nullptr), H5Sclose,
+                      "cannot create a dataspace for " + name);
+  for (int c = 0; c < components; ++c) {
+    const std::span<const Value> values = column(c);
+    if (components > 1) {
+      const std::array<hsize_t, 2> start{0, static_cast<hsize_t>(c)};
+      const std::array<hsize_t, 2> size{count, 1};
+      if (H5Sselect_hyperslab(space.id(), H5S_SELECT_SET, start.data(), nullptr, size.data(),
+                              nullptr) < 0) {
+        throw Hdf5Error("cannot select column " + std::to_string(c) + " of " + name);
+      }
+    }
+    if (H5Dwrite(dataset.id(), memory_type, memory.id(), space.id(), H5P_DEFAULT, values.data()) <
+        0) {
+      throw Hdf5Error("cannot write dataset " + name);
+    }
+  }
+}
+
+// Component c of a component-major array of `count` particles.
+template <class Value>
+std::span<const Value> component_of(std::span<const Value> component_major, std::size_t count,
+                                    int c) {
+  return component_major.subspan(static_cast<std::size_t>(c) * count, count);
 }
 
 std::vector<std::int64_t> read_raw_matrix(hid_t group, const std::string& name, std::size_t count,
@@ -81,8 +100,9 @@ std::vector<std::int64_t> read_raw_matrix(hid_t group, const std::string& name, 
 void write_state_field(hid_t file, const FieldSnapshot& field) {
   const Handle state = open_or_create_group(file, "state");
   const Handle set = open_or_create_group(state.id(), field.info.particle_set);
-  write_matrix(set.id(), field.info.name, H5T_STD_I64LE, H5T_NATIVE_INT64, field.count,
-               field.info.components, field.bits);
+  write_matrix<std::int64_t>(set.id(), field.info.name, H5T_STD_I64LE, H5T_NATIVE_INT64,
+                             field.count, field.info.components,
+                             [&](int c) { return component_of(field.raw(), field.count, c); });
   const Handle dataset(H5Dopen2(set.id(), field.info.name.c_str(), H5P_DEFAULT), H5Dclose,
                        "cannot reopen dataset " + field.info.name);
   hdf5::write_string_attribute(dataset.id(), "unit", field.info.unit);
@@ -95,27 +115,36 @@ void write_state_field(hid_t file, const FieldSnapshot& field) {
                                field.kind == RawKind::fixed_point ? "fixed_point" : "ieee_double");
 }
 
-void write_view(hid_t file, const ParticleView& view, std::size_t count) {
+// A dataset /particles/SET/NAME of `components` columns given one at a time by column(c).
+template <class Column>
+void write_view_columns(hid_t file, const std::string& particle_set, const std::string& name,
+                        const std::string& unit, std::size_t count, int components,
+                        const Column& column) {
   const Handle particles = open_or_create_group(file, "particles");
-  const Handle set = open_or_create_group(particles.id(), view.particle_set);
-  write_matrix(set.id(), view.name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, count, view.components,
-               view.values);
-  const Handle dataset(H5Dopen2(set.id(), view.name.c_str(), H5P_DEFAULT), H5Dclose,
-                       "cannot reopen dataset " + view.name);
-  hdf5::write_string_attribute(dataset.id(), "unit", view.unit);
+  const Handle set = open_or_create_group(particles.id(), particle_set);
+  write_matrix<double>(set.id(), name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, count, components,
+                       column);
+  const Handle dataset(H5Dopen2(set.id(), name.c_str(), H5P_DEFAULT), H5Dclose,
+                       "cannot reopen dataset " + name);
+  hdf5::write_string_attribute(dataset.id(), "unit", unit);
 }
 
-// Physical values of a state field, for people.
-ParticleView view_of_field(const FieldSnapshot& field) {
-  ParticleView view{
-      field.info.particle_set, field.info.name, field.info.unit, field.info.components, {}};
-  view.values.reserve(field.bits.size());
-  for (int c = 0; c < field.info.components; ++c) {
-    for (std::size_t i = 0; i < field.count; ++i) {
-      view.values.push_back(field.real(c, i));
-    }
-  }
-  return view;
+void write_view(hid_t file, const ParticleView& view, std::size_t count) {
+  write_view_columns(
+      file, view.particle_set, view.name, view.unit, count, view.components,
+      [&](int c) { return component_of(std::span<const double>(view.values), count, c); });
+}
+
+// Physical values of a state field, for people, converted one component at a time.
+void write_view_of_field(hid_t file, const FieldSnapshot& field) {
+  std::vector<double> column(field.count);
+  write_view_columns(file, field.info.particle_set, field.info.name, field.info.unit, field.count,
+                     field.info.components, [&](int c) {
+                       for (std::size_t i = 0; i < field.count; ++i) {
+                         column[i] = field.real(c, i);
+                       }
+                       return std::span<const double>(column);
+                     });
 }
 
 void write_metadata(hid_t file, const SnapshotMetadata& m, const StateSnapshot& state) {
@@ -285,7 +314,7 @@ std::vector<XdmfParticleSet> write_snapshot(const std::filesystem::path& path,
     write_metadata(file.id(), metadata, state);
     for (const FieldSnapshot& field : state.fields) {
       write_state_field(file.id(), field);
-      write_view(file.id(), view_of_field(field), field.count);
+      write_view_of_field(file.id(), field);
       set_of(field.info.particle_set, field.count)
           .fields.push_back({field.info.name, field.info.components});
     }

@@ -12,6 +12,7 @@
 #include <bit>
 #include <concepts>
 #include <cstdint>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -25,10 +26,16 @@ struct FieldSnapshot {
   VariableInfo info;
   RawKind kind = RawKind::fixed_point;
   std::size_t count = 0;
-  std::vector<std::int64_t> bits; // component-major, like StateField
+  std::vector<std::int64_t> bits; // component-major, like StateField (a copy; empty if borrowed)
+  // The state's own storage instead of a copy (borrow_state): valid while the state is unchanged.
+  std::span<const std::int64_t> borrowed;
 
+  // The raw values, whether copied or borrowed.
+  std::span<const std::int64_t> raw() const {
+    return borrowed.data() != nullptr ? borrowed : std::span<const std::int64_t>(bits);
+  }
   std::int64_t at(int component, std::size_t particle) const {
-    return bits[static_cast<std::size_t>(component) * count + particle];
+    return raw()[static_cast<std::size_t>(component) * count + particle];
   }
   // The physical value of one entry.
   double real(int component, std::size_t particle) const;
@@ -68,6 +75,26 @@ StateSnapshot capture_state(State& state) {
   return snapshot;
 }
 
+// The same without copying the fixed-point fields: each borrows its field's storage, so the
+// snapshot is only valid while the state is unchanged (what a snapshot write or a hash needs; a
+// copy of the whole state would be the peak of a run's memory). Double fields are copied (their
+// bits are not int64 objects).
+template <DeclaredState State>
+StateSnapshot borrow_state(State& state) {
+  StateSnapshot snapshot;
+  for_each_field(state, [&](auto& field) {
+    using Raw = typename std::remove_cvref_t<decltype(field)>::value_type;
+    if constexpr (std::same_as<Raw, std::int64_t>) {
+      FieldSnapshot borrowed{field.info(), RawKind::fixed_point, field.count(), {}, {}};
+      borrowed.borrowed = std::span<const std::int64_t>(field.all());
+      snapshot.fields.push_back(std::move(borrowed));
+    } else {
+      snapshot.fields.push_back(snapshot_of(field));
+    }
+  });
+  return snapshot;
+}
+
 // Throws std::invalid_argument if the snapshot does not have the same declared fields
 // (set, name, components, scale, raw kind) in the same order.
 void require_same_layout(const FieldSnapshot& expected, const FieldSnapshot& found);
@@ -81,10 +108,11 @@ void restore_state(State& state, const StateSnapshot& snapshot) {
       throw std::invalid_argument("snapshot has fewer fields than the model declares");
     }
     const FieldSnapshot& source = snapshot.fields[index++];
-    require_same_layout(snapshot_of(field), source);
+    require_same_layout(FieldSnapshot{field.info(), raw_kind_of<Raw>(), field.count(), {}, {}},
+                        source);
     auto values = field.all();
     for (std::size_t i = 0; i < values.size(); ++i) {
-      values[i] = std::bit_cast<Raw>(source.bits[i]);
+      values[i] = std::bit_cast<Raw>(source.raw()[i]);
     }
   });
   if (index != snapshot.fields.size()) {

@@ -54,7 +54,7 @@ StateComparison compare_states(const StateSnapshot& expected, const StateSnapsho
       result.layout_error = error.what();
       return result;
     }
-    VariableDifference difference{e.info.particle_set, e.info.name, 0, e.bits.size(), 0, 0.0,
+    VariableDifference difference{e.info.particle_set, e.info.name, 0, e.raw().size(), 0, 0.0,
                                   e.info.unit,         {}};
     for (std::size_t i = 0; i < e.count; ++i) {
       for (int c = 0; c < e.info.components; ++c) {
@@ -87,7 +87,7 @@ StateComparison compare_states(const StateSnapshot& expected, const StateSnapsho
         }
       }
     }
-    result.compared_values += e.bits.size();
+    result.compared_values += e.raw().size();
     if (difference.differing_values > 0) {
       result.identical = false;
       result.differences.push_back(std::move(difference));

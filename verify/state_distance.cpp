@@ -18,7 +18,7 @@ VariableDistance distance_of(const FieldSnapshot& from, const FieldSnapshot& to)
   distance.unit = from.info.unit;
   distance.evolved = from.info.evolved;
   distance.particles = from.count;
-  distance.total_values = from.bits.size();
+  distance.total_values = from.raw().size();
   double sum_of_squares = 0.0;
   double reference_sum_of_squares = 0.0;
   double units_sum_of_squares = 0.0;

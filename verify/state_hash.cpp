@@ -66,9 +66,9 @@ std::string state_hash(const StateSnapshot& state) {
     sha.add_integer(field.info.scale.exponent());
     sha.add_integer(field.kind == RawKind::fixed_point ? 0 : 1);
     if constexpr (std::endian::native == std::endian::little) {
-      sha.add(field.bits.data(), field.bits.size() * sizeof(std::int64_t));
+      sha.add(field.raw().data(), field.raw().size() * sizeof(std::int64_t));
     } else {
-      for (const std::int64_t value : field.bits) {
+      for (const std::int64_t value : field.raw()) {
         sha.add_integer(value);
       }
     }

@@ -85,12 +85,6 @@ void Model<D, Arith>::update_constants() {
     wall_position[k] = CarrierField<Arith>{&state_.wall.position}.reals(k);
   }
   walls_.place(std::move(wall_position));
-  mass_ = CarrierField<Arith>{&state_.fluid.mass, &state_.dummy.mass}.reals();
-  density_constant_ =
-      CarrierField<Arith>{&state_.fluid.density_constant, &state_.dummy.density_constant}.raws();
-  is_fluid_.assign(mass_.size(), 0);
-  const std::span<std::uint8_t> fluid = layout_.part_of_set(std::span(is_fluid_), fluid_set);
-  std::fill(fluid.begin(), fluid.end(), 1);
   constants_valid_ = true;
 }
 
@@ -100,10 +94,15 @@ void Model<D, Arith>::update_derived() {
     return;
   }
   update_constants();
-  layout_.build(carrier_position(), parameters_.support_radius,
-                Gathered<double>{mass_, &slot_mass_},
-                Gathered<Raw>{density_constant_, &slot_density_constant_},
-                Gathered<std::uint8_t>{is_fluid_, &slot_is_fluid_});
+  // The masses and density constants are gathered straight from the state (no per-carrier copy).
+  const CarrierField<Arith> mass{&state_.fluid.mass, &state_.dummy.mass};
+  const CarrierField<Arith> density_constant{&state_.fluid.density_constant,
+                                             &state_.dummy.density_constant};
+  layout_.build(
+      carrier_position(), parameters_.support_radius,
+      Gathered{[&](std::size_t c) { return mass.real(0, c); }, &slot_mass_},
+      Gathered{[&](std::size_t c) { return density_constant.raw(0, c); }, &slot_density_constant_},
+      Gathered{layout_.in_set(fluid_set), &slot_is_fluid_});
   const std::size_t carriers = layout_.slot_count();
   walls_.find_near(layout_, parameters_.wall.radius);
 
@@ -238,66 +237,76 @@ void Model<D, Arith>::filter_velocity(std::int64_t step) {
 }
 
 template <int D, class Arith>
-typename Model<D, Arith>::ParticleEnergies Model<D, Arith>::particle_energies() {
+double Model<D, Arith>::fluid_velocity(int axis, std::size_t a) const {
+  return Arith::real(state_.fluid.velocity.at(axis, a), state_.fluid.velocity.info().scale);
+}
+
+// One kind of energy per particle at a time: a snapshot holds one view, not five.
+template <int D, class Arith>
+std::vector<double> Model<D, Arith>::particle_energy(EnergyOf what) {
   update_derived();
-  const WallPotential wall = parameters_.wall_potential();
-  const std::array<std::vector<double>, D> velocity = real_velocity();
-  const std::size_t n = fluid_count();
-  const std::span<const double> mass = of_set(mass_, fluid_set);
-  const std::span<const double> rho = of_set(density(), fluid_set);
-  ParticleEnergies energies{std::vector<double>(n),
-                            std::vector<double>(n),
-                            std::vector<double>(n),
-                            std::vector<double>(n),
-                            {}};
-  for (std::size_t a = 0; a < n; ++a) {
-    const double m = mass[a];
-    double v_squared = 0.0;
-    for (int k = 0; k < D; ++k) {
-      v_squared += velocity[k][a] * velocity[k][a];
+  const CarrierMass mass{*this, fluid_set};
+  std::vector<double> energy(fluid_count());
+  switch (what) {
+  case EnergyOf::kinetic:
+    for (std::size_t a = 0; a < energy.size(); ++a) {
+      double v_squared = 0.0;
+      for (int k = 0; k < D; ++k) {
+        v_squared += fluid_velocity(k, a) * fluid_velocity(k, a);
+      }
+      energy[a] = 0.5 * mass[a] * v_squared;
     }
-    energies.kinetic[a] = 0.5 * m * v_squared;
-    energies.gravitational[a] =
-        m * parameters_.gravity * (fluid_position(D - 1, a) - parameters_.gravity_reference_height);
-    energies.compressional[a] =
-        m * compressional_energy_per_mass(rho[a], parameters_.rest_density,
-                                          parameters_.sound_speed); // eq. (3)
+    break;
+  case EnergyOf::gravitational:
+    for (std::size_t a = 0; a < energy.size(); ++a) {
+      energy[a] = mass[a] * parameters_.gravity *
+                  (fluid_position(D - 1, a) - parameters_.gravity_reference_height);
+    }
+    break;
+  case EnergyOf::compressional:
+  case EnergyOf::dummy_compressional: {
+    // Eq. (3); dummy particles store compressional energy too (their rho follows the fluid).
+    const std::size_t set = what == EnergyOf::compressional ? fluid_set : dummy_set;
+    const CarrierMass m{*this, set};
+    const std::span<const double> rho = of_set(density(), set);
+    energy.resize(rho.size());
+    for (std::size_t a = 0; a < rho.size(); ++a) {
+      energy[a] = m[a] * compressional_energy_per_mass(rho[a], parameters_.rest_density,
+                                                       parameters_.sound_speed);
+    }
+    break;
   }
-  // Eq. (7), attributed to the fluid particle.
-  PairSums<FloatArithmetic, 1> wall_sums(SummedQuantity{"wall_energy", fixedpoint::Scale()});
-  sum_cross_pairs<FloatArithmetic>(layout_, WallEnergyTerm<D>{slot_mass_, slot_is_fluid_, wall},
-                                   wall_sums, walls_.cross_pairs());
-  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
-  for (std::size_t i = 0; i < fluid.size(); ++i) {
-    energies.wall[i] = wall_sums.value(0, fluid[i]);
+  case EnergyOf::wall: {
+    // Eq. (7), attributed to the fluid particle.
+    PairSums<FloatArithmetic, 1> wall_sums(SummedQuantity{"wall_energy", fixedpoint::Scale()});
+    sum_cross_pairs<FloatArithmetic>(
+        layout_, WallEnergyTerm<D>{slot_mass_, slot_is_fluid_, parameters_.wall_potential()},
+        wall_sums, walls_.cross_pairs());
+    const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+    for (std::size_t i = 0; i < fluid.size(); ++i) {
+      energy[i] = wall_sums.value(0, fluid[i]);
+    }
+    break;
   }
-  // Dummy particles store compressional energy too (their rho follows the fluid).
-  const std::span<const double> dummy_mass = of_set(mass_, dummy_set);
-  const std::span<const double> dummy_density = of_set(density(), dummy_set);
-  for (std::size_t d = 0; d < dummy_density.size(); ++d) {
-    energies.dummy_compressional.push_back(
-        dummy_mass[d] * compressional_energy_per_mass(dummy_density[d], parameters_.rest_density,
-                                                      parameters_.sound_speed));
   }
-  return energies;
+  return energy;
 }
 
 template <int D, class Arith>
 EnergyBudget Model<D, Arith>::energy() {
-  const ParticleEnergies energies = particle_energies();
   // Serial sums in particle order: the same value for any thread count.
-  auto total = [](const std::vector<double>& values) {
+  auto total = [&](EnergyOf what) {
     double sum = 0.0;
-    for (const double value : values) {
+    for (const double value : particle_energy(what)) {
       sum += value;
     }
     return sum;
   };
   return EnergyBudget{
-      {{"kinetic", total(energies.kinetic)},
-       {"gravitational", total(energies.gravitational)},
-       {"compressional", total(energies.compressional) + total(energies.dummy_compressional)},
-       {"wall", total(energies.wall)}}};
+      {{"kinetic", total(EnergyOf::kinetic)},
+       {"gravitational", total(EnergyOf::gravitational)},
+       {"compressional", total(EnergyOf::compressional) + total(EnergyOf::dummy_compressional)},
+       {"wall", total(EnergyOf::wall)}}};
 }
 
 template <int D, class Arith>
@@ -309,37 +318,45 @@ void Model<D, Arith>::derived_views(const ViewSink& sink) {
     }
     return pressure;
   };
-  auto component_major = [](const std::array<std::vector<double>, D>& vectors) {
-    std::vector<double> values;
-    for (int k = 0; k < D; ++k) {
-      values.insert(values.end(), vectors[k].begin(), vectors[k].end());
-    }
-    return values;
-  };
   // Each view is built, handed over and freed before the next (the snapshot write is the peak of
   // a run's memory).
   auto emit = [&](const char* set, const char* name, std::string unit, int components,
                   std::vector<double>&& values) {
     sink(ParticleView{set, name, std::move(unit), components, std::move(values)});
   };
-  ParticleEnergies energies = particle_energies();
+  update_derived();
   const std::span<const double> fluid_density = of_set(density(), fluid_set);
   emit("fluid", "density", "kg/m^3", 1, {fluid_density.begin(), fluid_density.end()});
   emit("fluid", "pressure", "Pa", 1, pressure_of(fluid_density));
-  emit("fluid", "acceleration", "m/s^2", D, component_major(acceleration()));
-  emit("fluid", "kinetic_energy", energy_unit<D>, 1, std::move(energies.kinetic));
-  emit("fluid", "gravitational_energy", energy_unit<D>, 1, std::move(energies.gravitational));
-  emit("fluid", "compressional_energy", energy_unit<D>, 1, std::move(energies.compressional));
-  emit("fluid", "wall_energy", energy_unit<D>, 1, std::move(energies.wall));
+  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  std::vector<double> acceleration(D * fluid.size());
+  for (int k = 0; k < D; ++k) {
+    for (std::size_t i = 0; i < fluid.size(); ++i) {
+      acceleration[k * fluid.size() + i] = acceleration_sums_.value(k, fluid[i]);
+    }
+  }
+  emit("fluid", "acceleration", "m/s^2", D, std::move(acceleration));
+  emit("fluid", "kinetic_energy", energy_unit<D>, 1, particle_energy(EnergyOf::kinetic));
+  emit("fluid", "gravitational_energy", energy_unit<D>, 1,
+       particle_energy(EnergyOf::gravitational));
+  emit("fluid", "compressional_energy", energy_unit<D>, 1,
+       particle_energy(EnergyOf::compressional));
+  emit("fluid", "wall_energy", energy_unit<D>, 1, particle_energy(EnergyOf::wall));
   if (parameters_.shepard_every > 0) {
-    emit("fluid", "filtered_velocity", "m/s", D, component_major(filtered_velocity()));
+    std::array<std::vector<double>, D> filtered = filtered_velocity();
+    std::vector<double> values;
+    for (int k = 0; k < D; ++k) {
+      values.insert(values.end(), filtered[k].begin(), filtered[k].end());
+      filtered[k] = {};
+    }
+    emit("fluid", "filtered_velocity", "m/s", D, std::move(values));
   }
   const std::span<const double> dummy_density = of_set(density(), dummy_set);
   if (!dummy_density.empty()) {
     emit("dummy", "density", "kg/m^3", 1, {dummy_density.begin(), dummy_density.end()});
     emit("dummy", "pressure", "Pa", 1, pressure_of(dummy_density));
     emit("dummy", "compressional_energy", energy_unit<D>, 1,
-         std::move(energies.dummy_compressional));
+         particle_energy(EnergyOf::dummy_compressional));
   }
 }
 
@@ -356,7 +373,7 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics() {
     update_derived();
     const std::array<std::vector<double>, D> velocity = real_velocity();
     const std::array<std::vector<double>, D> filtered = filtered_velocity();
-    const std::span<const double> mass = of_set(mass_, fluid_set);
+    const CarrierMass mass{*this, fluid_set};
     const std::span<const double> rho = of_set(density(), fluid_set);
     double raw_sum = 0.0;
     double filtered_sum = 0.0;

@@ -72,10 +72,7 @@ private:
   static void drift_substep(Model& model, double dt) { model.drift(dt); }
   static void shepard_hook(Model& model, std::int64_t step) { model.filter_velocity(step); }
   static std::string shepard_filter_acts(const Model& model);
-  struct ParticleEnergies {
-    std::vector<double> kinetic, gravitational, compressional, wall;
-    std::vector<double> dummy_compressional;
-  };
+  enum class EnergyOf { kinetic, gravitational, compressional, wall, dummy_compressional };
   std::size_t fluid_count() const { return state_.fluid.position.count(); }
   double fluid_position(int axis, std::size_t a) const {
     return Arith::real(state_.fluid.position.at(axis, a), state_.fluid.position.info().scale);
@@ -86,7 +83,17 @@ private:
   }
   void update_derived();
   void update_constants();
-  ParticleEnergies particle_energies();
+  // The masses of one set's particles, m[i], read from their slots (after update_derived).
+  struct CarrierMass {
+    const Model& model;
+    std::size_t set;
+    double operator[](std::size_t i) const {
+      return model.slot_mass_[model.layout_.slots_of_set(set)[i]];
+    }
+  };
+  // Per fluid particle (per dummy for dummy_compressional).
+  std::vector<double> particle_energy(EnergyOf what);
+  double fluid_velocity(int axis, std::size_t a) const;
   std::array<std::vector<double>, D> real_velocity() const;
   std::array<std::vector<double>, D> filtered_velocity();
 
@@ -96,11 +103,8 @@ private:
   WendlandQuintic<D> kernel_;
   std::optional<WendlandQuintic<D>> anti_clump_kernel_;
 
-  // Constant parts (wall positions, masses), converted once.
+  // The wall positions, converted once.
   bool constants_valid_ = false;
-  std::vector<double> mass_;           // carriers: fluid then dummies
-  std::vector<Raw> density_constant_;  // carriers, C_a of eq. (5)
-  std::vector<std::uint8_t> is_fluid_; // carriers
   // Derived from the state, recomputed after every drift. The pair loops run over the carriers
   // in cell order (slots, core/slot_layout.hpp); the state and everything the model reports stay
   // in the canonical particle order.

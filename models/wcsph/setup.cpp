@@ -2,6 +2,7 @@
 
 #include "core/case_values.hpp"
 #include "core/dimension.hpp"
+#include "core/memory.hpp"
 #include "core/particle_blocks.hpp"
 #include "core/run_settings.hpp"
 #include "core/state_fill.hpp"
@@ -41,6 +42,7 @@ InitialFields<D> initial_fields(const Parameters<D>& parameters,
                                 const std::vector<Vec<D>>& fluid_positions,
                                 const std::vector<Vec<D>>& dummy_positions) {
   InitialFields<D> fields{std::vector<Vec<D>>(fluid_positions.size()), {}};
+  fields.target_density.reserve(fluid_positions.size() + dummy_positions.size());
   // The Gresho vortex is two-dimensional (parameters.cpp refuses it in 1D and 3D).
   const bool gresho = D == 2 && parameters.initial_field == InitialField::gresho_vortex;
   auto target = [&](const Vec<D>& p) {
@@ -142,7 +144,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   using Raw = typename Arith::Raw;
   const Parameters<D> parameters = read_parameters<D>(case_file);
   const double reach = parameters.support_radius / parameters.dr; // support radius over dr
-  const auto blocks = read_particle_blocks<D>(
+  auto blocks = read_particle_blocks<D>(
       case_file, parameters.dr, parameters.domain, particle_kinds,
       {bytes_per_particle(D, reach), options.memory_budget_bytes, neighbour_list_bytes(D, reach)});
   // Particles of each set in block order; masses are rho0 times the lattice cell volume.
@@ -160,6 +162,9 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
       dummy_masses.insert(dummy_masses.end(), block.positions.size(), mass);
     }
   }
+  // Every copy made during the set-up is freed before the model's first pair sums (the peak of
+  // the set-up's memory would otherwise hold the particles three times over).
+  free_storage(blocks);
   if (fluid_positions.empty()) {
     case_file.fail("particles", "the case has no fluid particles");
   }
@@ -186,7 +191,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
                                parameters.isc_with_dummies ? dummy_masses : no_masses,
                                setup_report);
   }
-  const InitialFields<D> initial = initial_fields<D>(parameters, fluid_positions, dummy_positions);
+  InitialFields<D> initial = initial_fields<D>(parameters, fluid_positions, dummy_positions);
 
   State<D, Raw> state;
   const fixedpoint::Scale mass_scale =
@@ -207,6 +212,12 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   fill_vector_field<Arith, D>(case_file, "particles", dummy_positions, state.dummy.position);
   fill_scalar_field<Arith>(case_file, "physics.rest_density", dummy_masses, state.dummy.mass);
   state.dummy.density_constant.resize(dummy_positions.size());
+  free_storage(fluid_positions);
+  free_storage(wall_positions);
+  free_storage(dummy_positions);
+  free_storage(fluid_masses);
+  free_storage(dummy_masses);
+  free_storage(initial.velocity);
 
   SimulationInfo info;
   info.case_name = case_name(case_file);

@@ -63,6 +63,8 @@ def main():
     parser.add_argument("--steps", type=int, default=20)
     parser.add_argument("--revsph", default=str(ROOT / "build" / "bin" / "revsph"))
     parser.add_argument("--set", action="append", default=[], dest="overrides")
+    parser.add_argument("--stacks", type=int, default=0,
+                        help="also print the N largest allocation sites at the peak")
     args = parser.parse_args()
     env = dict(os.environ, GOMP_SPINCOUNT=os.environ.get("GOMP_SPINCOUNT", "1000"))
     overrides = [item for pair in args.overrides for item in ("--set", pair)]
@@ -82,12 +84,16 @@ def main():
                         str(work / "peak.txt"), "--flamegraph-cost-type", "peak"], check=True,
                        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         groups = collections.Counter()
+        sites = collections.Counter()
         for line in (work / "peak.txt").read_text().splitlines():
             stack, cost = line.rsplit(" ", 1)
             frames = stack.split(";")
             name = next((component for fragment, component in COMPONENTS
                          if any(fragment in frame for frame in frames)), "other")
             groups[name] += int(cost)
+            # The site: the innermost frames of revsph's own code (namespace revsph).
+            own = [frame.split("(")[0][-70:] for frame in frames if "revsph::" in frame]
+            sites[" < ".join(reversed(own[-3:]))] += int(cost)
 
     particles = sum(summary["particles"].values())
     heap = sum(groups.values())
@@ -98,6 +104,8 @@ def main():
     for name, cost in groups.most_common():
         print(f"{name:52s} {cost / 1e6:8.2f} {cost / particles:11.1f}")
     print(f"{'heap at its peak (heaptrack)':52s} {heap / 1e6:8.2f} {heap / particles:11.1f}")
+    for site, cost in sites.most_common(args.stacks):
+        print(f"  {cost / particles:7.1f} B/particle  {site}")
     if rss:
         print(f"{'peak resident size of the run (summary.json)':52s} {rss / 1e6:8.2f} "
               f"{rss / particles:11.1f}")

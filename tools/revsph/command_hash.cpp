@@ -40,7 +40,7 @@ int hash_command(const HashOptions& options) {
     print_error(std::string("the run stopped: ") + fault.what());
     return simulation_failed;
   }
-  std::cout << state_hash(simulation.capture_state()) << "\n";
+  std::cout << state_hash(simulation.borrow_state()) << "\n";
   return success;
 }
 

@@ -77,7 +77,7 @@ int run_command(const RunOptions& options) {
   summary.start_step = simulation.steps_taken();
   summary.steps_requested = steps;
   summary.threads = thread_count();
-  summary.initial_hash = state_hash(simulation.capture_state());
+  summary.initial_hash = state_hash(simulation.borrow_state());
 
   RunHooks hooks;
   hooks.energy_log = &energy;
@@ -115,7 +115,7 @@ int run_command(const RunOptions& options) {
   }
   summary.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  summary.final_hash = state_hash(simulation.capture_state());
+  summary.final_hash = state_hash(simulation.borrow_state());
   summary.snapshots_written = output.snapshot_count();
   if (const auto last = output.last_snapshot()) {
     summary.last_snapshot = last->string();

@@ -68,7 +68,7 @@ void RunOutput::write_snapshot(Simulation& simulation) {
   if (last_step_ == step) {
     return;
   }
-  const StateSnapshot state = simulation.capture_state();
+  const StateSnapshot state = simulation.borrow_state();
   SnapshotMetadata metadata = base_;
   metadata.step = step;
   metadata.time = simulation.time();
