@@ -41,6 +41,8 @@ template <class Arith, int K>
 class PairSums {
   static_assert(K >= 1 && K <= 32, "a pair loop sums 1 to 32 quantities");
   static constexpr bool exact = Arith::kind == Arithmetic::fixed;
+  // In floating point a single quantity's totals are its values (no second array).
+  static constexpr bool values_are_totals = !exact && K == 1;
 
 public:
   using Raw = typename Arith::Raw;
@@ -55,8 +57,20 @@ public:
       : PairSums(std::array<SummedQuantity, 1>{quantity}) {}
 
   // Quantity q of slot s after the loop (zero for a slot the term does not receive).
-  double value(int q, std::size_t slot) const { return values_[q][slot]; }
-  std::span<const double> values(int q) const { return values_[q]; }
+  double value(int q, std::size_t slot) const {
+    if constexpr (values_are_totals) {
+      return totals_[slot];
+    } else {
+      return values_[q][slot];
+    }
+  }
+  std::span<const double> values(int q) const {
+    if constexpr (values_are_totals) {
+      return totals_;
+    } else {
+      return values_[q];
+    }
+  }
   // The exact total of quantity q in slot s, in raw units of its scale (fixed point; valid after
   // the loop for a slot whose sums converted): what a state update adds without a rounding of
   // its own (a momentum kick made of pair impulses, say).
@@ -98,18 +112,23 @@ public:
   // The two halves of reset for a pair loop that runs in one parallel region: resize before it,
   // zero_in_team in it (by every thread of the team).
   void resize(std::size_t n) {
+    slots_ = n;
     totals_.resize(n * K);
-    invalid_.resize(n);
+    if constexpr (exact) {
+      invalid_.resize(n); // floating-point totals carry their own verdict (not finite)
+    }
     resize_values(n);
   }
   void zero_in_team() {
-    const std::size_t n = invalid_.size();
+    const std::size_t n = slots_;
 #pragma omp for schedule(static)
     for (std::size_t s = 0; s < n; ++s) {
       for (int q = 0; q < K; ++q) {
         totals_[s * K + q] = Total{};
       }
-      invalid_[s] = 0;
+      if constexpr (exact) {
+        invalid_[s] = 0;
+      }
     }
   }
   void add(std::size_t slot, int q, double term) {
@@ -153,32 +172,43 @@ public:
   // Converts slot s's totals into values(); false for the first quantity that overflowed or is
   // not finite (its index in `failed`).
   bool convert(std::size_t slot, int& failed) {
-    for (int q = 0; q < K; ++q) {
-      double& value = values_[q][slot];
-      if constexpr (exact) {
-        if ((invalid_[slot] >> q) & 1u) {
-          failed = q;
-          return false;
-        }
-        value = fixedpoint::to_real(totals_[slot * K + q], quantities_[q].scale);
-      } else {
-        value = totals_[slot * K + q];
-        if (!std::isfinite(value)) {
-          failed = q;
-          return false;
+    if constexpr (values_are_totals) {
+      failed = 0;
+      return std::isfinite(totals_[slot]);
+    } else {
+      for (int q = 0; q < K; ++q) {
+        double& value = values_[q][slot];
+        if constexpr (exact) {
+          if ((invalid_[slot] >> q) & 1u) {
+            failed = q;
+            return false;
+          }
+          value = fixedpoint::to_real(totals_[slot * K + q], quantities_[q].scale);
+        } else {
+          value = totals_[slot * K + q];
+          if (!std::isfinite(value)) {
+            failed = q;
+            return false;
+          }
         }
       }
+      return true;
     }
-    return true;
   }
   void resize_values(std::size_t n) {
-    for (int q = 0; q < K; ++q) {
-      values_[q].resize(n);
+    if constexpr (!values_are_totals) {
+      for (int q = 0; q < K; ++q) {
+        values_[q].resize(n);
+      }
     }
   }
   void clear_values(std::size_t slot) {
-    for (int q = 0; q < K; ++q) {
-      values_[q][slot] = 0.0;
+    if constexpr (values_are_totals) {
+      totals_[slot] = 0.0;
+    } else {
+      for (int q = 0; q < K; ++q) {
+        values_[q][slot] = 0.0;
+      }
     }
   }
 
@@ -195,9 +225,10 @@ private:
 
   std::array<SummedQuantity, K> quantities_;
   std::array<double, K> inverse_unit_{};
+  std::size_t slots_ = 0;
   std::vector<Total> totals_;          // slot-major: quantity q of slot s at s * K + q
-  std::vector<std::uint32_t> invalid_; // per slot, one bit per quantity
-  std::array<std::vector<double>, K> values_;
+  std::vector<std::uint32_t> invalid_; // per slot, one bit per quantity (fixed point)
+  std::array<std::vector<double>, values_are_totals ? 0 : K> values_;
 };
 
 } // namespace revsph

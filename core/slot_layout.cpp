@@ -27,16 +27,6 @@ SlotLayout<D>::SlotLayout(const Box<D>& domain, double cell_size, std::vector<Ca
 }
 
 template <int D>
-std::size_t SlotLayout<D>::set_of_carrier(std::size_t carrier) const {
-  // The last set starting at or before the carrier (sets are few: a linear scan).
-  std::size_t set = 0;
-  while (set + 1 < sets_.size() && carrier >= first_carrier_[set + 1]) {
-    ++set;
-  }
-  return set;
-}
-
-template <int D>
 std::pair<const char*, std::size_t> SlotLayout<D>::particle_of_carrier(std::size_t carrier) const {
   const std::size_t set = set_of_carrier(carrier);
   return {sets_[set].name.c_str(), carrier - first_carrier_[set]};
@@ -45,7 +35,7 @@ std::pair<const char*, std::size_t> SlotLayout<D>::particle_of_carrier(std::size
 template <int D>
 void SlotLayout<D>::record_fault(FaultRecorder& faults, std::size_t slot, const char* variable,
                                  const char* reason) const {
-  const SetParticle particle = particle_in_slot_[slot];
+  const SetParticle particle = particle_in_slot(slot);
   faults.record(particle.index, sets_[particle.set].name.c_str(), variable, reason);
 }
 

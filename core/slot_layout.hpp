@@ -87,8 +87,15 @@ public:
   const std::vector<CarrierSet>& sets() const { return sets_; }
   // The first carrier of set k: set k's particle i is carrier first_carrier(k) + i.
   std::size_t first_carrier(std::size_t set) const { return first_carrier_[set]; }
-  // The set of a carrier (an index into sets()).
-  std::size_t set_of_carrier(std::size_t carrier) const;
+  // The set of a carrier (an index into sets()): the last set starting at or before it (sets are
+  // few: a linear scan).
+  std::size_t set_of_carrier(std::size_t carrier) const {
+    std::size_t set = 0;
+    while (set + 1 < sets_.size() && carrier >= first_carrier_[set + 1]) {
+      ++set;
+    }
+    return set;
+  }
   // The part of a per-carrier array that belongs to one set, in the set's order.
   template <class T>
   std::span<T> part_of_set(std::span<T> by_carrier, std::size_t set) const {
@@ -98,7 +105,25 @@ public:
   std::span<const std::uint32_t> carrier_of_slot() const { return cells_.sorted_points(); }
   // The particle in slot s. With it a loop over slots reaches each particle's own set without
   // asking which set an index falls in.
-  SetParticle particle_in_slot(std::size_t slot) const { return particle_in_slot_[slot]; }
+  SetParticle particle_in_slot(std::size_t slot) const {
+    const std::size_t carrier = cells_.sorted_points()[slot];
+    const std::size_t set = set_of_carrier(carrier);
+    return {static_cast<std::uint32_t>(set),
+            static_cast<std::uint32_t>(carrier - first_carrier_[set])};
+  }
+  // A per-slot array read in one set's particle order: values[i] is the value of the set's
+  // particle i (a density or a mass for an output, without a copy in canonical order).
+  template <class T>
+  struct InSetOrder {
+    std::span<const T> by_slot;
+    std::span<const std::uint32_t> slots;
+    T operator[](std::size_t i) const { return by_slot[slots[i]]; }
+    std::size_t size() const { return slots.size(); }
+  };
+  template <class T>
+  InSetOrder<T> in_set_order(std::span<const T> by_slot, std::size_t set) const {
+    return {by_slot, slots_of_set(set)};
+  }
   // The slot of each particle of a set, in the set's order: loops over one set's particles (the
   // moving ones that take an acceleration, the walls that do work) read their slots from here.
   std::span<const std::uint32_t> slots_of_set(std::size_t set) const {
@@ -129,7 +154,6 @@ private:
   CellList<D> cells_;
   CoordinateArrays<D> slot_position_;
   std::vector<std::uint32_t> slot_of_carrier_;
-  std::vector<SetParticle> particle_in_slot_;
   HalfPairList pairs_;
 };
 
@@ -149,18 +173,14 @@ void SlotLayout<D>::build(const Coordinate& coordinate, double radius,
     slot_position_[k].resize(carrier_count_);
   }
   slot_of_carrier_.resize(carrier_count_);
-  particle_in_slot_.resize(carrier_count_);
   (gathered.by_slot->resize(carrier_count_), ...);
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < carrier_count_; ++s) {
     for (int k = 0; k < D; ++k) {
       slot_position_[k][s] = coordinate(k, carrier[s]);
     }
-    const std::size_t set = set_of_carrier(carrier[s]);
     slot_of_carrier_[carrier[s]] = static_cast<std::uint32_t>(s);
     (((*gathered.by_slot)[s] = gathered(carrier[s])), ...);
-    particle_in_slot_[s] = {static_cast<std::uint32_t>(set),
-                            static_cast<std::uint32_t>(carrier[s] - first_carrier_[set])};
   }
   pairs_.build<D>(cells_, position(), radius);
 }

@@ -40,7 +40,7 @@ void Model<D, Arith>::initialise_density_constants(std::span<const double> targe
   for (const auto& [set, field] : {std::pair{fluid_set, &state_.fluid.density_constant},
                                    std::pair{dummy_set, &state_.dummy.density_constant}}) {
     const std::span<const double> wanted = layout_.part_of_set(target, set);
-    const std::span<const double> rho = of_set(density(), set);
+    const auto rho = density_of_set(set);
     for (std::size_t i = 0; i < rho.size(); ++i) {
       set_density_constant<Arith>(*field, i, wanted[i], rho[i]);
     }
@@ -140,10 +140,11 @@ void Model<D, Arith>::update_derived() {
 }
 
 template <int D, class Arith>
-const std::vector<double>& Model<D, Arith>::density() {
+std::vector<double> Model<D, Arith>::density() {
   update_derived();
-  layout_.scatter(density_sums_.values(0), density_);
-  return density_;
+  std::vector<double> density;
+  layout_.scatter(density_sums_.values(0), density);
+  return density;
 }
 
 template <int D, class Arith>
@@ -245,7 +246,7 @@ double Model<D, Arith>::fluid_velocity(int axis, std::size_t a) const {
 template <int D, class Arith>
 std::vector<double> Model<D, Arith>::particle_energy(EnergyOf what) {
   update_derived();
-  const CarrierMass mass{*this, fluid_set};
+  const auto mass = mass_of_set(fluid_set);
   std::vector<double> energy(fluid_count());
   switch (what) {
   case EnergyOf::kinetic:
@@ -267,8 +268,8 @@ std::vector<double> Model<D, Arith>::particle_energy(EnergyOf what) {
   case EnergyOf::dummy_compressional: {
     // Eq. (3); dummy particles store compressional energy too (their rho follows the fluid).
     const std::size_t set = what == EnergyOf::compressional ? fluid_set : dummy_set;
-    const CarrierMass m{*this, set};
-    const std::span<const double> rho = of_set(density(), set);
+    const auto m = mass_of_set(set);
+    const auto rho = density_of_set(set);
     energy.resize(rho.size());
     for (std::size_t a = 0; a < rho.size(); ++a) {
       energy[a] = m[a] * compressional_energy_per_mass(rho[a], parameters_.rest_density,
@@ -311,7 +312,14 @@ EnergyBudget Model<D, Arith>::energy() {
 
 template <int D, class Arith>
 void Model<D, Arith>::derived_views(const ViewSink& sink) {
-  auto pressure_of = [&](std::span<const double> density) {
+  auto in_canonical_order = [](const auto& values) {
+    std::vector<double> copy(values.size());
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      copy[i] = values[i];
+    }
+    return copy;
+  };
+  auto pressure_of = [&](const auto& density) {
     std::vector<double> pressure(density.size());
     for (std::size_t a = 0; a < density.size(); ++a) {
       pressure[a] = tait_pressure(density[a], parameters_.rest_density, parameters_.sound_speed);
@@ -325,9 +333,8 @@ void Model<D, Arith>::derived_views(const ViewSink& sink) {
     sink(ParticleView{set, name, std::move(unit), components, std::move(values)});
   };
   update_derived();
-  const std::span<const double> fluid_density = of_set(density(), fluid_set);
-  emit("fluid", "density", "kg/m^3", 1, {fluid_density.begin(), fluid_density.end()});
-  emit("fluid", "pressure", "Pa", 1, pressure_of(fluid_density));
+  emit("fluid", "density", "kg/m^3", 1, in_canonical_order(density_of_set(fluid_set)));
+  emit("fluid", "pressure", "Pa", 1, pressure_of(density_of_set(fluid_set)));
   const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
   std::vector<double> acceleration(D * fluid.size());
   for (int k = 0; k < D; ++k) {
@@ -351,10 +358,9 @@ void Model<D, Arith>::derived_views(const ViewSink& sink) {
     }
     emit("fluid", "filtered_velocity", "m/s", D, std::move(values));
   }
-  const std::span<const double> dummy_density = of_set(density(), dummy_set);
-  if (!dummy_density.empty()) {
-    emit("dummy", "density", "kg/m^3", 1, {dummy_density.begin(), dummy_density.end()});
-    emit("dummy", "pressure", "Pa", 1, pressure_of(dummy_density));
+  if (!layout_.slots_of_set(dummy_set).empty()) {
+    emit("dummy", "density", "kg/m^3", 1, in_canonical_order(density_of_set(dummy_set)));
+    emit("dummy", "pressure", "Pa", 1, pressure_of(density_of_set(dummy_set)));
     emit("dummy", "compressional_energy", energy_unit<D>, 1,
          particle_energy(EnergyOf::dummy_compressional));
   }
@@ -373,8 +379,8 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics() {
     update_derived();
     const std::array<std::vector<double>, D> velocity = real_velocity();
     const std::array<std::vector<double>, D> filtered = filtered_velocity();
-    const CarrierMass mass{*this, fluid_set};
-    const std::span<const double> rho = of_set(density(), fluid_set);
+    const auto mass = mass_of_set(fluid_set);
+    const auto rho = density_of_set(fluid_set);
     double raw_sum = 0.0;
     double filtered_sum = 0.0;
     for (std::size_t a = 0; a < fluid_count(); ++a) {

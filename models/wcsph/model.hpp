@@ -64,7 +64,7 @@ public:
   void drift(double dt);
 
   // Derived quantities at the current positions, fluid particles first, then dummies.
-  const std::vector<double>& density();
+  std::vector<double> density();
   const std::array<std::vector<double>, D>& acceleration();
 
 private:
@@ -83,14 +83,14 @@ private:
   }
   void update_derived();
   void update_constants();
-  // The masses of one set's particles, m[i], read from their slots (after update_derived).
-  struct CarrierMass {
-    const Model& model;
-    std::size_t set;
-    double operator[](std::size_t i) const {
-      return model.slot_mass_[model.layout_.slots_of_set(set)[i]];
-    }
-  };
+  // One set's masses and densities in its particle order, read from the slots (after
+  // update_derived).
+  auto mass_of_set(std::size_t set) const {
+    return layout_.in_set_order(std::span<const double>(slot_mass_), set);
+  }
+  auto density_of_set(std::size_t set) const {
+    return layout_.in_set_order(density_sums_.values(0), set);
+  }
   // Per fluid particle (per dummy for dummy_compressional).
   std::vector<double> particle_energy(EnergyOf what);
   double fluid_velocity(int axis, std::size_t a) const;
@@ -126,8 +126,7 @@ private:
   PairSums<Arith, D> acceleration_sums_;
   std::vector<double> pressure_over_density_squared_; // slots
   std::vector<double> inverse_density_squared_;       // slots, with the anti-clump force
-  // For the outputs, filled on demand by density() and acceleration().
-  std::vector<double> density_;                     // carriers, canonical order
+  // For acceleration(), filled on demand.
   std::array<std::vector<double>, D> acceleration_; // fluid, canonical order
 };
 
