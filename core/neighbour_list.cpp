@@ -1,6 +1,7 @@
 #include "core/neighbour_list.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 namespace revsph {
@@ -43,6 +44,7 @@ void find_neighbours(const CellList<D>& cells, const CoordinateView<D>& targets,
   const double radius_squared = radius * radius;
   const bool exclude_self = self_pairs == SelfPairs::excluded;
   result.offsets.assign(n + 1, 0);
+  bool too_many = false;
 
   // Two passes (count, then fill) keep the output layout independent of the thread count; one
   // parallel region for both (every region is a barrier: issue 15).
@@ -53,20 +55,26 @@ void find_neighbours(const CellList<D>& cells, const CoordinateView<D>& targets,
       std::size_t count = 0;
       scan_query<D>(cells, targets, queries, a, radius_squared, exclude_self,
                     [&](std::uint32_t, bool accepted) { count += accepted; });
-      result.offsets[a + 1] = count;
+      result.offsets[a + 1] = static_cast<std::uint32_t>(count);
     }
 #pragma omp single
     {
+      std::size_t total = 0;
       for (std::size_t a = 0; a < n; ++a) {
-        result.offsets[a + 1] += result.offsets[a];
+        total += result.offsets[a + 1];
+        too_many = too_many || total > std::numeric_limits<std::uint32_t>::max();
+        result.offsets[a + 1] = static_cast<std::uint32_t>(total);
       }
-      result.indices.resize(result.offsets[n]);
+      result.indices.resize(too_many ? 0 : total);
     }
     // Every candidate is written at the next free place, which advances only when accepted: one
     // spare place past the (known) count suffices.
     std::vector<std::uint32_t> buffer;
 #pragma omp for schedule(static)
     for (std::size_t a = 0; a < n; ++a) {
+      if (too_many) {
+        continue;
+      }
       const std::size_t expected = result.offsets[a + 1] - result.offsets[a];
       buffer.resize(expected + 1);
       std::size_t written = 0;
@@ -79,6 +87,9 @@ void find_neighbours(const CellList<D>& cells, const CoordinateView<D>& targets,
       std::copy(buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(written),
                 result.indices.begin() + static_cast<std::ptrdiff_t>(result.offsets[a]));
     }
+  }
+  if (too_many) {
+    throw std::length_error("find_neighbours: more than 2^32 - 1 pairs in one list");
   }
 }
 
@@ -97,7 +108,7 @@ NeighbourList find_neighbours_brute_force(const CoordinateView<D>& targets,
         result.indices.push_back(static_cast<std::uint32_t>(b));
       }
     }
-    result.offsets.push_back(result.indices.size());
+    result.offsets.push_back(static_cast<std::uint32_t>(result.indices.size()));
   }
   return result;
 }

@@ -15,7 +15,9 @@
 namespace revsph {
 
 struct NeighbourList {
-  std::vector<std::size_t> offsets{0}; // neighbours of query a: indices[offsets[a], offsets[a+1])
+  // Neighbours of query a: indices[offsets[a], offsets[a+1]). 32-bit (4 bytes a query, not 8):
+  // find_neighbours refuses a list of more than 2^32 - 1 pairs.
+  std::vector<std::uint32_t> offsets{0};
   std::vector<std::uint32_t> indices;
 
   std::size_t query_count() const { return offsets.size() - 1; }

@@ -247,4 +247,36 @@ void sum_cross_pairs(const SlotLayout<D>& layout, const Term& term,
   faults.throw_if_any();
 }
 
+// The cross-pair sums of one set's particles in that set's order, in floating point, for an
+// output (the wall energy of each fluid particle, say): each particle's terms are added in
+// ascending target order, as sum_cross_pairs<FloatArithmetic> adds them, but into the result
+// directly, with no per-slot accumulators (a snapshot is a run's memory peak).
+template <int D, class Term>
+requires HasCrossPairs<Term, D> &&(Term::width == 1) std::vector<double> cross_sums_of_set(
+    const SlotLayout<D>& layout, const Term& term, const CrossPairs<D>& cross, std::size_t set) {
+  const std::span<const std::uint32_t> slots = layout.slots_of_set(set);
+  std::vector<double> sums(slots.size(), 0.0);
+  const CoordinateView<D> x = layout.position();
+  FaultRecorder faults;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < slots.size(); ++i) {
+    const std::uint32_t a = slots[i];
+    if (!detail::receives(term, a)) {
+      continue;
+    }
+    PairGeometry<D> pair;
+    std::array<double, 1> to_a{};
+    for (const std::uint32_t w : cross.of_slot->of(a)) {
+      detail::fill_geometry<D>(x, a, cross.targets, w, pair);
+      term.cross_pair(pair, to_a);
+      sums[i] += to_a[0];
+    }
+    if (!std::isfinite(sums[i])) {
+      layout.record_fault(faults, a, "cross-pair sum", "not finite");
+    }
+  }
+  faults.throw_if_any();
+  return sums;
+}
+
 } // namespace revsph

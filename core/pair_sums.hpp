@@ -47,6 +47,9 @@ class PairSums {
 public:
   using Raw = typename Arith::Raw;
   using Total = std::conditional_t<exact, std::int64_t, double>;
+  // One bit per quantity: a byte for up to 8 (most loops), so that the bits cost 1 byte a slot.
+  using Bits = std::conditional_t<K <= 8, std::uint8_t,
+                                  std::conditional_t<K <= 16, std::uint16_t, std::uint32_t>>;
 
   explicit PairSums(const std::array<SummedQuantity, K>& quantities) : quantities_(quantities) {
     for (int q = 0; q < K; ++q) {
@@ -136,7 +139,7 @@ public:
       std::int64_t raw = 0;
       if (!to_fixed(q, term, raw) ||
           __builtin_add_overflow(totals_[slot * K + q], raw, &totals_[slot * K + q])) {
-        invalid_[slot] |= 1u << q;
+        invalid_[slot] |= static_cast<Bits>(1u << q);
       }
     } else {
       totals_[slot * K + q] += term;
@@ -146,7 +149,7 @@ public:
   void add_raw(std::size_t slot, int q, Raw raw) {
     if constexpr (exact) {
       if (__builtin_add_overflow(totals_[slot * K + q], raw, &totals_[slot * K + q])) {
-        invalid_[slot] |= 1u << q;
+        invalid_[slot] |= static_cast<Bits>(1u << q);
       }
     } else {
       totals_[slot * K + q] += raw;
@@ -154,11 +157,11 @@ public:
   }
   void add_local(std::size_t slot, const Local& local) {
     if constexpr (exact) {
-      invalid_[slot] |= local.invalid_;
+      invalid_[slot] |= static_cast<Bits>(local.invalid_);
       for (int q = 0; q < K; ++q) {
         const fixedpoint::int128 total = local.total_[q];
         if (total > INT64_MAX || total < INT64_MIN) {
-          invalid_[slot] |= 1u << q;
+          invalid_[slot] |= static_cast<Bits>(1u << q);
         } else {
           add_raw(slot, q, static_cast<std::int64_t>(total));
         }
@@ -226,8 +229,8 @@ private:
   std::array<SummedQuantity, K> quantities_;
   std::array<double, K> inverse_unit_{};
   std::size_t slots_ = 0;
-  std::vector<Total> totals_;          // slot-major: quantity q of slot s at s * K + q
-  std::vector<std::uint32_t> invalid_; // per slot, one bit per quantity (fixed point)
+  std::vector<Total> totals_; // slot-major: quantity q of slot s at s * K + q
+  std::vector<Bits> invalid_; // per slot, one bit per quantity (fixed point)
   std::array<std::vector<double>, values_are_totals ? 0 : K> values_;
 };
 

@@ -279,14 +279,9 @@ std::vector<double> Model<D, Arith>::particle_energy(EnergyOf what) {
   }
   case EnergyOf::wall: {
     // Eq. (7), attributed to the fluid particle.
-    PairSums<FloatArithmetic, 1> wall_sums(SummedQuantity{"wall_energy", fixedpoint::Scale()});
-    sum_cross_pairs<FloatArithmetic>(
+    energy = cross_sums_of_set(
         layout_, WallEnergyTerm<D>{slot_mass_, slot_is_fluid_, parameters_.wall_potential()},
-        wall_sums, walls_.cross_pairs());
-    const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
-    for (std::size_t i = 0; i < fluid.size(); ++i) {
-      energy[i] = wall_sums.value(0, fluid[i]);
-    }
+        walls_.cross_pairs(), fluid_set);
     break;
   }
   }
