@@ -34,6 +34,7 @@ Usage: /usr/bin/python3 tools/plots/two_fluid_rotating_cylinder.py [--make-runs]
                             (0.125 blew the small vessel up at step 11): six times the steps
   cylinder-interp-grip      cylinder-interp with the wall's friction at L0 and the wall turning
                             rigidly (interpenetrating phases are undiluted already)
+  cylinder-interp-grip-320  the same at 320 particles across (about 80 000 fluid particles)
 Writes into --out (default docs/figures):
   two_fluid_rotating_cylinder.png  the normal fluid alone against Navier-Stokes; |v| against r at
                                    0.5 s and 5 s; the slope against t; the scan: vortex strength
@@ -93,6 +94,9 @@ GRIP["cylinder-grip-all-central"] = [*GRIP_OPTIONS.values(), "physics.viscosity_
 # normal fluid is not locked to superfluid particles, with the wall's grip (undiluted already).
 GRIP["cylinder-interp-grip"] = [GRIP_OPTIONS["wall-l"], GRIP_OPTIONS["rigid"]]
 INTERPENETRATING["cylinder-interp-grip"] = (0.01, 4.76e-9)
+# The same at 320 particles across (dr halved: four times the particles).
+GRIP["cylinder-interp-grip-320"] = [*GRIP["cylinder-interp-grip"], "discretisation.dr=6.25e-6"]
+INTERPENETRATING["cylinder-interp-grip-320"] = (0.01, 4.76e-9)
 RUNS.update({name: (0.01, 4.76e-9) for name in GRIP})
 RHO_S = RHO - RHO_N
 ALPHA, KAPPA, L0, BETA_V = 0.0968, 9.9693e-8, 1.0e10, 4.76e-9  # the case's mutual friction
