@@ -20,6 +20,9 @@ template <int D>
 SlotLayout<D>::SlotLayout(const Box<D>& domain, double cell_size, std::vector<CarrierSet> sets)
     : sets_(std::move(sets)), carrier_count_(total_count(sets_)),
       cells_(domain, cell_size, cell_budget(carrier_count_)) {
+  if (sets_.size() > 255) {
+    throw std::logic_error("a slot layout holds at most 255 particle sets");
+  }
   first_carrier_.push_back(0);
   for (const CarrierSet& set : sets_) {
     first_carrier_.push_back(first_carrier_.back() + set.count);

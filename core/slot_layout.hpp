@@ -15,10 +15,12 @@
 #include "core/fault.hpp"
 #include "core/geometry.hpp"
 #include "core/pair_list.hpp"
+#include "core/particle_sets.hpp"
 
 #include <concepts>
 #include <cstdint>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,6 +30,21 @@ namespace revsph {
 struct CarrierSet {
   std::string name; // the particle set, as the state declares it
   std::size_t count = 0;
+};
+
+// The carrier sets of a layout from the state's own sets (core/particle_sets.hpp), in the order
+// given: their declared names and sizes, so that a model never restates them.
+template <ParticleSet... Sets>
+std::vector<CarrierSet> carrier_sets(Sets&... sets) {
+  return {CarrierSet{std::string(Sets::set.name), set_size(sets)}...};
+}
+
+// Whether a slot holds a particle of one set (SlotLayout::in): what a pair term asks instead of
+// reading a per-slot flag array of its own.
+struct SlotInSet {
+  std::span<const std::uint8_t> set_of_slot;
+  std::uint8_t set = 0;
+  bool operator()(std::uint32_t slot) const { return set_of_slot[slot] == set; }
 };
 
 // A particle named by its set (an index into SlotLayout::sets()) and its index in the set.
@@ -103,11 +120,37 @@ public:
   }
 
   std::span<const std::uint32_t> carrier_of_slot() const { return cells_.sorted_points(); }
+  // A carrier set by the state's set it was declared from (carrier_sets): its index into
+  // sets(). Throws std::logic_error for a set that is not a carrier set of this layout.
+  template <ParticleSet Set>
+  std::size_t index_of(const Set&) const {
+    for (std::size_t k = 0; k < sets_.size(); ++k) {
+      if (sets_[k].name == Set::set.name) {
+        return k;
+      }
+    }
+    throw std::logic_error("particle set " + std::string(Set::set.name) +
+                           " is not a carrier set of this layout");
+  }
+  template <ParticleSet Set>
+  std::span<const std::uint32_t> slots_of(const Set& set) const {
+    return slots_of_set(index_of(set));
+  }
+  template <class T, ParticleSet Set>
+  std::span<T> part_of(std::span<T> by_carrier, const Set& set) const {
+    return part_of_set(by_carrier, index_of(set));
+  }
+  // The set of each slot's particle (an index into sets()), filled by build().
+  std::span<const std::uint8_t> set_of_slot() const { return set_of_slot_; }
+  template <ParticleSet Set>
+  SlotInSet in(const Set& set) const {
+    return {set_of_slot_, static_cast<std::uint8_t>(index_of(set))};
+  }
   // The particle in slot s. With it a loop over slots reaches each particle's own set without
   // asking which set an index falls in.
   SetParticle particle_in_slot(std::size_t slot) const {
     const std::size_t carrier = cells_.sorted_points()[slot];
-    const std::size_t set = set_of_carrier(carrier);
+    const std::size_t set = set_of_slot_[slot];
     return {static_cast<std::uint32_t>(set),
             static_cast<std::uint32_t>(carrier - first_carrier_[set])};
   }
@@ -123,6 +166,10 @@ public:
   template <class T>
   InSetOrder<T> in_set_order(std::span<const T> by_slot, std::size_t set) const {
     return {by_slot, slots_of_set(set)};
+  }
+  template <class T, ParticleSet Set>
+  InSetOrder<T> in_set_order(std::span<const T> by_slot, const Set& set) const {
+    return {by_slot, slots_of(set)};
   }
   // The slot of each particle of a set, in the set's order: loops over one set's particles (the
   // moving ones that take an acceleration, the walls that do work) read their slots from here.
@@ -154,6 +201,7 @@ private:
   CellList<D> cells_;
   CoordinateArrays<D> slot_position_;
   std::vector<std::uint32_t> slot_of_carrier_;
+  std::vector<std::uint8_t> set_of_slot_;
   HalfPairList pairs_;
 };
 
@@ -173,6 +221,7 @@ void SlotLayout<D>::build(const Coordinate& coordinate, double radius,
     slot_position_[k].resize(carrier_count_);
   }
   slot_of_carrier_.resize(carrier_count_);
+  set_of_slot_.resize(carrier_count_);
   (gathered.by_slot->resize(carrier_count_), ...);
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < carrier_count_; ++s) {
@@ -180,6 +229,7 @@ void SlotLayout<D>::build(const Coordinate& coordinate, double radius,
       slot_position_[k][s] = coordinate(k, carrier[s]);
     }
     slot_of_carrier_[carrier[s]] = static_cast<std::uint32_t>(s);
+    set_of_slot_[s] = static_cast<std::uint8_t>(set_of_carrier(carrier[s]));
     (((*gathered.by_slot)[s] = gathered(carrier[s])), ...);
   }
   pairs_.build<D>(cells_, position(), radius);

@@ -39,16 +39,16 @@ struct WallPotential {
 
 // Eq. (7): the wall energy of each moving particle, E_wall (s - 1)^2 / 4 per wall particle within
 // reach, as the one-sided pair term of a sum over wall particles (core/fixed_targets.hpp; a
-// diagnostic, summed in doubles in ascending wall order). `receiving` (by slot; empty: every
-// slot) marks the particles the walls act on.
+// diagnostic, summed in doubles in ascending wall order). `receiving` is the set the walls act
+// on (SlotLayout::in).
 template <int D>
 struct WallEnergyTerm {
   static constexpr int width = 1;
   std::span<const double> mass;
-  std::span<const std::uint8_t> receiving;
+  SlotInSet receiving;
   WallPotential wall;
 
-  bool receives(std::uint32_t s) const { return receiving.empty() || receiving[s] != 0; }
+  bool receives(std::uint32_t s) const { return receiving(s); }
   void cross_pair(const PairGeometry<D>& p, std::array<double, 1>& to_a) const {
     to_a[0] = mass[p.a] * wall.energy_per_fluid_mass(p.r_squared);
   }

@@ -483,8 +483,8 @@ EnergyBudget Model<D>::energy() {
   }
   PairSums<FloatArithmetic, 1> wall_sums(SummedQuantity{"wall_energy", fixedpoint::Scale()});
   sum_cross_pairs<FloatArithmetic>(
-      layout_, WallEnergyTerm<D>{slot_mass_, slot_is_gas_, parameters_.wall_potential()}, wall_sums,
-      walls_.cross_pairs());
+      layout_, WallEnergyTerm<D>{slot_mass_, layout_.in(state_.gas), parameters_.wall_potential()},
+      wall_sums, walls_.cross_pairs());
   double wall = 0.0;
   for (const std::uint32_t s : layout_.slots_of_set(gas_set)) {
     wall += wall_sums.value(0, s);

@@ -15,7 +15,7 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
     : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
       kernel_(parameters_.support_radius),
       layout_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
-              {{"fluid", state_.fluid.position.count()}, {"dummy", state_.dummy.position.count()}}),
+              carrier_sets(state_.fluid, state_.dummy)),
       walls_(parameters_.domain,
              std::max(parameters_.support_radius, parameters_.wall.radius) *
                  parameters_.cell_size_factor,
@@ -37,10 +37,11 @@ void Model<D, Arith>::initialise_density_constants(std::span<const double> targe
   invalidate_derived();
   update_derived();
   const std::span<const double> target(target_density);
-  for (const auto& [set, field] : {std::pair{fluid_set, &state_.fluid.density_constant},
-                                   std::pair{dummy_set, &state_.dummy.density_constant}}) {
+  for (const auto& [set, field] :
+       {std::pair{layout_.index_of(state_.fluid), &state_.fluid.density_constant},
+        std::pair{layout_.index_of(state_.dummy), &state_.dummy.density_constant}}) {
     const std::span<const double> wanted = layout_.part_of_set(target, set);
-    const auto rho = density_of_set(set);
+    const auto rho = layout_.in_set_order(density_sums_.values(0), set);
     for (std::size_t i = 0; i < rho.size(); ++i) {
       set_density_constant<Arith>(*field, i, wanted[i], rho[i]);
     }
@@ -62,7 +63,7 @@ template <int D, class Arith>
 void Model<D, Arith>::kick(double dt) {
   update_derived();
   FaultRecorder faults;
-  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  const std::span<const std::uint32_t> fluid = layout_.slots_of(state_.fluid);
   add_rate<Arith>(
       state_.fluid.velocity,
       [&](int k, std::size_t i) { return acceleration_sums_.value(k, fluid[i]); }, dt, faults);
@@ -101,8 +102,7 @@ void Model<D, Arith>::update_derived() {
   layout_.build(
       carrier_position(), parameters_.support_radius,
       Gathered{[&](std::size_t c) { return mass.real(0, c); }, &slot_mass_},
-      Gathered{[&](std::size_t c) { return density_constant.raw(0, c); }, &slot_density_constant_},
-      Gathered{layout_.in_set(fluid_set), &slot_is_fluid_});
+      Gathered{[&](std::size_t c) { return density_constant.raw(0, c); }, &slot_density_constant_});
   const std::size_t carriers = layout_.slot_count();
   walls_.find_near(layout_, parameters_.wall.radius);
 
@@ -130,7 +130,7 @@ void Model<D, Arith>::update_derived() {
                                          slot_mass_,
                                          pressure_over_density_squared_,
                                          inverse_density_squared_,
-                                         slot_is_fluid_,
+                                         layout_.in(state_.fluid),
                                          anti_clump_kernel_ ? &*anti_clump_kernel_ : nullptr,
                                          parameters_.anti_clump_pressure,
                                          parameters_.wall_potential(),
@@ -150,7 +150,7 @@ std::vector<double> Model<D, Arith>::density() {
 template <int D, class Arith>
 const std::array<std::vector<double>, D>& Model<D, Arith>::acceleration() {
   update_derived();
-  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  const std::span<const std::uint32_t> fluid = layout_.slots_of(state_.fluid);
   for (int k = 0; k < D; ++k) {
     acceleration_[k].resize(fluid.size());
     for (std::size_t i = 0; i < fluid.size(); ++i) {
@@ -176,7 +176,7 @@ std::array<std::vector<double>, D> Model<D, Arith>::real_velocity() const {
 template <int D, class Arith>
 std::array<std::vector<double>, D> Model<D, Arith>::filtered_velocity() {
   update_derived();
-  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  const std::span<const std::uint32_t> fluid = layout_.slots_of(state_.fluid);
   const std::array<std::vector<double>, D> velocity = real_velocity();
   std::array<std::vector<double>, D> slot_velocity;
   for (int k = 0; k < D; ++k) {
@@ -190,10 +190,10 @@ std::array<std::vector<double>, D> Model<D, Arith>::filtered_velocity() {
   quantities.fill({"filtered_velocity", parameters_.velocity_scale});
   quantities[0] = {"shepard_weight", fixedpoint::Scale::covering(1.0, 50)};
   PairSums<Arith, D + 1> sums(quantities);
-  sum_pairs<Arith>(
-      layout_,
-      ShepardTerm<D>{kernel_, slot_mass_, density_sums_.values(0), slot_velocity, slot_is_fluid_},
-      sums);
+  sum_pairs<Arith>(layout_,
+                   ShepardTerm<D>{kernel_, slot_mass_, density_sums_.values(0), slot_velocity,
+                                  layout_.in(state_.fluid)},
+                   sums);
   std::array<std::vector<double>, D> filtered;
   for (int k = 0; k < D; ++k) {
     filtered[k].resize(fluid.size());
@@ -246,7 +246,7 @@ double Model<D, Arith>::fluid_velocity(int axis, std::size_t a) const {
 template <int D, class Arith>
 std::vector<double> Model<D, Arith>::particle_energy(EnergyOf what) {
   update_derived();
-  const auto mass = mass_of_set(fluid_set);
+  const auto mass = mass_of(state_.fluid);
   std::vector<double> energy(fluid_count());
   switch (what) {
   case EnergyOf::kinetic:
@@ -267,9 +267,10 @@ std::vector<double> Model<D, Arith>::particle_energy(EnergyOf what) {
   case EnergyOf::compressional:
   case EnergyOf::dummy_compressional: {
     // Eq. (3); dummy particles store compressional energy too (their rho follows the fluid).
-    const std::size_t set = what == EnergyOf::compressional ? fluid_set : dummy_set;
-    const auto m = mass_of_set(set);
-    const auto rho = density_of_set(set);
+    const std::size_t set = what == EnergyOf::compressional ? layout_.index_of(state_.fluid)
+                                                            : layout_.index_of(state_.dummy);
+    const auto m = layout_.in_set_order(std::span<const double>(slot_mass_), set);
+    const auto rho = layout_.in_set_order(density_sums_.values(0), set);
     energy.resize(rho.size());
     for (std::size_t a = 0; a < rho.size(); ++a) {
       energy[a] = m[a] * compressional_energy_per_mass(rho[a], parameters_.rest_density,
@@ -280,8 +281,9 @@ std::vector<double> Model<D, Arith>::particle_energy(EnergyOf what) {
   case EnergyOf::wall: {
     // Eq. (7), attributed to the fluid particle.
     energy = cross_sums_of_set(
-        layout_, WallEnergyTerm<D>{slot_mass_, slot_is_fluid_, parameters_.wall_potential()},
-        walls_.cross_pairs(), fluid_set);
+        layout_,
+        WallEnergyTerm<D>{slot_mass_, layout_.in(state_.fluid), parameters_.wall_potential()},
+        walls_.cross_pairs(), layout_.index_of(state_.fluid));
     break;
   }
   }
@@ -328,9 +330,9 @@ void Model<D, Arith>::derived_views(const ViewSink& sink) {
     sink(ParticleView{set, name, std::move(unit), components, std::move(values)});
   };
   update_derived();
-  emit("fluid", "density", "kg/m^3", 1, in_canonical_order(density_of_set(fluid_set)));
-  emit("fluid", "pressure", "Pa", 1, pressure_of(density_of_set(fluid_set)));
-  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  emit("fluid", "density", "kg/m^3", 1, in_canonical_order(density_of(state_.fluid)));
+  emit("fluid", "pressure", "Pa", 1, pressure_of(density_of(state_.fluid)));
+  const std::span<const std::uint32_t> fluid = layout_.slots_of(state_.fluid);
   std::vector<double> acceleration(D * fluid.size());
   for (int k = 0; k < D; ++k) {
     for (std::size_t i = 0; i < fluid.size(); ++i) {
@@ -353,9 +355,9 @@ void Model<D, Arith>::derived_views(const ViewSink& sink) {
     }
     emit("fluid", "filtered_velocity", "m/s", D, std::move(values));
   }
-  if (!layout_.slots_of_set(dummy_set).empty()) {
-    emit("dummy", "density", "kg/m^3", 1, in_canonical_order(density_of_set(dummy_set)));
-    emit("dummy", "pressure", "Pa", 1, pressure_of(density_of_set(dummy_set)));
+  if (!layout_.slots_of(state_.dummy).empty()) {
+    emit("dummy", "density", "kg/m^3", 1, in_canonical_order(density_of(state_.dummy)));
+    emit("dummy", "pressure", "Pa", 1, pressure_of(density_of(state_.dummy)));
     emit("dummy", "compressional_energy", energy_unit<D>, 1,
          particle_energy(EnergyOf::dummy_compressional));
   }
@@ -374,8 +376,8 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics() {
     update_derived();
     const std::array<std::vector<double>, D> velocity = real_velocity();
     const std::array<std::vector<double>, D> filtered = filtered_velocity();
-    const auto mass = mass_of_set(fluid_set);
-    const auto rho = density_of_set(fluid_set);
+    const auto mass = mass_of(state_.fluid);
+    const auto rho = density_of(state_.fluid);
     double raw_sum = 0.0;
     double filtered_sum = 0.0;
     for (std::size_t a = 0; a < fluid_count(); ++a) {

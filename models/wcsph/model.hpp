@@ -85,10 +85,12 @@ private:
   void update_constants();
   // One set's masses and densities in its particle order, read from the slots (after
   // update_derived).
-  auto mass_of_set(std::size_t set) const {
+  template <ParticleSet Set>
+  auto mass_of(const Set& set) const {
     return layout_.in_set_order(std::span<const double>(slot_mass_), set);
   }
-  auto density_of_set(std::size_t set) const {
+  template <ParticleSet Set>
+  auto density_of(const Set& set) const {
     return layout_.in_set_order(density_sums_.values(0), set);
   }
   // Per fluid particle (per dummy for dummy_compressional).
@@ -109,19 +111,10 @@ private:
   // in cell order (slots, core/slot_layout.hpp); the state and everything the model reports stay
   // in the canonical particle order.
   bool derived_valid_ = false;
-  SlotLayout<D> layout_; // carriers: the fluid and dummy particles
-  // The layout's sets, in the order the constructor gives them.
-  static constexpr std::size_t fluid_set = 0;
-  static constexpr std::size_t dummy_set = 1;
-  // A per-carrier array's part of one set.
-  template <class T>
-  std::span<const T> of_set(const std::vector<T>& by_carrier, std::size_t set) const {
-    return layout_.part_of_set(std::span<const T>(by_carrier), set);
-  }
+  SlotLayout<D> layout_;  // carriers: the fluid and dummy particles
   FixedTargets<D> walls_; // the wall particles of eq. (7)
   std::vector<double> slot_mass_;
   std::vector<Raw> slot_density_constant_;
-  std::vector<std::uint8_t> slot_is_fluid_;
   PairSums<Arith, 1> density_sums_;
   PairSums<Arith, D> acceleration_sums_;
   std::vector<double> pressure_over_density_squared_; // slots

@@ -4,8 +4,8 @@
 // eq. 7 + gravity), the wall energy (eq. 7) and the Shepard filter (App. A).
 //
 // Density carriers are the fluid and the dummy particles (App. A walls): both have a density and
-// a pressure; only fluid particles move. Every array a term holds is indexed by slot; is_fluid[s]
-// tells whether slot s holds a fluid particle. The term b receives from a pair is computed as if
+// a pressure; only fluid particles move. Every array a term holds is indexed by slot; fluid(s)
+// tells whether slot s holds a fluid particle (SlotLayout::in). The term b receives from a pair is computed as if
 // b were the query (its own mass factor, x_b - x_a = -(x_a - x_b) exactly), so the sums equal
 // those of a per-particle loop; for equal masses it is the exact negative of a's term, so
 // internal forces conserve momentum in integers.
@@ -37,13 +37,13 @@ struct AccelerationTerm {
   std::span<const double> mass;
   std::span<const double> pressure_over_density_squared;
   std::span<const double> inverse_density_squared; // with the anti-clump force only
-  std::span<const std::uint8_t> is_fluid;
+  SlotInSet fluid;
   const WendlandQuintic<D>* anti_clump_kernel; // null without the anti-clump force
   double anti_clump_pressure;
   WallPotential wall;
   double gravity;
 
-  bool receives(std::uint32_t s) const { return is_fluid[s] != 0; }
+  bool receives(std::uint32_t s) const { return fluid(s); }
   void pair(const PairGeometry<D>& p, std::array<double, D>& to_a,
             std::array<double, D>& to_b) const {
     const double pressure_sum =
@@ -87,12 +87,12 @@ struct ShepardTerm {
   std::span<const double> mass;
   std::span<const double> density;
   const CoordinateArrays<D>& velocity; // by slot
-  std::span<const std::uint8_t> is_fluid;
+  SlotInSet fluid;
 
-  bool receives(std::uint32_t s) const { return is_fluid[s] != 0; }
+  bool receives(std::uint32_t s) const { return fluid(s); }
   void pair(const PairGeometry<D>& p, std::array<double, D + 1>& to_a,
             std::array<double, D + 1>& to_b) const {
-    if (!is_fluid[p.a] || !is_fluid[p.b]) {
+    if (!fluid(p.a) || !fluid(p.b)) {
       to_a.fill(0.0);
       to_b.fill(0.0);
       return;
