@@ -30,19 +30,19 @@ struct MirrorTerm {
   static constexpr int width = D + 1;
   const WendlandQuintic<D>& kernel;
   std::span<const double> mass;
-  std::span<const std::uint8_t> is_wall;
+  SlotInSet is_wall; // the boundary particles (SlotLayout::in)
   const CoordinateArrays<D>& velocity;
 
-  bool receives(std::uint32_t s) const { return is_wall[s] != 0; }
+  bool receives(std::uint32_t s) const { return is_wall(s); }
   void pair(const PairGeometry<D>& p, std::array<double, D + 1>& to_a,
             std::array<double, D + 1>& to_b) const {
     to_a.fill(0.0);
     to_b.fill(0.0);
-    if (is_wall[p.a] == is_wall[p.b]) {
+    if (is_wall(p.a) == is_wall(p.b)) {
       return; // fluid-fluid or wall-wall
     }
-    const std::uint32_t fluid = is_wall[p.a] ? p.b : p.a;
-    std::array<double, D + 1>& to_wall = is_wall[p.a] ? to_a : to_b;
+    const std::uint32_t fluid = is_wall(p.a) ? p.b : p.a;
+    std::array<double, D + 1>& to_wall = is_wall(p.a) ? to_a : to_b;
     const double weight = mass[fluid] * kernel.value(p.r);
     to_wall[0] = weight;
     for (int k = 0; k < D; ++k) {
@@ -61,17 +61,17 @@ PairSums<FixedArithmetic, D + 1> mirror_sums(const fixedpoint::Scale& weight_sca
 }
 
 // `velocity` (by slot) holds the fluid's velocities and, for wall slots, v_w; on return the
-// wall slots hold the mirrored velocities. is_wall[s]: whether slot s is a boundary particle.
+// wall slots hold the mirrored velocities. is_wall(s): whether slot s is a boundary particle.
 template <int D>
 void mirror_wall_velocities(const WendlandQuintic<D>& kernel, const SlotLayout<D>& layout,
-                            std::span<const double> mass, std::span<const std::uint8_t> is_wall,
+                            std::span<const double> mass, SlotInSet is_wall,
                             CoordinateArrays<D>& velocity, PairSums<FixedArithmetic, D + 1>& sums) {
   sum_pairs<FixedArithmetic>(layout, MirrorTerm<D>{kernel, mass, is_wall, velocity}, sums);
   const std::size_t n = layout.slot_count();
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < n; ++s) {
     const double weight = sums.value(0, s);
-    if (is_wall[s] && weight > 0.0) {
+    if (is_wall(s) && weight > 0.0) {
       for (int k = 0; k < D; ++k) {
         velocity[k][s] = 2.0 * velocity[k][s] - sums.value(k + 1, s) / weight;
       }

@@ -29,8 +29,7 @@ Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state,
                              parameters_.material.sound_speed, parameters_.penalty_speed,
                              parameters_.support_radius())),
       layout_(parameters_.domain, parameters_.support_radius() * parameters_.cell_size_factor,
-              {{"material", state_.material.position.count()},
-               {"boundary", state_.boundary.position.count()}}),
+              carrier_sets(state_.material, state_.boundary)),
       sums_(sum_scales_.density),
       acceleration_sums_(acceleration_sums<D>(sum_scales_.acceleration)),
       gradients_(sum_scales_.velocity_sum),
@@ -196,9 +195,8 @@ void Model<D>::update_carrier_velocities() {
   for (int k = 0; k < D; ++k) {
     slot_velocity_[k].resize(n);
   }
-  slot_is_wall_.assign(n, 0);
-  const std::span<const std::uint32_t> material = layout_.slots_of_set(material_set);
-  const std::span<const std::uint32_t> walls = layout_.slots_of_set(boundary_set);
+  const std::span<const std::uint32_t> material = layout_.slots_of(state_.material);
+  const std::span<const std::uint32_t> walls = layout_.slots_of(state_.boundary);
 #pragma omp parallel
   {
 #pragma omp for schedule(static) nowait
@@ -214,13 +212,12 @@ void Model<D>::update_carrier_velocities() {
       for (int k = 0; k < D; ++k) {
         slot_velocity_[k][walls[i]] = wall[k];
       }
-      slot_is_wall_[walls[i]] = 1;
     }
   }
   if (parameters_.mirrored_walls) {
     slot_mirrored_velocity_ = slot_velocity_;
-    mirror_wall_velocities<D>(kernel_, layout_, slot_mass_, slot_is_wall_, slot_mirrored_velocity_,
-                              mirror_sums_);
+    mirror_wall_velocities<D>(kernel_, layout_, slot_mass_, layout_.in(state_.boundary),
+                              slot_mirrored_velocity_, mirror_sums_);
   }
 }
 
@@ -236,10 +233,10 @@ void Model<D>::update_distortion(double dt) {
   // or, with mirrored walls, the mirrored ones in the material's L while the walls' own L keeps
   // v_w (mirrored_walls.hpp).
   const CoordinateView<D> velocity = view_of<D>(slot_velocity_);
-  const SeenVelocities<D> seen =
-      parameters_.mirrored_walls
-          ? SeenVelocities<D>{view_of<D>(slot_mirrored_velocity_), velocity, slot_is_wall_}
-          : SeenVelocities<D>{velocity, velocity, {}};
+  const SeenVelocities<D> seen = parameters_.mirrored_walls
+                                     ? SeenVelocities<D>{view_of<D>(slot_mirrored_velocity_),
+                                                         velocity, layout_.in(state_.boundary)}
+                                     : SeenVelocities<D>{velocity, velocity, {}};
   velocity_gradients<D>(kernel_, layout_, seen, slot_mass_, sums_.h_inverse, gradients_);
   const auto carried = carried_by_set();
   FaultRecorder faults;
@@ -382,7 +379,7 @@ void Model<D>::update_force() {
   compute_acceleration<D>(kernel_, penalty_strength(penalty), layout_, slot_mass_, slot_stress_,
                           sums_.lambda, acceleration_sums_, slot_acceleration_);
   // Boundary particles are held in place: only the material takes its acceleration.
-  const std::span<const std::uint32_t> material = layout_.slots_of_set(material_set);
+  const std::span<const std::uint32_t> material = layout_.slots_of(state_.material);
   FaultRecorder faults;
   for (int k = 0; k < D; ++k) {
     acceleration_[k].resize(material.size());
@@ -444,14 +441,15 @@ Model<D>::particle_energies(const std::array<CarrierValues, 2>& values) {
     }
   }
   const auto& velocity = state_.material.velocity;
-  const std::span<const std::uint32_t> moving = layout_.slots_of_set(material_set);
+  const std::span<const std::uint32_t> moving = layout_.slots_of(state_.material);
   for (std::size_t i = 0; i < moving.size(); ++i) {
     double v_squared = 0.0;
     for (int k = 0; k < D; ++k) {
       const double v = fixedpoint::to_real(velocity.at(k, i), velocity.info().scale);
       v_squared += v * v;
     }
-    energies[material_set].kinetic.push_back(0.5 * slot_mass_[moving[i]] * v_squared);
+    energies[layout_.index_of(state_.material)].kinetic.push_back(0.5 * slot_mass_[moving[i]] *
+                                                                  v_squared);
   }
   return energies;
 }
@@ -478,7 +476,7 @@ EnergyBudget Model<D>::energy() {
   }
   if (walls_work()) {
     // What the walls have put in, counted negative: the total stays constant.
-    const std::span<const std::uint32_t> walls = layout_.slots_of_set(boundary_set);
+    const std::span<const std::uint32_t> walls = layout_.slots_of(state_.boundary);
     const Field& wall_work = state_.boundary.wall_work;
     double work = 0.0;
     for (std::size_t i = 0; i < walls.size(); ++i) {
@@ -532,9 +530,9 @@ void Model<D>::derived_views(const ViewSink& sink) {
     }
     sink(ParticleView{"material", "acceleration", "m/s^2", D, std::move(acceleration_values)});
     sink(ParticleView{"material", "kinetic_energy", energy_unit<D>, 1,
-                      energies[material_set].kinetic});
+                      energies[layout_.index_of(state_.material)].kinetic});
   }
-  const std::span<const std::uint32_t> walls = layout_.slots_of_set(boundary_set);
+  const std::span<const std::uint32_t> walls = layout_.slots_of(state_.boundary);
   if (!walls.empty() && walls_work()) {
     update_carrier_velocities();
     const CoordinateArrays<D>& seen = slot_velocity_seen();
@@ -569,8 +567,9 @@ void Model<D>::shear_accelerations(CoordinateArrays<D>& acceleration, StressOf c
     for (GradientMatrix<D>& stress : slot_shear_stress_) {
       stress.setZero();
     }
-    const std::span<const std::uint32_t> slots =
-        layout_.slots_of_set(carriers == StressOf::material ? material_set : boundary_set);
+    const std::span<const std::uint32_t> slots = carriers == StressOf::material
+                                                     ? layout_.slots_of(state_.material)
+                                                     : layout_.slots_of(state_.boundary);
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < slots.size(); ++i) {
       stress_in_slot(slots[i]);
@@ -596,7 +595,7 @@ double Model<D>::wall_power() {
   WallForces forces;
   wall_forces(forces);
   double total = 0.0; // serial, in canonical order: the same for any thread count
-  for (const std::uint32_t s : layout_.slots_of_set(boundary_set)) {
+  for (const std::uint32_t s : layout_.slots_of(state_.boundary)) {
     // The material's stress pairs with the velocity the material sees the wall move with, the
     // wall's own with the wall's velocity (model.hpp); without mirroring both are v_w and
     // from_walls holds the whole force.
@@ -614,7 +613,7 @@ double Model<D>::wall_power() {
 
 template <int D>
 bool Model<D>::add_wall_work(double dt) {
-  const std::span<const std::uint32_t> walls = layout_.slots_of_set(boundary_set);
+  const std::span<const std::uint32_t> walls = layout_.slots_of(state_.boundary);
   Field& wall_work = state_.boundary.wall_work;
   bool fits = true;
   for (std::size_t i = 0; i < walls.size(); ++i) {

@@ -104,9 +104,6 @@ private:
   CarrierField<FixedArithmetic> carrier_position() const {
     return {&state_.material.position, &state_.boundary.position};
   }
-  // The layout's sets (layout_ is built over the two in this order).
-  static constexpr std::size_t material_set = 0;
-  static constexpr std::size_t boundary_set = 1;
   // What each set's carriers carry, indexed by the set's index in the layout.
   std::array<CarrierFields<D>*, 2> carried_by_set() {
     return {&state_.material.carried, &state_.boundary.carried};
@@ -184,7 +181,6 @@ private:
   // Scratch of the distortion sub-step.
   CoordinateArrays<D> slot_velocity_;
   VelocityGradients<D> gradients_;
-  std::vector<std::uint8_t> slot_is_wall_;
   CoordinateArrays<D> slot_mirrored_velocity_; // walls: 2 v_w - the fluid's (mirrored walls)
   PairSums<FixedArithmetic, D + 1> mirror_sums_;
   std::vector<GradientMatrix<D>> slot_shear_stress_;

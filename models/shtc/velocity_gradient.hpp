@@ -18,13 +18,13 @@
 namespace revsph::shtc {
 
 // The velocities each slot sees its partners move with: `seen_by_material` for every slot, or,
-// with mirrored walls (mirrored_walls.hpp), `seen_by_walls` for the slots where is_wall is set
-// (empty is_wall: one view for all).
+// with mirrored walls (mirrored_walls.hpp), `seen_by_walls` for the boundary slots (is_wall; an
+// empty set_of_slot: one view for all).
 template <int D>
 struct SeenVelocities {
   CoordinateView<D> seen_by_material;
   CoordinateView<D> seen_by_walls;
-  std::span<const std::uint8_t> is_wall;
+  SlotInSet is_wall;
 };
 
 template <int D>
@@ -35,7 +35,7 @@ struct VelocityGradientTerm {
   SeenVelocities<D> v;
 
   const CoordinateView<D>& view_of_slot(std::uint32_t s) const {
-    return !v.is_wall.empty() && v.is_wall[s] ? v.seen_by_walls : v.seen_by_material;
+    return !v.is_wall.set_of_slot.empty() && v.is_wall(s) ? v.seen_by_walls : v.seen_by_material;
   }
   void pair(const PairGeometry<D>& p, std::array<double, width>& to_a,
             std::array<double, width>& to_b) const {
