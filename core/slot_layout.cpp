@@ -20,8 +20,8 @@ template <int D>
 SlotLayout<D>::SlotLayout(const Box<D>& domain, double cell_size, std::vector<CarrierSet> sets)
     : sets_(std::move(sets)), carrier_count_(total_count(sets_)),
       cells_(domain, cell_size, cell_budget(carrier_count_)) {
-  if (sets_.size() > 255) {
-    throw std::logic_error("a slot layout holds at most 255 particle sets");
+  if (sets_.size() > 64) {
+    throw std::logic_error("a slot layout holds at most 64 particle sets");
   }
   first_carrier_.push_back(0);
   for (const CarrierSet& set : sets_) {

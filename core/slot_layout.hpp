@@ -39,12 +39,12 @@ std::vector<CarrierSet> carrier_sets(Sets&... sets) {
   return {CarrierSet{std::string(Sets::set.name), set_size(sets)}...};
 }
 
-// Whether a slot holds a particle of one set (SlotLayout::in): what a pair term asks instead of
-// reading a per-slot flag array of its own.
+// Whether a slot holds a particle of some sets (SlotLayout::in): what a pair term asks instead of
+// reading a per-slot flag array of its own. `sets` has bit k for set k.
 struct SlotInSet {
   std::span<const std::uint8_t> set_of_slot;
-  std::uint8_t set = 0;
-  bool operator()(std::uint32_t slot) const { return set_of_slot[slot] == set; }
+  std::uint64_t sets = 0;
+  bool operator()(std::uint32_t slot) const { return ((sets >> set_of_slot[slot]) & 1u) != 0; }
 };
 
 // A particle named by its set (an index into SlotLayout::sets()) and its index in the set.
@@ -142,9 +142,9 @@ public:
   }
   // The set of each slot's particle (an index into sets()), filled by build().
   std::span<const std::uint8_t> set_of_slot() const { return set_of_slot_; }
-  template <ParticleSet Set>
-  SlotInSet in(const Set& set) const {
-    return {set_of_slot_, static_cast<std::uint8_t>(index_of(set))};
+  template <ParticleSet... Sets>
+  SlotInSet in(const Sets&... sets) const {
+    return {set_of_slot_, ((std::uint64_t{1} << index_of(sets)) | ...)};
   }
   // The particle in slot s. With it a loop over slots reaches each particle's own set without
   // asking which set an index falls in.

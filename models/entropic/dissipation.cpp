@@ -94,7 +94,7 @@ template <int D>
 void Model<D>::dissipate(double tau) {
   update_geometry();
   const std::size_t n = layout_.slot_count();
-  const std::span<const std::uint32_t> slots = layout_.slots_of_set(gas_set);
+  const std::span<const std::uint32_t> slots = layout_.slots_of(state_.gas);
   Field& momentum = state_.gas.momentum;
   Field& entropy = state_.gas.entropy;
   const fixedpoint::Scale& m_scale = momentum.info().scale;
@@ -115,11 +115,11 @@ void Model<D>::dissipate(double tau) {
   // the wall by the gas near it; and with no-slip walls the walls' velocities, mirrored too
   // (dissipation_terms.hpp, WallMirrorTerm).
   conduction_temperature_.resize(n);
-  slot_thermal_.resize(n);
+  const SlotInSet is_gas = layout_.in(state_.gas);
+  const SlotInSet is_thermal = layout_.in(state_.thermal);
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < n; ++s) {
-    conduction_temperature_[s] = slot_is_gas_[s] ? temperature_[s] : slot_held_temperature_[s];
-    slot_thermal_[s] = slot_conducts_[s] && !slot_is_gas_[s];
+    conduction_temperature_[s] = is_gas(s) ? temperature_[s] : slot_held_temperature_[s];
   }
   const bool mirror_temperature =
       parameters_.heat_conductivity > 0.0 && state_.thermal.position.count() > 0;
@@ -128,10 +128,10 @@ void Model<D>::dissipate(double tau) {
     // Each wall slot's own entries only: the pass reads the gas's temperatures and velocities.
     const auto mirror = [&](std::uint32_t s) {
       const double weight = wall_mirror_sums_.value(D + 1, s);
-      if (slot_is_gas_[s] || !(weight > 0.0)) {
+      if (is_gas(s) || !(weight > 0.0)) {
         return;
       }
-      if (mirror_temperature && slot_thermal_[s]) {
+      if (mirror_temperature && is_thermal(s)) {
         conduction_temperature_[s] =
             2.0 * slot_held_temperature_[s] - wall_mirror_sums_.value(0, s) / weight;
       }
@@ -142,7 +142,7 @@ void Model<D>::dissipate(double tau) {
       }
     };
     sum_pairs<FixedArithmetic>(
-        layout_, WallMirrorTerm<D>{kernel_, temperature_, slot_velocity_, slot_is_gas_},
+        layout_, WallMirrorTerm<D>{kernel_, temperature_, slot_velocity_, layout_.in(state_.gas)},
         wall_mirror_sums_, {}, mirror);
   }
   if (two_pass) {
@@ -153,17 +153,18 @@ void Model<D>::dissipate(double tau) {
     };
     sum_pairs<FixedArithmetic>(layout_,
                                HeatFluxTerm<D>{kernel_, parameters_.heat_conductivity, volume_,
-                                               conduction_temperature_, slot_conducts_},
+                                               conduction_temperature_,
+                                               layout_.in(state_.gas, state_.thermal)},
                                heat_flux_sums_, {}, keep);
   }
   const double h = parameters_.support_radius;
-  sum_pairs<FixedArithmetic>(layout_,
-                             DissipationTerm<D>{kernel_, tau, parameters_.viscosity, 0.01 * h * h,
-                                                parameters_.no_slip_walls, volume_, slot_velocity_,
-                                                slot_heat_flux_, slot_is_gas_, slot_conducts_,
-                                                two_pass ? 0.0 : parameters_.heat_conductivity,
-                                                conduction_temperature_},
-                             dissipation_sums_);
+  sum_pairs<FixedArithmetic>(
+      layout_,
+      DissipationTerm<D>{kernel_, tau, parameters_.viscosity, 0.01 * h * h,
+                         parameters_.no_slip_walls, volume_, slot_velocity_, slot_heat_flux_,
+                         layout_.in(state_.gas), layout_.in(state_.gas, state_.thermal),
+                         two_pass ? 0.0 : parameters_.heat_conductivity, conduction_temperature_},
+      dissipation_sums_);
   // Per particle: the exact impulse sum onto the momentum; then the heat, less the kinetic
   // energy the impulses themselves carry (sum_b tau P_ab / 2 - |J_a|^2 / (2 m_a): these add up
   // to the kinetic energy the viscosity removes), into the entropy at fixed density:
@@ -196,7 +197,7 @@ void Model<D>::dissipate(double tau) {
   // The heat the thermal walls took in (a sum of exact per-particle totals, in slot order: the
   // same for any thread count).
   const double reference = parameters_.initial_temperature();
-  for (const std::uint32_t s : layout_.slots_of_set(thermal_set)) {
+  for (const std::uint32_t s : layout_.slots_of(state_.thermal)) {
     const double heat = dissipation_sums_.value(D, s);
     wall_heat_ += heat;
     wall_entropy_ += heat / slot_held_temperature_[s];

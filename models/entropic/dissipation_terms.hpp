@@ -23,11 +23,11 @@ struct HeatFluxTerm {
   double conductivity; // lambda_F
   std::span<const double> volume;
   std::span<const double> temperature;
-  std::span<const std::uint8_t> conducting; // by slot; pairs with another particle add nothing
+  SlotInSet conducting; // by slot; pairs with another particle add nothing
 
   void pair(const PairGeometry<D>& p, std::array<double, D>& to_a,
             std::array<double, D>& to_b) const {
-    if (!conducting[p.a] || !conducting[p.b]) {
+    if (!conducting(p.a) || !conducting(p.b)) {
       to_a.fill(0.0);
       to_b.fill(0.0);
       return;
@@ -59,18 +59,18 @@ struct WallMirrorTerm {
   const WendlandQuintic<D>& kernel;
   std::span<const double> temperature; // by slot
   const CoordinateArrays<D>& velocity; // by slot
-  std::span<const std::uint8_t> gas;   // by slot
+  SlotInSet gas;                       // by slot
 
   void pair(const PairGeometry<D>& p, std::array<double, D + 2>& to_a,
             std::array<double, D + 2>& to_b) const {
     to_a.fill(0.0);
     to_b.fill(0.0);
-    if (gas[p.a] == gas[p.b]) {
+    if (gas(p.a) == gas(p.b)) {
       return;
     }
     const double w = kernel.value(p.r);
-    const std::uint32_t from = gas[p.a] ? p.a : p.b;
-    std::array<double, D + 2>& onto = gas[p.a] ? to_b : to_a;
+    const std::uint32_t from = gas(p.a) ? p.a : p.b;
+    std::array<double, D + 2>& onto = gas(p.a) ? to_b : to_a;
     onto[0] = w * temperature[from];
     for (int k = 0; k < D; ++k) {
       onto[1 + k] = w * velocity[k][from];
@@ -101,10 +101,10 @@ struct DissipationTerm {
   double regularisation; // 0.01 h^2
   bool no_slip_walls;
   std::span<const double> volume;
-  const CoordinateArrays<D>& velocity;      // by slot; mirrored on no-slip walls
-  const CoordinateArrays<D>& heat_flux;     // by slot; empty without the two-pass conduction
-  std::span<const std::uint8_t> gas;        // by slot
-  std::span<const std::uint8_t> conducting; // by slot
+  const CoordinateArrays<D>& velocity;  // by slot; mirrored on no-slip walls
+  const CoordinateArrays<D>& heat_flux; // by slot; empty without the two-pass conduction
+  SlotInSet gas;                        // by slot
+  SlotInSet conducting;                 // by slot
   // The pairwise conduction instead (physics.heat_conduction = "pairwise", lambda_F; else 0):
   //   Q_ab = 2 tau lambda_F V_a V_b (W'/r) (T_a - T_b) to a (Brookshaw's Laplacian; Cleary and
   //   Monaghan 1999), = tau kappa_ab T_a T_b (1/T_a - 1/T_b) with kappa_ab = -2 lambda_F V_a V_b
@@ -118,20 +118,20 @@ struct DissipationTerm {
             std::array<double, D + 1>& to_b) const {
     to_a.fill(0.0);
     to_b.fill(0.0);
-    const bool both_gas = gas[p.a] && gas[p.b];
-    if (!gas[p.a] && !gas[p.b]) {
+    const bool both_gas = gas(p.a) && gas(p.b);
+    if (!gas(p.a) && !gas(p.b)) {
       return;
     }
     const double slope = kernel.derivative_over_r(p.r);
     const double volumes = volume[p.a] * volume[p.b];
     double exchanged = 0.0;
-    if (!heat_flux[0].empty() && conducting[p.a] && conducting[p.b]) {
+    if (!heat_flux[0].empty() && conducting(p.a) && conducting(p.b)) {
       double flux_dot = 0.0;
       for (int k = 0; k < D; ++k) {
         flux_dot += (heat_flux[k][p.a] + heat_flux[k][p.b]) * p.x_ab[k];
       }
       exchanged = -tau * volumes * flux_dot * slope;
-    } else if (pairwise_conductivity > 0.0 && conducting[p.a] && conducting[p.b]) {
+    } else if (pairwise_conductivity > 0.0 && conducting(p.a) && conducting(p.b)) {
       exchanged = 2.0 * tau * pairwise_conductivity * volumes * slope *
                   (temperature[p.a] - temperature[p.b]);
     }
@@ -159,12 +159,12 @@ struct DissipationTerm {
     // A wall pair: the gas particle's heat is the kinetic energy its impulse J takes, -J . v
     // (to first order; the update takes the |J|^2 / 2m): the wall's mirrored velocity moves
     // no energy.
-    const std::uint32_t g = gas[p.a] ? p.a : p.b;
+    const std::uint32_t g = gas(p.a) ? p.a : p.b;
     double along = 0.0; // v_g . x_ab
     for (int k = 0; k < D; ++k) {
       along += velocity[k][g] * p.x_ab[k];
     }
-    if (gas[p.a]) {
+    if (gas(p.a)) {
       to_a[D] -= tau * viscous * along;
     } else {
       to_b[D] += tau * viscous * along;

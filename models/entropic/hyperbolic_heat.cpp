@@ -45,8 +45,9 @@ void Model<D>::exchange_flux(double dt) {
   // S and x only, so the same sub-step run on -w takes back bit for bit what it added.
   update_geometry();
   sum_pairs<FixedArithmetic>(
-      layout_, FluxExchangeTerm<D>{kernel_, dt, volume_, temperature_, slot_is_gas_}, flux_sums_);
-  const std::span<const std::uint32_t> slots = layout_.slots_of_set(gas_set);
+      layout_, FluxExchangeTerm<D>{kernel_, dt, volume_, temperature_, layout_.in(state_.gas)},
+      flux_sums_);
+  const std::span<const std::uint32_t> slots = layout_.slots_of(state_.gas);
   Field& flux = state_.gas.entropy_flux;
   FaultRecorder faults;
 #pragma omp parallel for schedule(static)
@@ -67,7 +68,7 @@ void Model<D>::exchange_entropy(double dt) {
   // pair and odd in w: the total entropy is kept bit for bit, and the sub-step run on -w undoes
   // this one.
   update_geometry();
-  const std::span<const std::uint32_t> slots = layout_.slots_of_set(gas_set);
+  const std::span<const std::uint32_t> slots = layout_.slots_of(state_.gas);
   const Field& flux = state_.gas.entropy_flux;
   const std::size_t n = layout_.slot_count();
   for (int k = 0; k < D; ++k) {
@@ -82,7 +83,7 @@ void Model<D>::exchange_entropy(double dt) {
   sum_pairs<FixedArithmetic>(layout_,
                              EntropyExchangeTerm<D>{kernel_, dt,
                                                     parameters_.flux_energy_coefficient, volume_,
-                                                    slot_flux_, slot_is_gas_},
+                                                    slot_flux_, layout_.in(state_.gas)},
                              entropy_exchange_sums_);
   Field& entropy = state_.gas.entropy;
   FaultRecorder faults;
@@ -104,7 +105,7 @@ void Model<D>::relax_flux(double dt) {
   // density, dS = m c_V ln(1 + heat / (m c_V T)) (derivations.md §4.5, §5.1), rounded up so that
   // rounding never lowers the entropy.
   update_geometry();
-  const std::span<const std::uint32_t> slots = layout_.slots_of_set(gas_set);
+  const std::span<const std::uint32_t> slots = layout_.slots_of(state_.gas);
   const std::span<const double> gas_mass = of_gas(mass_);
   Field& flux = state_.gas.entropy_flux;
   Field& entropy = state_.gas.entropy;

@@ -30,11 +30,11 @@ struct FluxExchangeTerm {
   double tau;
   std::span<const double> volume;
   std::span<const double> temperature;
-  std::span<const std::uint8_t> conducting; // by slot
+  SlotInSet conducting; // by slot
 
   void pair(const PairGeometry<D>& p, std::array<double, D>& to_a,
             std::array<double, D>& to_b) const {
-    if (!conducting[p.a] || !conducting[p.b]) {
+    if (!conducting(p.a) || !conducting(p.b)) {
       to_a.fill(0.0);
       to_b.fill(0.0);
       return;
@@ -57,11 +57,11 @@ struct EntropyExchangeTerm {
   double flux_energy_coefficient; // c_w
   std::span<const double> volume;
   const CoordinateArrays<D>& flux; // w by slot
-  std::span<const std::uint8_t> conducting;
+  SlotInSet conducting;
 
   void pair(const PairGeometry<D>& p, std::array<double, 1>& to_a,
             std::array<double, 1>& to_b) const {
-    if (!conducting[p.a] || !conducting[p.b]) {
+    if (!conducting(p.a) || !conducting(p.b)) {
       to_a[0] = 0.0;
       to_b[0] = 0.0;
       return;

@@ -84,9 +84,7 @@ Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state)
     : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
       kernel_(parameters_.support_radius),
       layout_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
-              {{"gas", state_.gas.position.count()},
-               {"dummy", state_.dummy.position.count()},
-               {"thermal", state_.thermal.position.count()}}),
+              carrier_sets(state_.gas, state_.dummy, state_.thermal)),
       walls_(parameters_.domain,
              std::max(parameters_.support_radius, parameters_.wall.radius) *
                  parameters_.cell_size_factor,
@@ -164,18 +162,6 @@ void Model<D>::update_constants() {
   walls_.place(std::move(wall_position));
   mass_ = CarrierField<FixedArithmetic>{&state_.gas.mass, &state_.dummy.mass, &state_.thermal.mass}
               .reals();
-  is_gas_.assign(mass_.size(), 0);
-  const std::span<std::uint8_t> gas = layout_.part_of_set(std::span(is_gas_), gas_set);
-  std::fill(gas.begin(), gas.end(), 1);
-  // Who conducts heat: the gas and the thermal walls (at their held temperatures).
-  conducts_ = is_gas_;
-  const std::span<std::uint8_t> thermal = layout_.part_of_set(std::span(conducts_), thermal_set);
-  std::fill(thermal.begin(), thermal.end(), 1);
-  held_temperature_.assign(mass_.size(), 0.0);
-  const std::vector<double> held =
-      CarrierField<FixedArithmetic>{&state_.thermal.temperature}.reals();
-  std::copy(held.begin(), held.end(),
-            layout_.part_of_set(std::span(held_temperature_), thermal_set).begin());
   constants_valid_ = true;
 }
 
@@ -198,9 +184,7 @@ void Model<D>::update_geometry() {
                                                 &state_.thermal.position},
                   parameters_.support_radius, Gathered<double>{mass_, &slot_mass_},
                   Gathered<double>{entropy_, &slot_entropy_},
-                  Gathered<std::uint8_t>{is_gas_, &slot_is_gas_},
-                  Gathered<std::uint8_t>{conducts_, &slot_conducts_},
-                  Gathered<double>{held_temperature_, &slot_held_temperature_});
+                  Gathered{held_temperature(), &slot_held_temperature_});
     walls_.find_near(layout_, parameters_.wall.radius);
     layout_current_ = true;
   }
@@ -409,7 +393,7 @@ void Model<D>::kick(double dt) {
   update_impulses(dt);
   // M_a += the exact sum of its rounded pair impulses: no rounding of its own, so a reversed
   // kick subtracts bit for bit what this one added.
-  const std::span<const std::uint32_t> slots = layout_.slots_of_set(gas_set);
+  const std::span<const std::uint32_t> slots = layout_.slots_of(state_.gas);
   Field& momentum = state_.gas.momentum;
   FaultRecorder faults;
 #pragma omp parallel for schedule(static)
@@ -437,7 +421,7 @@ void Model<D>::drift(double dt) {
 template <int D>
 typename Model<D>::Thermodynamics Model<D>::thermodynamics() {
   update_geometry();
-  const std::span<const std::uint32_t> slots = layout_.slots_of_set(gas_set);
+  const std::span<const std::uint32_t> slots = layout_.slots_of(state_.gas);
   Thermodynamics values;
   for (const std::uint32_t s : slots) {
     values.density.push_back(density_[s]);
@@ -476,7 +460,7 @@ EnergyBudget Model<D>::energy() {
   }
   // Dummy and thermal particles store internal energy too: their density follows the gas around
   // them.
-  for (const std::size_t set : {dummy_set, thermal_set}) {
+  for (const std::size_t set : {layout_.index_of(state_.dummy), layout_.index_of(state_.thermal)}) {
     for (const std::uint32_t s : layout_.slots_of_set(set)) {
       internal += slot_mass_[s] * specific_energy_[s];
     }
@@ -486,7 +470,7 @@ EnergyBudget Model<D>::energy() {
       layout_, WallEnergyTerm<D>{slot_mass_, layout_.in(state_.gas), parameters_.wall_potential()},
       wall_sums, walls_.cross_pairs());
   double wall = 0.0;
-  for (const std::uint32_t s : layout_.slots_of_set(gas_set)) {
+  for (const std::uint32_t s : layout_.slots_of(state_.gas)) {
     wall += wall_sums.value(0, s);
   }
   EnergyBudget budget{{{"kinetic", kinetic},

@@ -108,13 +108,18 @@ private:
   // Whether the dissipation acts in this splitting; what it does there ("" where it does not).
   bool dissipates_in(DissipationSplitting splitting) const;
   std::string dissipation_in(DissipationSplitting splitting, const std::string& placement) const;
-  // The layout's sets: the gas, the dummy particles, the thermal walls.
-  static constexpr std::size_t gas_set = 0;
-  static constexpr std::size_t dummy_set = 1;
-  static constexpr std::size_t thermal_set = 2;
   // The gas's part of a per-carrier array.
   std::span<const double> of_gas(const std::vector<double>& by_carrier) const {
-    return layout_.part_of_set(std::span<const double>(by_carrier), gas_set);
+    return layout_.part_of(std::span<const double>(by_carrier), state_.gas);
+  }
+  // Each carrier's held temperature (a thermal wall's; 0 for the rest), for Gathered.
+  auto held_temperature() const {
+    return [this,
+            first = layout_.first_carrier(layout_.index_of(state_.thermal))](std::size_t carrier) {
+      const auto& held = state_.thermal.temperature;
+      return carrier < first ? 0.0
+                             : fixedpoint::to_real(held.at(0, carrier - first), held.info().scale);
+    };
   }
   std::size_t gas_count() const { return state_.gas.position.count(); }
   void update_constants();
@@ -137,18 +142,14 @@ private:
   WendlandQuintic<D> kernel_;
 
   bool constants_valid_ = false;
-  std::vector<double> mass_;             // carriers (gas, then dummies), canonical order
-  std::vector<double> entropy_;          // carriers, canonical order
-  std::vector<std::uint8_t> is_gas_;     // carriers
-  std::vector<std::uint8_t> conducts_;   // carriers: the gas and the thermal walls
-  std::vector<double> held_temperature_; // carriers: a thermal wall's temperature, else 0
+  std::vector<double> mass_;    // carriers (gas, then dummies), canonical order
+  std::vector<double> entropy_; // carriers, canonical order
   bool geometry_valid_ = false;
   // The cells and pairs were built at the current positions: the dissipation and the entropy
   // exchange change entropies only, and then the layout stands (a rebuild from the same positions
   // gives the same layout, so the results do not depend on this shortcut).
   bool layout_current_ = false;
   SlotLayout<D> layout_; // carriers: the gas, the dummy and the thermal particles
-  std::vector<std::uint8_t> slot_is_gas_, slot_conducts_;
   std::vector<double> slot_held_temperature_;
   FixedTargets<D> walls_;
   std::vector<double> slot_mass_, slot_entropy_;
@@ -165,7 +166,6 @@ private:
   PairSums<FixedArithmetic, D> heat_flux_sums_;
   PairSums<FixedArithmetic, D + 1> dissipation_sums_;
   std::vector<double> conduction_temperature_; // by slot: T of the gas, mirrored T of the walls
-  std::vector<std::uint8_t> slot_thermal_;
   // The scales of the wall mirror sums.
   static std::array<SummedQuantity, D + 2> wall_mirror_quantities(const Parameters<D>& parameters,
                                                                   const State<D>& state);

@@ -82,10 +82,10 @@ mirrored_velocities(const WendlandQuintic<D>& kernel, const CoordinateArrays<D>&
   const shtc::SumScales scales = test_sum_scales();
   auto sums = shtc::mirror_sums<D>(scales.density, scales.mirror_velocity_sum);
   CoordinateArrays<D> slot_velocity = to_slots<D>(layout, velocity);
-  // One set here: the walls are told by a 0/1 byte per slot read as two "sets".
+  // One set here: the walls are told by a 0/1 byte per slot read as two "sets" (0 and 1: mask 0b10).
   const std::vector<std::uint8_t> wall_of_slot = to_slots<D>(layout, is_wall);
   shtc::mirror_wall_velocities<D>(kernel, layout, to_slots<D>(layout, mass),
-                                  SlotInSet{wall_of_slot, 1}, slot_velocity, sums);
+                                  SlotInSet{wall_of_slot, 0b10}, slot_velocity, sums);
   return to_points<D>(layout, slot_velocity);
 }
 
