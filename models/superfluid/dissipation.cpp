@@ -76,7 +76,7 @@ void Model<D, Arith>::fill_superleak_sides() {
     return;
   }
   slot_side_.assign(layout_.slot_count(), 0);
-  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  const std::span<const std::uint32_t> fluid = layout_.slots_of(state_.fluid);
   const auto& x_scale = state_.fluid.position.info().scale;
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     bool within = true;
@@ -102,7 +102,7 @@ void Model<D, Arith>::dissipate(double dt) {
   // Conducting walls: their own velocity as v_n, T0 as temperature (s = s0, no counterflow).
   // Absorbing walls got theirs, with their v_s, from fill_rate_inputs; no-slip dummies are at rest.
   if (!parameters_.absorbing_walls) {
-    const std::span<const std::uint32_t> wall = layout_.slots_of_set(wall_set);
+    const std::span<const std::uint32_t> wall = layout_.slots_of(state_.wall);
     const auto& wall_scale = state_.wall.velocity.info().scale;
     for (std::size_t i = 0; i < wall.size(); ++i) {
       inputs_.temperature[wall[i]] = parameters_.helium.reference_temperature;
@@ -113,7 +113,7 @@ void Model<D, Arith>::dissipate(double dt) {
     }
   }
   if (parameters_.dummy_no_slip) {
-    for (const std::uint32_t slot : layout_.slots_of_set(dummy_set)) {
+    for (const std::uint32_t slot : layout_.slots_of(state_.dummy)) {
       for (int k = 0; k < D; ++k) {
         inputs_.normal_velocity[k][slot] = 0.0;
       }
@@ -124,18 +124,19 @@ void Model<D, Arith>::dissipate(double dt) {
   // code uses it (README, "The kernel's width").
   const double eta = parameters_.support_radius / 10.0;
   sum_pairs_over<Arith>(layout_, fluid_pairs_,
-                        DissipationTerm<D>{kernel_, slot_mass_, slot_kind_, inputs_.inverse_density,
-                                           inputs_.temperature, inputs_.normal_velocity,
-                                           parameters_.viscosity, parameters_.heat_conductivity,
-                                           eta * eta, dt, slot_side_, parameters_.dummy_no_slip,
-                                           parameters_.absorbing_walls},
+                        DissipationTerm<D>{kernel_, slot_mass_, layout_.in(state_.fluid),
+                                           layout_.in(state_.dummy), layout_.in(state_.wall),
+                                           inputs_.inverse_density, inputs_.temperature,
+                                           inputs_.normal_velocity, parameters_.viscosity,
+                                           parameters_.heat_conductivity, eta * eta, dt, slot_side_,
+                                           parameters_.dummy_no_slip, parameters_.absorbing_walls},
                         dissipation_sums_);
-  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  const std::span<const std::uint32_t> fluid = layout_.slots_of(state_.fluid);
   FaultRecorder faults;
   add_pair_totals<Arith>(state_.fluid.velocity, dissipation_sums_, 0, fluid, faults);
   add_pair_totals<Arith>(state_.fluid.velocity_copy, dissipation_sums_, 0, fluid, faults);
   if (parameters_.absorbing_walls) { // the cooler's v_s, dragged by the viscosity (terms' header)
-    const std::span<const std::uint32_t> wall = layout_.slots_of_set(wall_set);
+    const std::span<const std::uint32_t> wall = layout_.slots_of(state_.wall);
     add_pair_totals<Arith>(state_.wall.superflow_velocity, dissipation_sums_, 0, wall, faults);
     add_pair_totals<Arith>(state_.wall.superflow_velocity_copy, dissipation_sums_, 0, wall, faults);
   }
@@ -144,7 +145,7 @@ void Model<D, Arith>::dissipate(double dt) {
   // the heats add up to the mechanical energy removed.
   const Helium& he = parameters_.helium;
   const std::span<const double> mass =
-      layout_.part_of_set(std::span<const double>(mass_), fluid_set);
+      layout_.part_of(std::span<const double>(mass_), state_.fluid);
   auto& s1 = state_.fluid.entropy;
   auto& s2 = state_.fluid.entropy_copy;
   const auto& s_scale = s1.info().scale;

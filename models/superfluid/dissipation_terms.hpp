@@ -38,14 +38,12 @@
 
 namespace revsph::superfluid {
 
-enum class CarrierKind : std::uint8_t { fluid = 0, dummy = 1, wall = 2 };
-
 template <int D>
 struct DissipationTerm {
   static constexpr int width = D + 1;
   const WendlandQuintic<D>& kernel;
   std::span<const double> mass;
-  std::span<const std::uint8_t> kind; // CarrierKind by slot
+  SlotInSet fluid, dummy, wall; // the slots of each set (SlotLayout::in)
   std::span<const double> inverse_density;
   std::span<const double> temperature;        // of the mean state; T0 on walls
   const CoordinateArrays<D>& normal_velocity; // of the mean state; a wall's own velocity
@@ -58,24 +56,18 @@ struct DissipationTerm {
   std::span<const std::int8_t> side;
   bool no_slip_dummies = false;
   bool absorbing_walls = false;
-  static constexpr std::uint8_t fluid = static_cast<std::uint8_t>(CarrierKind::fluid);
-  static constexpr std::uint8_t wall = static_cast<std::uint8_t>(CarrierKind::wall);
-  static constexpr std::uint8_t dummy = static_cast<std::uint8_t>(CarrierKind::dummy);
-
-  bool receives(std::uint32_t s) const {
-    return kind[s] == fluid || (absorbing_walls && kind[s] == wall);
-  }
+  bool receives(std::uint32_t s) const { return fluid(s) || (absorbing_walls && wall(s)); }
 
   void pair(const PairGeometry<D>& p, std::array<double, width>& to_a,
             std::array<double, width>& to_b) const {
     to_a.fill(0.0);
     to_b.fill(0.0);
-    const std::uint8_t kind_a = kind[p.a];
-    const std::uint8_t kind_b = kind[p.b];
+    const bool fluid_a = fluid(p.a);
+    const bool fluid_b = fluid(p.b);
+    const bool wall_a = wall(p.a);
     // A fluid particle's partner: fluid, a wall, or a no-slip dummy (glass: v_n = 0, adiabatic).
-    const bool glass = no_slip_dummies && ((kind_a == fluid && kind_b == dummy) ||
-                                           (kind_a == dummy && kind_b == fluid));
-    const bool partners = kind_a == fluid ? kind_b != dummy : kind_b == fluid && kind_a == wall;
+    const bool glass = no_slip_dummies && ((fluid_a && dummy(p.b)) || (dummy(p.a) && fluid_b));
+    const bool partners = fluid_a ? !dummy(p.b) : fluid_b && wall_a;
     if (!glass && !partners) {
       return;
     }
@@ -95,7 +87,7 @@ struct DissipationTerm {
     }
     const double dissipated = -mass[a] * mass[b] * c * vn_dot_x;
     if (glass) { // no conduction; the glass receives nothing, so its fluid particle takes it all
-      (kind_a == fluid ? to_a : to_b)[D] = dissipated;
+      (fluid_a ? to_a : to_b)[D] = dissipated;
       return;
     }
     const double t_a = temperature[a];
@@ -106,8 +98,10 @@ struct DissipationTerm {
                                   (t_a * t_a - t_b * t_b);
     to_a[D] = 0.5 * dissipated + heat;
     to_b[D] = 0.5 * dissipated - heat;
-    if (absorbing_walls && kind_a != kind_b) { // the wall's share goes to its v_s, turned
-      std::array<double, width>& to_wall = kind_a == wall ? to_a : to_b;
+    // Past the test above the pair is fluid-fluid or fluid-wall: the kinds differ where the
+    // fluid flags do.
+    if (absorbing_walls && fluid_a != fluid_b) { // the wall's share goes to its v_s, turned
+      std::array<double, width>& to_wall = wall_a ? to_a : to_b;
       for (int k = 0; k < D; ++k) {
         to_wall[k] = -to_wall[k];
       }

@@ -58,7 +58,7 @@ void Model<D, Arith>::relax_superleak(std::int64_t) {
   const double decay = std::exp(-leak.rate * info_.dt);
   const MeanState mean = mean_state();
   const std::span<const double> mass =
-      layout_.part_of_set(std::span<const double>(mass_), fluid_set);
+      layout_.part_of(std::span<const double>(mass_), state_.fluid);
   const auto& x_scale = state_.fluid.position.info().scale;
   auto& v1 = state_.fluid.velocity;
   auto& v2 = state_.fluid.velocity_copy;
@@ -118,8 +118,8 @@ void Model<D, Arith>::heat(std::int64_t step) {
   const WendlandQuintic<D> spread(heater.support);
   const MeanState mean = mean_state();
   const std::span<const double> mass =
-      layout_.part_of_set(std::span<const double>(mass_), fluid_set);
-  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+      layout_.part_of(std::span<const double>(mass_), state_.fluid);
+  const std::span<const std::uint32_t> fluid = layout_.slots_of(state_.fluid);
   const auto& x_scale = state_.fluid.position.info().scale;
   FaultRecorder faults;
   double given = 0.0;

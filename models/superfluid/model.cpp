@@ -41,9 +41,7 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
     : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
       kernel_(parameters_.support_radius),
       layout_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
-              {{"fluid", state_.fluid.position.count()},
-               {"dummy", state_.dummy.position.count()},
-               {"wall", state_.wall.position.count()}}),
+              carrier_sets(state_.fluid, state_.dummy, state_.wall)),
       density_sums_(SummedQuantity{"density", parameters_.density_scale}),
       increment_sums_(
           increment_quantities<D>(parameters_.velocity_scale, parameters_.entropy_scale)),
@@ -65,10 +63,12 @@ void Model<D, Arith>::initialise_density_constants() {
     StateField<Raw>* constant;
     const StateField<Raw>* position;
   };
-  for (const Carriers& c :
-       {Carriers{fluid_set, &state_.fluid.density_constant, &state_.fluid.position},
-        Carriers{dummy_set, &state_.dummy.density_constant, &state_.dummy.position},
-        Carriers{wall_set, &state_.wall.density_constant, &state_.wall.position}}) {
+  for (const Carriers& c : {Carriers{layout_.index_of(state_.fluid), &state_.fluid.density_constant,
+                                     &state_.fluid.position},
+                            Carriers{layout_.index_of(state_.dummy), &state_.dummy.density_constant,
+                                     &state_.dummy.position},
+                            Carriers{layout_.index_of(state_.wall), &state_.wall.density_constant,
+                                     &state_.wall.position}}) {
     StateField<Raw>* field = c.constant;
     const std::span<const std::uint32_t> slots = layout_.slots_of_set(c.set);
     const std::span<const double> mass = layout_.part_of_set(std::span<const double>(mass_), c.set);
@@ -77,8 +77,8 @@ void Model<D, Arith>::initialise_density_constants() {
       // constant of a particle inside the liquid, whatever surrounds it now: a dry one (the
       // capillary's walls above the level) would otherwise be made as dense as a wet one, and
       // the liquid reaching it later would meet a wall at several kPa (README, "Walls").
-      const double sum =
-          c.set == fluid_set ? density_sums_.value(0, slots[i]) : mass[i] * lattice_kernel_sum_;
+      const double sum = c.set == layout_.index_of(state_.fluid) ? density_sums_.value(0, slots[i])
+                                                                 : mass[i] * lattice_kernel_sum_;
       // rho0, or the hydrostatic density below a free surface.
       double target = parameters_.helium.rest_density;
       const double surface = parameters_.initial.hydrostatic_surface;
@@ -148,14 +148,14 @@ template <int D, class Arith>
 void Model<D, Arith>::update_copy(int to, double dt) {
   sum_increments(1 - to, dt);
   const Copy target = copy(to);
-  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  const std::span<const std::uint32_t> fluid = layout_.slots_of(state_.fluid);
   FaultRecorder faults;
   add_pair_totals<Arith>(*target.velocity, increment_sums_, 0, fluid, faults);
   add_pair_totals<Arith>(*target.superflow_velocity, increment_sums_, D, fluid, faults);
   add_pair_totals<Arith>(*target.entropy, increment_sums_, 2 * D, fluid, faults);
   if (parameters_.absorbing_walls) {
     add_pair_totals<Arith>(*target.wall_superflow_velocity, increment_sums_, D,
-                           layout_.slots_of_set(wall_set), faults);
+                           layout_.slots_of(state_.wall), faults);
     count_wall_work(dt);
   }
 }
@@ -170,20 +170,6 @@ void Model<D, Arith>::update_constants() {
       CarrierField<Arith>{&state_.fluid.density_constant, &state_.dummy.density_constant,
                           &state_.wall.density_constant}
           .raws();
-  is_fluid_.assign(mass_.size(), 0);
-  const std::span<std::uint8_t> fluid = layout_.part_of_set(std::span(is_fluid_), fluid_set);
-  std::fill(fluid.begin(), fluid.end(), 1);
-  interacts_ = is_fluid_;
-  if (parameters_.absorbing_walls) {
-    const std::span<std::uint8_t> wall = layout_.part_of_set(std::span(interacts_), wall_set);
-    std::fill(wall.begin(), wall.end(), 1);
-  }
-  kind_.assign(mass_.size(), static_cast<std::uint8_t>(CarrierKind::dummy));
-  for (const auto& [set, kind] :
-       {std::pair{fluid_set, CarrierKind::fluid}, std::pair{wall_set, CarrierKind::wall}}) {
-    const std::span<std::uint8_t> part = layout_.part_of_set(std::span(kind_), set);
-    std::fill(part.begin(), part.end(), static_cast<std::uint8_t>(kind));
-  }
   constants_valid_ = true;
 }
 
@@ -195,10 +181,9 @@ void Model<D, Arith>::update_density() {
   update_constants();
   layout_.build(carrier_position(), parameters_.support_radius,
                 Gathered<double>{mass_, &slot_mass_},
-                Gathered<Raw>{density_constant_, &slot_density_constant_},
-                Gathered<std::uint8_t>{is_fluid_, &slot_is_fluid_},
-                Gathered<std::uint8_t>{interacts_, &slot_interacts_},
-                Gathered<std::uint8_t>{kind_, &slot_kind_});
+                Gathered<Raw>{density_constant_, &slot_density_constant_});
+  const SlotInSet is_fluid = layout_.in(state_.fluid);
+  const SlotInSet interacts = interacting();
   const std::size_t carriers = layout_.slot_count();
   inputs_.pressure_over_density_squared.resize(carriers);
   inputs_.inverse_density.resize(carriers);
@@ -209,7 +194,7 @@ void Model<D, Arith>::update_density() {
     if (!(rho > 0.0)) {
       layout_.record_fault(faults, s, "density", "density not positive");
     }
-    const double p = slot_is_fluid_[s] ? he.pressure(rho) : he.boundary_pressure(rho); // (12)
+    const double p = is_fluid(s) ? he.pressure(rho) : he.boundary_pressure(rho); // (12)
     inputs_.pressure_over_density_squared[s] = p / (rho * rho);
     inputs_.inverse_density[s] = 1.0 / rho;
   };
@@ -219,12 +204,12 @@ void Model<D, Arith>::update_density() {
   faults.throw_if_any();
   // The rates and the dissipation reach fluid particles only: a third of the fountain's pairs
   // join two wall particles and are left out of their five pair loops per step.
-  fluid_pairs_.assign_filtered(layout_.pairs(), [this](std::uint32_t a, std::uint32_t b) {
-    return slot_is_fluid_[a] != 0 || slot_is_fluid_[b] != 0;
+  fluid_pairs_.assign_filtered(layout_.pairs(), [&](std::uint32_t a, std::uint32_t b) {
+    return is_fluid(a) || is_fluid(b);
   });
   if (parameters_.absorbing_walls) {
-    wall_pairs_.assign_filtered(layout_.pairs(), [this](std::uint32_t a, std::uint32_t b) {
-      return slot_is_fluid_[a] != slot_is_fluid_[b] && slot_interacts_[a] && slot_interacts_[b];
+    wall_pairs_.assign_filtered(layout_.pairs(), [&](std::uint32_t a, std::uint32_t b) {
+      return is_fluid(a) != is_fluid(b) && interacts(a) && interacts(b);
     });
   }
   density_valid_ = true;
@@ -244,7 +229,7 @@ void Model<D, Arith>::fill_rate_inputs(int from) {
     in.normal_velocity[k].resize(carriers);
   }
   const Helium& he = parameters_.helium;
-  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  const std::span<const std::uint32_t> fluid = layout_.slots_of(state_.fluid);
   const Copy one = copy(0);
   const Copy two = copy(1);
   const auto& v_scale = one.velocity->info().scale;
@@ -289,7 +274,7 @@ void Model<D, Arith>::fill_rate_inputs(int from) {
   faults.throw_if_any();
   if (parameters_.absorbing_walls) {
     // The authors' cooler: s = s0 and T = T0 held, v the wall's own, v_s its own (this copy's).
-    const std::span<const std::uint32_t> wall = layout_.slots_of_set(wall_set);
+    const std::span<const std::uint32_t> wall = layout_.slots_of(state_.wall);
     const double s0 = he.reference_entropy;
     const double ratio = (1.0 - he.chi_n(s0)) / he.chi_n(s0);
     const auto& w_scale = state_.wall.velocity.info().scale;
@@ -316,8 +301,8 @@ template <int D, class Arith>
 void Model<D, Arith>::sum_increments(int from, double tau) {
   fill_rate_inputs(from);
   sum_pairs_over<Arith>(layout_, fluid_pairs_,
-                        RateTerm<D>{kernel_, slot_mass_, slot_is_fluid_, slot_interacts_, inputs_,
-                                    tau, parameters_.gravity,
+                        RateTerm<D>{kernel_, slot_mass_, layout_.in(state_.fluid), interacting(),
+                                    inputs_, tau, parameters_.gravity,
                                     parameters_.helium.normal_fraction == 1.0 &&
                                         parameters_.helium.normal_fraction_slope == 0.0},
                         increment_sums_);
@@ -325,13 +310,13 @@ void Model<D, Arith>::sum_increments(int from, double tau) {
 
 template <int D, class Arith>
 void Model<D, Arith>::count_wall_work(double tau) {
-  const RateTerm<D> rate{kernel_, slot_mass_, slot_is_fluid_,      slot_interacts_,
-                         inputs_, tau,        parameters_.gravity, false};
+  const RateTerm<D> rate{kernel_, slot_mass_, layout_.in(state_.fluid), interacting(),
+                         inputs_, tau,        parameters_.gravity,      false};
   sum_pairs_over<Arith>(layout_, wall_pairs_, WallWorkTerm<D>{rate}, wall_work_sums_);
   // Summed in the particles' canonical order (slots_of_set), so the same for any thread count
   // and cell size; the mean of the copies receives half of each copy's increments.
   double total = 0.0;
-  for (const std::uint32_t slot : layout_.slots_of_set(fluid_set)) {
+  for (const std::uint32_t slot : layout_.slots_of(state_.fluid)) {
     total += wall_work_sums_.value(0, slot);
   }
   exchanged_energy_ += 0.5 * total;

@@ -128,22 +128,18 @@ private:
   bool constants_valid_ = false;
   std::vector<double> mass_;
   std::vector<Raw> density_constant_;
-  std::vector<std::uint8_t> is_fluid_;
-  std::vector<std::uint8_t> interacts_; // fluid, and absorbing walls (pair_terms.hpp)
-  std::vector<std::uint8_t> kind_;      // CarrierKind per carrier (dissipation_terms.hpp)
   bool density_valid_ = false;
   // sum_b w(x_a - x_b) over a full square lattice of spacing dr (b = a included): a unit-mass
   // particle's kernel sum inside the liquid at the start.
   double lattice_kernel_sum_ = 0.0;
   SlotLayout<D> layout_;
-  static constexpr std::size_t fluid_set = 0;
-  static constexpr std::size_t dummy_set = 1;
-  static constexpr std::size_t wall_set = 2;
+  // The slots that interact as fluid: the fluid's, and the absorbing walls' (pair_terms.hpp).
+  SlotInSet interacting() const {
+    return parameters_.absorbing_walls ? layout_.in(state_.fluid, state_.wall)
+                                       : layout_.in(state_.fluid);
+  }
   std::vector<double> slot_mass_;
   std::vector<Raw> slot_density_constant_;
-  std::vector<std::uint8_t> slot_is_fluid_;
-  std::vector<std::uint8_t> slot_interacts_;
-  std::vector<std::uint8_t> slot_kind_;
   // Energy the walls gave the fluid in dissipation sub-steps since the run began (lid work, heat
   // from or to a cooler): the energy budget's wall_exchange term is minus this.
   double exchanged_energy_ = 0.0;

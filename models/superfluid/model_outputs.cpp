@@ -41,12 +41,12 @@ EnergyBudget Model<D, Arith>::energy() {
   update_density();
   const Helium& he = parameters_.helium;
   const MeanState mean = mean_state();
-  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
-  const std::span<const std::uint32_t> dummy = layout_.slots_of_set(dummy_set);
+  const std::span<const std::uint32_t> fluid = layout_.slots_of(state_.fluid);
+  const std::span<const std::uint32_t> dummy = layout_.slots_of(state_.dummy);
   const std::span<const double> mass =
-      layout_.part_of_set(std::span<const double>(mass_), fluid_set);
+      layout_.part_of(std::span<const double>(mass_), state_.fluid);
   const std::span<const double> dummy_mass =
-      layout_.part_of_set(std::span<const double>(mass_), dummy_set);
+      layout_.part_of(std::span<const double>(mass_), state_.dummy);
   // Serial sums in particle order: the same value for any thread count.
   double kinetic = 0.0, counterflow = 0.0, compressional = 0.0, thermal = 0.0;
   double gravitational = 0.0;
@@ -72,9 +72,9 @@ EnergyBudget Model<D, Arith>::energy() {
     compressional +=
         dummy_mass[d] * he.boundary_compressional_energy(density_sums_.value(0, dummy[d]));
   }
-  const std::span<const std::uint32_t> wall = layout_.slots_of_set(wall_set);
+  const std::span<const std::uint32_t> wall = layout_.slots_of(state_.wall);
   const std::span<const double> wall_mass =
-      layout_.part_of_set(std::span<const double>(mass_), wall_set);
+      layout_.part_of(std::span<const double>(mass_), state_.wall);
   for (std::size_t w = 0; w < wall.size(); ++w) {
     compressional +=
         wall_mass[w] * he.boundary_compressional_energy(density_sums_.value(0, wall[w]));
@@ -113,7 +113,7 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics(double time) {
   const auto& s_scale = f.entropy.info().scale;
   update_constants();
   const std::span<const double> mass =
-      layout_.part_of_set(std::span<const double>(mass_), fluid_set);
+      layout_.part_of(std::span<const double>(mass_), state_.fluid);
   double dv = 0.0, dvs = 0.0, ds = 0.0, entropy_one = 0.0, entropy_two = 0.0;
   for (std::size_t a = 0; a < fluid_count(); ++a) {
     for (int k = 0; k < D; ++k) {
@@ -135,7 +135,7 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics(double time) {
                                 {"total_entropy_copy", entropy_two}};
   if (!std::isnan(parameters_.jet_height)) {
     update_density();
-    const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+    const std::span<const std::uint32_t> fluid = layout_.slots_of(state_.fluid);
     const auto& x_scale = f.position.info().scale;
     double volume = 0.0;
     for (std::size_t a = 0; a < fluid_count(); ++a) {
@@ -195,7 +195,7 @@ void Model<D, Arith>::derived_views(const ViewSink& sink) {
   update_density();
   const Helium& he = parameters_.helium;
   const MeanState mean = mean_state();
-  const std::span<const std::uint32_t> fluid = layout_.slots_of_set(fluid_set);
+  const std::span<const std::uint32_t> fluid = layout_.slots_of(state_.fluid);
   const std::size_t n = fluid.size();
   std::vector<double> density(n), pressure(n), temperature(n), normal_fraction(n);
   std::vector<double> counterflow(D * n), normal_velocity(D * n);

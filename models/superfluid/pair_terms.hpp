@@ -58,9 +58,9 @@ struct RateTerm {
   static constexpr int width = 2 * D + 1;
   const WendlandQuintic<D>& kernel;
   std::span<const double> mass;
-  std::span<const std::uint8_t> is_fluid;
+  SlotInSet is_fluid;
   // The slots that interact as fluid: the fluid's, and the absorbing walls' (else is_fluid).
-  std::span<const std::uint8_t> interacts;
+  SlotInSet interacts;
   const RateInputs<D>& in;
   double tau;     // the sub-step's length
   double gravity; // g along minus the last axis, on v and v_s (eq. 29)
@@ -69,13 +69,13 @@ struct RateTerm {
   // 94 708); it is held at its initial value.
   bool classical = false;
 
-  bool receives(std::uint32_t s) const { return interacts[s] != 0; }
+  bool receives(std::uint32_t s) const { return interacts(s); }
 
   // Gravity (eq. 29): the same increment for every fluid particle, even under time reversal (a
   // wall's holding force cancels it on v and so on v_s).
   template <class Add>
   void self(std::uint32_t s, Add& add) const {
-    if (gravity != 0.0 && is_fluid[s]) {
+    if (gravity != 0.0 && is_fluid(s)) {
       add(D - 1, -tau * gravity);
       add(2 * D - 1, classical ? 0.0 : -tau * gravity);
     }
@@ -91,11 +91,11 @@ struct RateTerm {
         in.pressure_over_density_squared[a] + in.pressure_over_density_squared[b];
     to_a.fill(0.0);
     to_b.fill(0.0);
-    if (!interacts[a] || !interacts[b]) {
+    if (!interacts(a) || !interacts(b)) {
       // A dummy neighbour: the pressure force only (only the fluid one receives).
-      std::array<double, width>& to = is_fluid[a] ? to_a : to_b;
-      const double sign = is_fluid[a] ? 1.0 : -1.0;
-      const double factor = -(is_fluid[a] ? mass[b] : mass[a]) * slope * pressure * sign;
+      std::array<double, width>& to = is_fluid(a) ? to_a : to_b;
+      const double sign = is_fluid(a) ? 1.0 : -1.0;
+      const double factor = -(is_fluid(a) ? mass[b] : mass[a]) * slope * pressure * sign;
       for (int k = 0; k < D; ++k) {
         to[k] = factor * p.x_ab[k];
         to[D + k] = classical ? 0.0 : factor * p.x_ab[k];
@@ -134,9 +134,9 @@ struct RateTerm {
     }
     to_a[2 * D] = -m_b_slope * flux_dot_x;
     to_b[2 * D] = m_a_slope * flux_dot_x;
-    if (!is_fluid[a]) {
+    if (!is_fluid(a)) {
       hold(to_a, -m_b_slope * in.entropy_over_density[a] * temperature_ab, p.x_ab);
-    } else if (!is_fluid[b]) {
+    } else if (!is_fluid(b)) {
       hold(to_b, -m_a_slope * in.entropy_over_density[b] * temperature_ab, p.x_ab);
     }
   }
@@ -160,14 +160,14 @@ struct WallWorkTerm {
   static constexpr int width = 1;
   RateTerm<D> rate;
 
-  bool receives(std::uint32_t s) const { return rate.is_fluid[s] != 0; }
+  bool receives(std::uint32_t s) const { return rate.is_fluid(s); }
 
   void pair(const PairGeometry<D>& p, std::array<double, width>& to_a,
             std::array<double, width>& to_b) const {
     std::array<double, RateTerm<D>::width> increment_a;
     std::array<double, RateTerm<D>::width> increment_b;
     rate.pair(p, increment_a, increment_b);
-    const bool a_is_fluid = rate.is_fluid[p.a] != 0;
+    const bool a_is_fluid = rate.is_fluid(p.a);
     const std::uint32_t f = a_is_fluid ? p.a : p.b;
     const std::uint32_t w = a_is_fluid ? p.b : p.a;
     const std::array<double, RateTerm<D>::width>& d = a_is_fluid ? increment_a : increment_b;
