@@ -66,7 +66,7 @@ void Model<D, Arith>::dissipate(double tau) {
       }
     }
   });
-  const std::span<const std::uint32_t> wall = layout_.slots_of_set(wall_set);
+  const std::span<const std::uint32_t> wall = layout_.slots_of(state_.wall);
   const auto& v_scale = state_.wall.velocity.info().scale;
   for (std::size_t i = 0; i < wall.size(); ++i) {
     for (int k = 0; k < D; ++k) {
@@ -76,7 +76,7 @@ void Model<D, Arith>::dissipate(double tau) {
   const bool any_friction = friction > 0.0 || wall_friction > 0.0;
   if (any_friction) {
     // The weights move with the particles only: the density's layout is this sub-step's.
-    sum_pairs<Arith>(layout_, NormalWeightTerm<D>{kernel_, in.kind}, normal_weight_sums_);
+    sum_pairs<Arith>(layout_, NormalWeightTerm<D>{kernel_, in.superfluid}, normal_weight_sums_);
   }
   const DissipationTerm<D> term{
       kernel_,

@@ -20,9 +20,6 @@
 
 namespace revsph::two_fluid {
 
-// The kinds, in the layout's set order (model.hpp).
-enum SlotKind : std::uint8_t { superfluid_kind = 0, normal_kind = 1, wall_kind = 2 };
-
 // The denominator of eq. (29): w_a = sum over the normal particles j near a of W_aj, the weight of
 // the normal-velocity average a superfluid particle feels. Walls are frozen normal fluid and
 // count (sec. V.3: "both normal and superfluid components have frictional forces against the
@@ -31,20 +28,20 @@ template <int D>
 struct NormalWeightTerm {
   static constexpr int width = 1;
   const WendlandQuintic<D>& kernel;
-  std::span<const std::uint8_t> kind;
+  SlotInSet superfluid; // SlotLayout::in
 
-  bool receives(std::uint32_t s) const { return kind[s] == superfluid_kind; }
+  bool receives(std::uint32_t s) const { return superfluid(s); }
   void pair(const PairGeometry<D>& p, std::array<double, 1>& to_a,
             std::array<double, 1>& to_b) const {
     const double w = kernel.value(p.r);
-    to_a[0] = kind[p.b] != superfluid_kind ? w : 0.0;
-    to_b[0] = kind[p.a] != superfluid_kind ? w : 0.0;
+    to_a[0] = !superfluid(p.b) ? w : 0.0;
+    to_b[0] = !superfluid(p.a) ? w : 0.0;
   }
 };
 
 // Per-slot inputs of the dissipation.
 struct DissipationInputs {
-  std::vector<std::uint8_t> kind;              // SlotKind
+  SlotInSet superfluid, wall;                  // the slots of these sets (SlotLayout::in)
   std::array<std::vector<double>, 3> velocity; // p / m, or the wall's velocity
 };
 
@@ -103,20 +100,20 @@ struct DissipationTerm {
   ContactInputs contact;
   double tau;
 
-  bool receives(std::uint32_t s) const { return in.kind[s] != wall_kind; }
+  bool receives(std::uint32_t s) const { return !in.wall(s); }
 
   // K_ab of the exchange along v_a - v_b (eq. 34's viscosity, or the friction), and that of the
   // central viscosity along n.
   std::pair<double, double> coupling(std::uint32_t a, std::uint32_t b, double r) const {
-    const std::uint8_t ka = in.kind[a];
-    const std::uint8_t kb = in.kind[b];
-    const bool a_normal = ka != superfluid_kind; // normal or wall
-    const bool b_normal = kb != superfluid_kind;
+    const bool a_wall = in.wall(a);
+    const bool b_wall = in.wall(b);
+    const bool a_normal = !in.superfluid(a); // normal or wall
+    const bool b_normal = !in.superfluid(b);
     if (a_normal && b_normal) {
-      if (viscosity == 0.0 || (ka == wall_kind && kb == wall_kind)) {
+      if (viscosity == 0.0 || (a_wall && b_wall)) {
         return {0.0, 0.0};
       }
-      const double pair_factor = ka == wall_kind || kb == wall_kind ? 1.0 : normal_pair_factor;
+      const double pair_factor = a_wall || b_wall ? 1.0 : normal_pair_factor;
       const double k = -2.0 * tau * viscosity * pair_factor * phase_volume[a] * phase_volume[b] *
                        kernel.derivative_over_r(r);
       return central_viscosity ? std::pair{0.0, (D + 2) * k} : std::pair{k, 0.0};
@@ -124,11 +121,11 @@ struct DissipationTerm {
     if (a_normal == b_normal) {
       return {0.0, 0.0}; // superfluid pairs: no viscosity (the superfluid is inviscid)
     }
-    const double c_l = ka == wall_kind || kb == wall_kind ? wall_friction : friction;
+    const double c_l = a_wall || b_wall ? wall_friction : friction;
     if (c_l == 0.0) {
       return {0.0, 0.0};
     }
-    const std::uint32_t s = ka == superfluid_kind ? a : b;
+    const std::uint32_t s = a_normal ? b : a;
     if (!(normal_weight[s] > 0.0)) {
       return {0.0, 0.0}; // every normal neighbour on the kernel's edge: W = 0 there
     }
@@ -144,7 +141,7 @@ struct DissipationTerm {
     for (int k = 0; k < D; ++k) {
       approach += relative[k] * p.x_ab[k] / p.r;
     }
-    if (!(approach < 0.0) || (in.kind[a] == wall_kind && in.kind[b] == wall_kind)) {
+    if (!(approach < 0.0) || (in.wall(a) && in.wall(b))) {
       return;
     }
     double impulse = 0.0; // along n, on a
@@ -159,9 +156,7 @@ struct DissipationTerm {
     if (contact.collision) {
       const double m_a = contact.mass[a];
       const double m_b = contact.mass[b];
-      const double reduced = in.kind[b] == wall_kind   ? m_a
-                             : in.kind[a] == wall_kind ? m_b
-                                                       : m_a * m_b / (m_a + m_b);
+      const double reduced = in.wall(b) ? m_a : in.wall(a) ? m_b : m_a * m_b / (m_a + m_b);
       impulse -= (1.0 + contact.restitution) * reduced * approach;
     }
     for (int k = 0; k < D; ++k) {
@@ -195,9 +190,9 @@ struct DissipationTerm {
     to_a[D] = to_b[D] = 0.0;
     for (int k = 0; k < D; ++k) {
       to_b[k] = -to_a[k];
-      if (in.kind[b] == wall_kind) {
+      if (in.wall(b)) {
         to_a[D] += to_a[k] * in.velocity[k][b];
-      } else if (in.kind[a] == wall_kind) {
+      } else if (in.wall(a)) {
         to_b[D] += to_b[k] * in.velocity[k][a];
       }
     }

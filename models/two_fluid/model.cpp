@@ -15,9 +15,7 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
     : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
       kernel_(parameters_.support_radius),
       layout_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
-              {{"superfluid", state_.superfluid.position.count()},
-               {"normal", state_.normal.position.count()},
-               {"wall", state_.wall.position.count()}}),
+              carrier_sets(state_.superfluid, state_.normal, state_.wall)),
       number_density_sums_(SummedQuantity{"number_density", parameters_.density_scale}),
       impulse_sums_(components_of<D>("momentum", parameters_.momentum_scale)),
       counted_impulse_sums_(components_of<2 * D>("momentum", parameters_.momentum_scale)),
@@ -75,27 +73,19 @@ void Model<D, Arith>::update_constants() {
   spin_ =
       CarrierField<Arith>{&state_.superfluid.spin, &state_.normal.spin, &state_.wall.spin}.reals();
   const std::size_t n = mass_.size();
-  kind_.assign(n, superfluid_kind);
-  for (const std::size_t set : {normal_set, wall_set}) {
-    const std::span<std::uint8_t> part = layout_.part_of_set(std::span(kind_), set);
-    std::fill(part.begin(), part.end(), set == normal_set ? normal_kind : wall_kind);
-  }
-  moves_.assign(n, 1);
   rest_density_.assign(n, parameters_.rest_density(false));
   theta_factor_.assign(n, 0.0);
-  const std::span<std::uint8_t> walls = layout_.part_of_set(std::span(moves_), wall_set);
-  std::fill(walls.begin(), walls.end(), 0);
   const std::span<double> superfluid_rest =
-      layout_.part_of_set(std::span(rest_density_), superfluid_set);
+      layout_.part_of(std::span(rest_density_), state_.superfluid);
   std::fill(superfluid_rest.begin(), superfluid_rest.end(), parameters_.rest_density(true));
   // Eq. (41): sigma = C_e S(T) / rho_ref; theta' / rho = sigma for the superfluid (28) and
   // -sigma rho_s / rho_n for the normal fluid (sec. IV.3).
   const Thermomechanical& t = parameters_.thermomechanical;
   if (t.entropy_scale > 0.0) {
-    for (const std::size_t set : {superfluid_set, normal_set}) {
-      const double kind = set == superfluid_set
-                              ? 1.0
-                              : -parameters_.superfluid_density / parameters_.normal_density;
+    const std::size_t superfluid = layout_.index_of(state_.superfluid);
+    for (const std::size_t set : {superfluid, layout_.index_of(state_.normal)}) {
+      const double kind =
+          set == superfluid ? 1.0 : -parameters_.superfluid_density / parameters_.normal_density;
       const std::span<const double> temperature =
           layout_.part_of_set(std::span<const double>(temperature_), set);
       const std::span<double> factor = layout_.part_of_set(std::span(theta_factor_), set);
@@ -119,13 +109,11 @@ void Model<D, Arith>::update_density() {
                 Gathered<double>{temperature_, &slot_temperature_},
                 Gathered<double>{spin_, &in.spin},
                 Gathered<double>{rest_density_, &slot_rest_density_},
-                Gathered<double>{theta_factor_, &slot_theta_factor_},
-                Gathered<std::uint8_t>{moves_, &in.moves},
-                Gathered<std::uint8_t>{kind_, &dissipation_inputs_.kind});
-  in.viscous.resize(dissipation_inputs_.kind.size());
-  for (std::size_t s = 0; s < in.viscous.size(); ++s) {
-    in.viscous[s] = dissipation_inputs_.kind[s] != superfluid_kind;
-  }
+                Gathered<double>{theta_factor_, &slot_theta_factor_});
+  in.moves = layout_.in(state_.superfluid, state_.normal);
+  in.viscous = layout_.in(state_.normal, state_.wall);
+  dissipation_inputs_.superfluid = layout_.in(state_.superfluid);
+  dissipation_inputs_.wall = layout_.in(state_.wall);
   const std::size_t slots = layout_.slot_count();
   for (std::vector<double>* v :
        {&in.volume, &in.density, &in.pressure, &in.temperature_term, &in.thermomechanical}) {
@@ -152,7 +140,8 @@ void Model<D, Arith>::update_density() {
   // fluid, V for the walls (wholly normal); V itself with separate phases.
   in.phase_volume.resize(slots);
   for (std::size_t s = 0; s < slots; ++s) {
-    in.phase_volume[s] = in.volume[s] * phase_factor_of(dissipation_inputs_.kind[s]);
+    in.phase_volume[s] = in.volume[s] * phase_factor_of(dissipation_inputs_.superfluid(s),
+                                                        dissipation_inputs_.wall(s));
   }
   density_valid_ = true;
   impulses_valid_ = false;
@@ -216,7 +205,7 @@ double Model<D, Arith>::rigid_wall_work(const Sums& sums) const {
   // Each kick of tau adds -J_w . v_w with J_w = F_w tau (the non-gradient spin share, components
   // D..2D-1 where counted, left out: its work on the fluid is force_work's), so the two kicks of a
   // step make the trapezoid rule over the step, second order as the integrator.
-  const std::span<const std::uint32_t> slots = layout_.slots_of_set(wall_set);
+  const std::span<const std::uint32_t> slots = layout_.slots_of(state_.wall);
   const auto& v_scale = state_.wall.velocity.info().scale;
   double work = 0.0;
   for (std::size_t i = 0; i < slots.size(); ++i) {

@@ -56,11 +56,6 @@ public:
   // Viscosity and mutual friction over tau (irreversible; dissipation.cpp).
   void dissipate(double tau);
 
-  // The kinds in the layout's order.
-  static constexpr std::size_t superfluid_set = 0;
-  static constexpr std::size_t normal_set = 1;
-  static constexpr std::size_t wall_set = 2;
-
 private:
   static void kick_substep(Model& model, double dt) { model.kick(dt); }
   static void drift_substep(Model& model, double dt) { model.drift(dt); }
@@ -100,18 +95,18 @@ private:
   // f(kind, set) for the superfluid and the normal particles (different types).
   template <class F>
   void for_each_moving(F&& f) {
-    f(state_.superfluid, superfluid_set);
-    f(state_.normal, normal_set);
+    f(state_.superfluid, layout_.index_of(state_.superfluid));
+    f(state_.normal, layout_.index_of(state_.normal));
   }
   // V_k / V of a particle kind: with interpenetrating phases rho / rho_k for the fluid, whose
   // particles each carry rho = rho_s + rho_n and make up the phase k at the share rho_k / rho of
   // them; 1 for walls and with separate phases.
-  double phase_factor_of(std::uint8_t kind) const {
+  double phase_factor_of(bool superfluid, bool wall) const {
     const Parameters<D>& p = parameters_;
-    if (!p.interpenetrating || kind == wall_kind) {
+    if (!p.interpenetrating || wall) {
       return 1.0;
     }
-    const double phase = kind == superfluid_kind ? p.superfluid_density : p.normal_density;
+    const double phase = superfluid ? p.superfluid_density : p.normal_density;
     return (p.superfluid_density + p.normal_density) / phase;
   }
   // Masses, temperatures, spins and the entropy's factor, gathered once.
@@ -167,8 +162,6 @@ private:
 
   bool constants_valid_ = false;
   std::vector<double> mass_, temperature_, spin_, rest_density_, theta_factor_;
-  std::vector<std::uint8_t> kind_; // SlotKind by carrier
-  std::vector<std::uint8_t> moves_;
   bool density_valid_ = false;
   PairSums<Arith, 1> number_density_sums_;
   ImpulseInputs inputs_; // by slot

@@ -87,7 +87,7 @@ void Model<D, Arith>::derived_views(const ViewSink& sink) {
     sink(ParticleView{std::string(layout_.sets()[set].name), "velocity", "m/s", D,
                       std::move(velocity)});
   });
-  density_and_pressure(wall_set);
+  density_and_pressure(layout_.index_of(state_.wall));
 }
 
 template class Model<2, FixedArithmetic>;

@@ -41,8 +41,8 @@ struct ImpulseInputs {
   std::vector<double> temperature_term; // T / rho^2
   std::vector<double> thermomechanical; // theta' = rho sigma, times -rho_s / rho_n if normal
   std::vector<double> spin;             // omega (about z; 2D)
-  std::vector<std::uint8_t> viscous;    // 1 for normal and wall particles: the spin term's pairs
-  std::vector<std::uint8_t> moves;      // 0 for walls: they receive nothing
+  SlotInSet viscous;                    // normal and wall particles: the spin term's pairs
+  SlotInSet moves;                      // not walls: they receive nothing
 };
 
 // The impulse tau f_ab of one pair, rounded once per particle at the momentum scale:
@@ -80,7 +80,7 @@ struct ImpulseTerm {
   // work the turning walls do on the fluid through them.
   bool walls_receive = false;
 
-  bool receives(std::uint32_t s) const { return in.moves[s] != 0 || walls_receive; }
+  bool receives(std::uint32_t s) const { return in.moves(s) || walls_receive; }
 
   double pressure_factor(std::uint32_t a, std::uint32_t b) const {
     switch (form) {
@@ -115,7 +115,7 @@ struct ImpulseTerm {
       to_a[k] = -phi * gradient[k];
     }
     std::array<double, D> other_a{}, other_b{};
-    if (spin_on && in.viscous[a] != 0 && in.viscous[b] != 0) {
+    if (spin_on && in.viscous(a) && in.viscous(b)) {
       const double factor = 2.0 * rotational_viscosity * in.phase_volume[a] * in.phase_volume[b] *
                             (in.spin[a] + in.spin[b]);
       if constexpr (D == 2) {
@@ -158,7 +158,7 @@ struct ImpulseTerm {
 
   template <class Add>
   void self(std::uint32_t s, Add& add) const {
-    if (gravity != 0.0 && in.moves[s] != 0) {
+    if (gravity != 0.0 && in.moves(s)) {
       add(D - 1, -tau * in.mass[s] * gravity);
     }
   }
