@@ -7,8 +7,6 @@
 #include "fixedpoint/exact_sum.hpp"
 #include "models/entropic/pair_terms.hpp"
 
-#include <Eigen/IterativeLinearSolvers>
-
 #include <algorithm>
 #include <cmath>
 #include <variant>
@@ -310,29 +308,18 @@ void Model<D>::update_implicit_volume() {
   // energy then varies only through V_g, dV_g = -W_gg^-1 (dW_gg V_g + dW_gd V_d), so the force
   // keeps the form of (45b) with y = W_gg^-1 p_g on the gas and y = 0 on the dummies:
   // Phi_ab = y_a V_b + y_b V_a for every pair (models/entropic/derivations.md).
-  fill_pair_matrix<D>(
-      layout_, [this](double r) { return kernel_.value(r); }, kernel_matrix_);
-  const auto n = static_cast<Eigen::Index>(layout_.carrier_count());
-  const auto gas = static_cast<Eigen::Index>(gas_count());
-  const Eigen::Index dummies = n - gas;
-  gas_matrix_ = kernel_matrix_.topLeftCorner(gas, gas);
+  const std::size_t n = layout_.carrier_count();
+  const std::size_t gas = gas_count();
+  implicit_system_.assemble<D>(layout_, [this](double r) { return kernel_.value(r); }, gas,
+                               {1e-12, 5000});
   implicit_volume_.resize(n);
-  for (Eigen::Index d = 0; d < dummies; ++d) {
-    implicit_volume_[gas + d] =
-        mass_[static_cast<std::size_t>(gas + d)] / parameters_.initial_density;
+  for (std::size_t d = gas; d < n; ++d) {
+    implicit_volume_[d] = mass_[d] / parameters_.initial_density;
   }
-  const Eigen::VectorXd dummy_volume = implicit_volume_.tail(dummies);
-  const Eigen::VectorXd right_side =
-      Eigen::VectorXd::Ones(gas) - kernel_matrix_.topRightCorner(gas, dummies) * dummy_volume;
-  Eigen::ConjugateGradient<PairMatrix, Eigen::Lower | Eigen::Upper> solver;
-  solver.setTolerance(1e-12);
-  solver.setMaxIterations(5000);
-  solver.compute(gas_matrix_);
-  implicit_volume_.head(gas) = solver.solve(right_side);
-  if (solver.info() != Eigen::Success) {
+  if (!implicit_system_.solve_with_held(std::vector<double>(gas, 1.0), implicit_volume_)) {
     throw SimulationFault({"gas", 0, "volume",
                            "the implicit volume's solve W V = 1 did not converge (residual " +
-                               format_scientific(solver.error(), 3) + ")"},
+                               format_scientific(implicit_system_.error(), 3) + ")"},
                           -1);
   }
   FaultRecorder faults;
@@ -353,11 +340,11 @@ void Model<D>::update_implicit_volume() {
       implicit_pressure_[carrier[s]] = pressure_[s];
     }
   }
-  implicit_y_ = solver.solve(implicit_pressure_); // (45): y = W^-1 p
-  if (solver.info() != Eigen::Success) {
+  implicit_y_.resize(gas);
+  if (!implicit_system_.solve_unknowns(implicit_pressure_, implicit_y_)) { // (45): y = W^-1 p
     throw SimulationFault({"gas", 0, "pressure",
                            "the implicit volume's solve W y = p did not converge (residual " +
-                               format_scientific(solver.error(), 3) + ")"},
+                               format_scientific(implicit_system_.error(), 3) + ")"},
                           -1);
   }
   for (std::size_t s = 0; s < slots; ++s) {
@@ -552,10 +539,9 @@ std::vector<EnergyTerm> Model<D>::diagnostics() {
   if (parameters_.volume == ParticleVolume::implicit) {
     // How well the volumes solve eq. (26): max over the gas of |sum_b W_ab V_b - 1|.
     update_geometry();
-    const auto gas = static_cast<Eigen::Index>(gas_count());
-    const Eigen::VectorXd residual =
-        (kernel_matrix_ * implicit_volume_).head(gas) - Eigen::VectorXd::Ones(gas);
-    terms.push_back({"implicit_volume_residual", residual.cwiseAbs().maxCoeff()});
+    terms.push_back(
+        {"implicit_volume_residual",
+         implicit_system_.max_residual(implicit_volume_, std::vector<double>(gas_count(), 1.0))});
   }
   return terms;
 }

@@ -13,8 +13,8 @@
 #include "core/energy.hpp"
 #include "core/fixed_targets.hpp"
 #include "core/kernel_wendland.hpp"
-#include "core/pair_matrix.hpp"
 #include "core/pair_sum.hpp"
+#include "core/pair_system.hpp"
 #include "core/particle_view.hpp"
 #include "core/simulation.hpp"
 #include "core/slot_layout.hpp"
@@ -174,8 +174,9 @@ private:
   // they gained (sum Q / T_w), and split into what walls hotter than the initial gas gave out and
   // colder ones took in (for Nusselt numbers).
   double wall_heat_ = 0.0, wall_entropy_ = 0.0, hot_wall_heat_out_ = 0.0, cold_wall_heat_in_ = 0.0;
-  PairMatrix kernel_matrix_, gas_matrix_; // implicit volume: W_ab over all carriers, the gas's
-  Eigen::VectorXd implicit_volume_, implicit_pressure_, implicit_y_; // carriers
+  PairSystem implicit_system_; // implicit volume: W_ab over all carriers, the gas's rows solved
+  std::vector<double> implicit_volume_;                // carriers
+  std::vector<double> implicit_pressure_, implicit_y_; // the gas
   // The hyperbolic heat conduction: w per slot, the w and S exchanges of a sub-step.
   CoordinateArrays<D> slot_flux_;
   PairSums<FixedArithmetic, D> flux_sums_;

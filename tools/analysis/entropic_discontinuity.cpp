@@ -2,12 +2,10 @@
 
 #include "core/arithmetic.hpp"
 #include "core/kernel_wendland.hpp"
-#include "core/pair_matrix.hpp"
 #include "core/pair_sum.hpp"
+#include "core/pair_system.hpp"
 #include "core/slot_layout.hpp"
 #include "models/entropic/pair_terms.hpp"
-
-#include <Eigen/IterativeLinearSolvers>
 
 #include <cmath>
 #include <stdexcept>
@@ -57,16 +55,10 @@ DiscontinuityProfiles entropic_discontinuity(double left_spacing, double support
     layout.scatter(sums.values(q), by_carrier[q]);
   }
   // The implicit volume: W V = 1 over all particles.
-  PairMatrix w;
-  fill_pair_matrix<1>(
-      layout, [&](double r) { return kernel.value(r); }, w);
-  Eigen::ConjugateGradient<PairMatrix, Eigen::Lower | Eigen::Upper> solver;
-  solver.setTolerance(1e-12);
-  solver.setMaxIterations(20000);
-  solver.compute(w);
-  const Eigen::VectorXd implicit =
-      solver.solve(Eigen::VectorXd::Ones(static_cast<Eigen::Index>(n)));
-  if (solver.info() != Eigen::Success) {
+  PairSystem w;
+  w.assemble<1>(layout, [&](double r) { return kernel.value(r); }, n, {1e-12, 20000});
+  std::vector<double> implicit(n);
+  if (!w.solve_unknowns(std::vector<double>(n, 1.0), implicit)) {
     throw std::runtime_error("discontinuity test: W V = 1 did not converge");
   }
 
@@ -85,8 +77,7 @@ DiscontinuityProfiles entropic_discontinuity(double left_spacing, double support
         {mass_sum, s_c * mass_sum / mass},
         {mass * entropy_sum / s_c, entropy_sum},
         {mass * number_sum, s_c * number_sum},
-        {mass / implicit[static_cast<Eigen::Index>(c)],
-         s_c / implicit[static_cast<Eigen::Index>(c)]},
+        {mass / implicit[c], s_c / implicit[c]},
         {mass_sum, entropy_sum},
     }};
     for (std::size_t v = 0; v < values.size(); ++v) {

@@ -2,12 +2,10 @@
 
 #include "core/arithmetic.hpp"
 #include "core/kernel_wendland.hpp"
-#include "core/pair_matrix.hpp"
 #include "core/pair_sum.hpp"
+#include "core/pair_system.hpp"
 #include "core/particle_blocks.hpp"
 #include "core/slot_layout.hpp"
-
-#include <Eigen/IterativeLinearSolvers>
 
 #include <cmath>
 #include <numbers>
@@ -154,18 +152,15 @@ QuadratureResult entropic_quadrature(int columns, double band_width) {
   // Implicit volume (26): sum_b W_ab V_b = 1 over all particles, dummies included. W is symmetric
   // positive definite (the Wendland quintic is positive definite in 2D), so conjugate gradients
   // from a zero start, as models/entropic/model.cpp solves it.
-  PairMatrix w;
-  fill_pair_matrix<2>(
-      layout, [&](double r) { return kernel.value(r); }, w);
-  Eigen::ConjugateGradient<PairMatrix, Eigen::Lower | Eigen::Upper> solver;
-  solver.setTolerance(1e-12);
-  solver.setMaxIterations(20000);
-  solver.compute(w);
-  const Eigen::VectorXd implicit_volume =
-      solver.solve(Eigen::VectorXd::Ones(static_cast<Eigen::Index>(layout.carrier_count())));
-  result.solver_iterations = static_cast<int>(solver.iterations());
-  result.solver_residual = solver.error();
-  if (solver.info() != Eigen::Success) {
+  PairSystem w;
+  w.assemble<2>(layout, [&](double r) { return kernel.value(r); }, layout.carrier_count(),
+                {1e-12, 20000});
+  std::vector<double> implicit_volume(layout.carrier_count());
+  const bool converged =
+      w.solve_unknowns(std::vector<double>(layout.carrier_count(), 1.0), implicit_volume);
+  result.solver_iterations = w.iterations();
+  result.solver_residual = w.error();
+  if (!converged) {
     throw std::runtime_error("the implicit volume's solve W V = 1 did not converge (" +
                              std::to_string(columns) + " columns)");
   }
@@ -173,7 +168,7 @@ QuadratureResult entropic_quadrature(int columns, double band_width) {
   // (29): sum_a V_a f(x_a) over the particles in [0,1]^2 (carriers 0 .. N-1, in lattice order).
   for (std::size_t c = 0; c < particles.inside.size(); ++c) {
     result.volume_sum[0] += mass_volume[c];
-    result.volume_sum[1] += implicit_volume[static_cast<Eigen::Index>(c)];
+    result.volume_sum[1] += implicit_volume[c];
   }
   const auto& functions = quadrature_functions();
   for (int f = 0; f < 3; ++f) {
@@ -182,7 +177,7 @@ QuadratureResult entropic_quadrature(int columns, double band_width) {
     for (std::size_t c = 0; c < particles.inside.size(); ++c) {
       const double value = functions[f].f(particles.inside[c][0], particles.inside[c][1]);
       mass_sum += mass_volume[c] * value;
-      implicit_sum += implicit_volume[static_cast<Eigen::Index>(c)] * value;
+      implicit_sum += implicit_volume[c] * value;
     }
     result.quadrature[0][f] = mass_sum;
     result.quadrature[1][f] = implicit_sum;
