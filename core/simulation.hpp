@@ -200,7 +200,7 @@ public:
         }
         apply_step<M>(model_, M::palindrome(), dt);
         for (const StepHook<M>& hook : step_hooks_of<M>()) {
-          hook.apply(model_, steps_taken_ + 1);
+          (model_.*hook.apply)(steps_taken_ + 1);
         }
       } catch (const SimulationFault& fault) {
         throw SimulationFault(fault.fault(), steps_taken_ + 1);
@@ -262,7 +262,7 @@ public:
     return names;
   }
   void apply_substep(std::size_t index, double dt) override {
-    attributing_faults([&] { M::palindrome()[index].apply(model_, dt); });
+    attributing_faults([&] { (model_.*M::palindrome()[index].apply)(dt); });
   }
 
   M& model() { return model_; }

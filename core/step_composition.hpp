@@ -21,8 +21,8 @@ namespace revsph {
 template <class Model>
 struct Substep {
   std::string_view name;
-  double dt_fraction; // this sub-step advances its group by dt_fraction * dt
-  void (*apply)(Model& model, double dt);
+  double dt_fraction;              // this sub-step advances its group by dt_fraction * dt
+  void (Model::*apply)(double dt); // a member function of the model
   // The one declaration of an irreversible sub-step (dissipation, an update without an exact
   // inverse): null for an exactly invertible one; otherwise what it does irreversibly in this
   // case, or "" where it does nothing irreversible (a relaxation sub-step in a solid, say). The
@@ -35,7 +35,7 @@ struct Substep {
 template <class Model>
 struct StepHook {
   std::string_view name;
-  void (*apply)(Model& model, std::int64_t step);
+  void (Model::*apply)(std::int64_t step);
   std::string (*irreversible)(const Model& model);
 };
 
@@ -97,7 +97,7 @@ void require_palindrome(std::span<const Substep<Model>> sequence) {
 template <class Model>
 void apply_step(Model& model, std::span<const Substep<Model>> sequence, double dt) {
   for (const Substep<Model>& s : sequence) {
-    s.apply(model, s.dt_fraction * dt);
+    (model.*s.apply)(s.dt_fraction * dt);
   }
 }
 

@@ -58,35 +58,35 @@ std::string Model<D>::midpoint_dissipation(const Model& model) {
 }
 
 template <int D>
-void Model<D>::drift_substep(Model& model, double dt) {
+void Model<D>::drift_substep(double dt) {
   // With the midpoint splitting, Strang the other way round: the drift is split in halves and
   // the dissipation acts over the whole step between them, so the kicks at a step boundary see
   // one state.
-  const bool midpoint = model.dissipates_in(DissipationSplitting::midpoint);
-  const bool moving = model.parameters_.particles_move;
-  const double drift = midpoint ? 0.5 * dt : dt;
+  const bool midpoint = dissipates_in(DissipationSplitting::midpoint);
+  const bool moving = parameters_.particles_move;
+  const double drift_time = midpoint ? 0.5 * dt : dt;
   if (moving) {
-    model.drift(drift);
+    drift(drift_time);
   }
   if (midpoint) {
-    model.dissipate(dt);
+    dissipate(dt);
     if (moving) {
-      model.drift(drift);
+      drift(drift_time);
     }
   }
 }
 
 template <int D>
-void Model<D>::dissipation_substep(Model& model, double dt) {
-  if (model.dissipates_in(DissipationSplitting::strang)) {
-    model.dissipate(dt);
+void Model<D>::dissipation_substep(double dt) {
+  if (dissipates_in(DissipationSplitting::strang)) {
+    dissipate(dt);
   }
 }
 
 template <int D>
-void Model<D>::dissipation_hook(Model& model, std::int64_t) {
-  if (model.dissipates_in(DissipationSplitting::first_order)) {
-    model.dissipate(model.parameters_.dt);
+void Model<D>::dissipation_hook(std::int64_t /*step*/) {
+  if (dissipates_in(DissipationSplitting::first_order)) {
+    dissipate(parameters_.dt);
   }
 }
 
@@ -217,9 +217,9 @@ void Model<D>::dissipate(double tau) {
   template std::string Model<D>::strang_dissipation(const Model&);                                 \
   template std::string Model<D>::first_order_dissipation(const Model&);                            \
   template std::string Model<D>::midpoint_dissipation(const Model&);                               \
-  template void Model<D>::drift_substep(Model&, double);                                           \
-  template void Model<D>::dissipation_substep(Model&, double);                                     \
-  template void Model<D>::dissipation_hook(Model&, std::int64_t);                                  \
+  template void Model<D>::drift_substep(double);                                                   \
+  template void Model<D>::dissipation_substep(double);                                             \
+  template void Model<D>::dissipation_hook(std::int64_t);                                          \
   template void Model<D>::dissipate(double);
 REVSPH_ENTROPIC_DISSIPATION(1)
 REVSPH_ENTROPIC_DISSIPATION(2)

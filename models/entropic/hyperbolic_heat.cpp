@@ -11,23 +11,23 @@
 namespace revsph::entropic {
 
 template <int D>
-void Model<D>::flux_substep(Model& model, double dt) {
-  if (model.parameters_.hyperbolic()) {
-    model.exchange_flux(dt);
+void Model<D>::flux_substep(double dt) {
+  if (parameters_.hyperbolic()) {
+    exchange_flux(dt);
   }
 }
 
 template <int D>
-void Model<D>::entropy_exchange_substep(Model& model, double dt) {
-  if (model.parameters_.hyperbolic()) {
-    model.exchange_entropy(dt);
+void Model<D>::entropy_exchange_substep(double dt) {
+  if (parameters_.hyperbolic()) {
+    exchange_entropy(dt);
   }
 }
 
 template <int D>
-void Model<D>::relaxation_substep(Model& model, double dt) {
-  if (model.parameters_.relaxing()) {
-    model.relax_flux(dt);
+void Model<D>::relaxation_substep(double dt) {
+  if (parameters_.relaxing()) {
+    relax_flux(dt);
   }
 }
 
@@ -144,9 +144,9 @@ void Model<D>::relax_flux(double dt) {
 }
 
 #define REVSPH_ENTROPIC_HYPERBOLIC_HEAT(D)                                                         \
-  template void Model<D>::flux_substep(Model&, double);                                            \
-  template void Model<D>::entropy_exchange_substep(Model&, double);                                \
-  template void Model<D>::relaxation_substep(Model&, double);                                      \
+  template void Model<D>::flux_substep(double);                                                    \
+  template void Model<D>::entropy_exchange_substep(double);                                        \
+  template void Model<D>::relaxation_substep(double);                                              \
   template std::string Model<D>::relaxation_description(const Model&);                             \
   template void Model<D>::exchange_flux(double);                                                   \
   template void Model<D>::exchange_entropy(double);                                                \

@@ -86,21 +86,21 @@ public:
   Thermodynamics thermodynamics();
 
 private:
-  static void kick_substep(Model& model, double dt) {
-    if (model.parameters_.particles_move) {
-      model.kick(dt);
+  void kick_substep(double dt) {
+    if (parameters_.particles_move) {
+      kick(dt);
     }
   }
   // The drift; with the midpoint splitting, two half drifts around the dissipative update.
-  static void drift_substep(Model& model, double dt);
-  static void flux_substep(Model& model, double dt);
-  static void entropy_exchange_substep(Model& model, double dt);
-  static void relaxation_substep(Model& model, double dt);
+  void drift_substep(double dt);
+  void flux_substep(double dt);
+  void entropy_exchange_substep(double dt);
+  void relaxation_substep(double dt);
   static std::string relaxation_description(const Model& model);
   // The dissipation as Strang half steps at the step's ends, or as one update after the step
   // (parameters.hpp); each does nothing in the other splitting or without dissipation.
-  static void dissipation_substep(Model& model, double dt);
-  static void dissipation_hook(Model& model, std::int64_t step);
+  void dissipation_substep(double dt);
+  void dissipation_hook(std::int64_t step);
   static std::string strang_dissipation(const Model& model);
   static std::string first_order_dissipation(const Model& model);
   static std::string midpoint_dissipation(const Model& model);

@@ -38,13 +38,13 @@ Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state,
 template <int D>
 std::span<const Substep<Model<D>>> Model<D>::palindrome() {
   static constexpr Substep<Model> sequence[] = {
-      {"relaxation", 0.5, &Model::relaxation_substep, &Model::relaxation_irreversibility},
-      {"kick", 0.5, &Model::kick_substep},
-      {"drift", 0.5, &Model::drift_substep},
-      {"distortion", 1.0, &Model::distortion_substep, &Model::distortion_irreversibility},
-      {"drift", 0.5, &Model::drift_substep},
-      {"kick", 0.5, &Model::kick_substep},
-      {"relaxation", 0.5, &Model::relaxation_substep, &Model::relaxation_irreversibility},
+      {"relaxation", 0.5, &Model::relax_at_step_end, &Model::relaxation_irreversibility},
+      {"kick", 0.5, &Model::kick},
+      {"drift", 0.5, &Model::drift},
+      {"distortion", 1.0, &Model::update_distortion, &Model::distortion_irreversibility},
+      {"drift", 0.5, &Model::drift},
+      {"kick", 0.5, &Model::kick},
+      {"relaxation", 0.5, &Model::relax_at_step_end, &Model::relaxation_irreversibility},
   };
   return sequence;
 }

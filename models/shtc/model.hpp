@@ -82,10 +82,6 @@ public:
   std::size_t carrier_count() const { return material_count() + state_.boundary.position.count(); }
 
 private:
-  static void kick_substep(Model& model, double dt) { model.kick(dt); }
-  static void drift_substep(Model& model, double dt) { model.drift(dt); }
-  static void distortion_substep(Model& model, double dt) { model.update_distortion(dt); }
-  static void relaxation_substep(Model& model, double dt) { model.relax_at_step_end(dt); }
   // What each sub-step does irreversibly in this case ("" for nothing; step_composition.hpp).
   static std::string distortion_irreversibility(const Model& model);
   static std::string relaxation_irreversibility(const Model& model);

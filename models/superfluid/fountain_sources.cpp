@@ -13,8 +13,8 @@ namespace revsph::superfluid {
 template <int D, class Arith>
 std::span<const StepHook<Model<D, Arith>>> Model<D, Arith>::step_hooks() {
   static constexpr StepHook<Model> hooks[] = {
-      {"superleak", &Model::superleak_hook, &Model::superleak_acts},
-      {"heater", &Model::heater_hook, &Model::heater_acts},
+      {"superleak", &Model::relax_superleak, &Model::superleak_acts},
+      {"heater", &Model::heat, &Model::heater_acts},
   };
   return hooks;
 }

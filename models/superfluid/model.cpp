@@ -97,13 +97,13 @@ template <int D, class Arith>
 std::span<const Substep<Model<D, Arith>>> Model<D, Arith>::palindrome() {
   // clang-format off
   static constexpr Substep<Model> sequence[] = {
-      {"drift", 0.5, &Model::drift_substep},
-      {"dissipate", 0.5, &Model::dissipate_substep, &Model::dissipation_acts},
-      {"copy_one", 0.5, &Model::copy_one_substep},
-      {"copy_two", 1.0, &Model::copy_two_substep},
-      {"copy_one", 0.5, &Model::copy_one_substep},
-      {"dissipate", 0.5, &Model::dissipate_substep, &Model::dissipation_acts},
-      {"drift", 0.5, &Model::drift_substep},
+      {"drift", 0.5, &Model::drift},
+      {"dissipate", 0.5, &Model::dissipate, &Model::dissipation_acts},
+      {"copy_one", 0.5, &Model::update_copy_one},
+      {"copy_two", 1.0, &Model::update_copy_two},
+      {"copy_one", 0.5, &Model::update_copy_one},
+      {"dissipate", 0.5, &Model::dissipate, &Model::dissipation_acts},
+      {"drift", 0.5, &Model::drift},
   };
   // clang-format on
   return sequence;

@@ -76,13 +76,9 @@ public:
   void update_copy(int to, double dt);
 
 private:
-  static void drift_substep(Model& model, double dt) { model.drift(dt); }
-  static void copy_one_substep(Model& model, double dt) { model.update_copy(0, dt); }
-  static void copy_two_substep(Model& model, double dt) { model.update_copy(1, dt); }
-  static void dissipate_substep(Model& model, double dt) { model.dissipate(dt); }
+  void update_copy_one(double dt) { update_copy(0, dt); }
+  void update_copy_two(double dt) { update_copy(1, dt); }
   static std::string dissipation_acts(const Model& model);
-  static void superleak_hook(Model& model, std::int64_t step) { model.relax_superleak(step); }
-  static void heater_hook(Model& model, std::int64_t step) { model.heat(step); }
   static std::string superleak_acts(const Model& model);
   static std::string heater_acts(const Model& model);
   // Adds the same entropy increment ds (rounded up to the scale) to both copies of particle i;

@@ -32,11 +32,11 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
 template <int D, class Arith>
 std::span<const Substep<Model<D, Arith>>> Model<D, Arith>::palindrome() {
   static constexpr Substep<Model> sequence[] = {
-      {"dissipate", 0.5, &Model::dissipate_substep, &Model::dissipation_acts},
-      {"kick", 0.5, &Model::kick_substep},
-      {"drift", 1.0, &Model::drift_substep},
-      {"kick", 0.5, &Model::kick_substep},
-      {"dissipate", 0.5, &Model::dissipate_substep, &Model::dissipation_acts},
+      {"dissipate", 0.5, &Model::dissipate, &Model::dissipation_acts},
+      {"kick", 0.5, &Model::kick},
+      {"drift", 1.0, &Model::drift},
+      {"kick", 0.5, &Model::kick},
+      {"dissipate", 0.5, &Model::dissipate, &Model::dissipation_acts},
   };
   return sequence;
 }

@@ -57,9 +57,6 @@ public:
   void dissipate(double tau);
 
 private:
-  static void kick_substep(Model& model, double dt) { model.kick(dt); }
-  static void drift_substep(Model& model, double dt) { model.drift(dt); }
-  static void dissipate_substep(Model& model, double dt) { model.dissipate(dt); }
   static std::string dissipation_acts(const Model& model);
   // The thermomechanical or the spin force is on: the kick counts their work.
   bool counts_force_work() const {

@@ -52,9 +52,9 @@ void Model<D, Arith>::initialise_density_constants(std::span<const double> targe
 template <int D, class Arith>
 std::span<const Substep<Model<D, Arith>>> Model<D, Arith>::palindrome() {
   static constexpr Substep<Model> sequence[] = {
-      {"kick", 0.5, &Model::kick_substep},
-      {"drift", 1.0, &Model::drift_substep},
-      {"kick", 0.5, &Model::kick_substep},
+      {"kick", 0.5, &Model::kick},
+      {"drift", 1.0, &Model::drift},
+      {"kick", 0.5, &Model::kick},
   };
   return sequence;
 }
@@ -207,7 +207,7 @@ std::array<std::vector<double>, D> Model<D, Arith>::filtered_velocity() {
 template <int D, class Arith>
 std::span<const StepHook<Model<D, Arith>>> Model<D, Arith>::step_hooks() {
   static constexpr StepHook<Model> hooks[] = {
-      {"shepard_filter", &Model::shepard_hook, &Model::shepard_filter_acts}};
+      {"shepard_filter", &Model::filter_velocity, &Model::shepard_filter_acts}};
   return hooks;
 }
 

@@ -68,9 +68,6 @@ public:
   const std::array<std::vector<double>, D>& acceleration();
 
 private:
-  static void kick_substep(Model& model, double dt) { model.kick(dt); }
-  static void drift_substep(Model& model, double dt) { model.drift(dt); }
-  static void shepard_hook(Model& model, std::int64_t step) { model.filter_velocity(step); }
   static std::string shepard_filter_acts(const Model& model);
   enum class EnergyOf { kinetic, gravitational, compressional, wall, dummy_compressional };
   std::size_t fluid_count() const { return state_.fluid.position.count(); }

@@ -154,20 +154,19 @@ private:
     forces_valid_ = true;
   }
   // v += dt a(x): exact in integers, and undone bit for bit after the time reversal.
-  static void kick(Model& model, double dt) {
-    model.update_forces();
-    const auto slots = model.layout_.slots_of(model.state_.gas);
+  void kick(double dt) {
+    update_forces();
+    const auto slots = layout_.slots_of(state_.gas);
     FaultRecorder faults;
     add_rate<FixedArithmetic>(
-        model.state_.gas.velocity,
-        [&](int k, std::size_t i) { return model.force_sums_.value(k, slots[i]); }, dt, faults);
+        state_.gas.velocity, [&](int k, std::size_t i) { return force_sums_.value(k, slots[i]); },
+        dt, faults);
   }
   // x += dt v.
-  static void drift(Model& model, double dt) {
+  void drift(double dt) {
     FaultRecorder faults;
-    revsph::drift<FixedArithmetic>(model.state_.gas.position, model.state_.gas.velocity, dt,
-                                   faults);
-    model.forces_valid_ = false;
+    revsph::drift<FixedArithmetic>(state_.gas.position, state_.gas.velocity, dt, faults);
+    forces_valid_ = false;
   }
 
   Settings settings_;

@@ -10,19 +10,17 @@ namespace {
 
 struct Recorder {
   std::vector<std::pair<char, double>> calls;
+  void a(double dt) { calls.push_back({'a', dt}); }
+  void b(double dt) { calls.push_back({'b', dt}); }
 };
 
-void a(Recorder& r, double dt) {
-  r.calls.push_back({'a', dt});
-}
-void b(Recorder& r, double dt) {
-  r.calls.push_back({'b', dt});
-}
+constexpr auto a = &Recorder::a;
+constexpr auto b = &Recorder::b;
 
 using Step = revsph::Substep<Recorder>;
 
 TEST(StepComposition, AcceptsVerletAndAppliesFractionsOfTheStep) {
-  const Step verlet[] = {{"kick", 0.5, &a}, {"drift", 1.0, &b}, {"kick", 0.5, &a}};
+  const Step verlet[] = {{"kick", 0.5, a}, {"drift", 1.0, b}, {"kick", 0.5, a}};
   EXPECT_NO_THROW(revsph::require_palindrome<Recorder>(verlet));
   Recorder recorder;
   revsph::apply_step<Recorder>(recorder, verlet, 0.2);
@@ -34,18 +32,18 @@ TEST(StepComposition, AcceptsVerletAndAppliesFractionsOfTheStep) {
 
 TEST(StepComposition, AcceptsLongerPalindromes) {
   const Step strang[] = {
-      {"a", 0.25, &a}, {"b", 0.5, &b}, {"a", 0.5, &a}, {"b", 0.5, &b}, {"a", 0.25, &a}};
+      {"a", 0.25, a}, {"b", 0.5, b}, {"a", 0.5, a}, {"b", 0.5, b}, {"a", 0.25, a}};
   EXPECT_NO_THROW(revsph::require_palindrome<Recorder>(strang));
 }
 
 TEST(StepComposition, RejectsSequencesThatAreNotPalindromes) {
-  const Step lopsided[] = {{"kick", 1.0, &a}, {"drift", 1.0, &b}};
+  const Step lopsided[] = {{"kick", 1.0, a}, {"drift", 1.0, b}};
   EXPECT_THROW(revsph::require_palindrome<Recorder>(lopsided), std::logic_error);
-  const Step unequal[] = {{"kick", 0.4, &a}, {"drift", 1.0, &b}, {"kick", 0.6, &a}};
+  const Step unequal[] = {{"kick", 0.4, a}, {"drift", 1.0, b}, {"kick", 0.6, a}};
   EXPECT_THROW(revsph::require_palindrome<Recorder>(unequal), std::logic_error);
-  const Step short_step[] = {{"kick", 0.25, &a}, {"drift", 1.0, &b}, {"kick", 0.25, &a}};
+  const Step short_step[] = {{"kick", 0.25, a}, {"drift", 1.0, b}, {"kick", 0.25, a}};
   EXPECT_THROW(revsph::require_palindrome<Recorder>(short_step), std::logic_error);
-  const Step mismatched[] = {{"kick", 0.5, &a}, {"drift", 1.0, &b}, {"kick", 0.5, &b}};
+  const Step mismatched[] = {{"kick", 0.5, a}, {"drift", 1.0, b}, {"kick", 0.5, b}};
   EXPECT_THROW(revsph::require_palindrome<Recorder>(mismatched), std::logic_error);
 }
 
