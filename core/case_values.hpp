@@ -21,6 +21,9 @@ fixedpoint::Scale scale_or(const CaseFile& case_file, const char* key, double ma
 // Positions keep this many fraction bits below the domain's largest coordinate by default, so
 // that the double view of a position is exact.
 constexpr int position_fraction_bits = 52;
+// Masses are constants of the set-up: this many fraction bits below the largest keep their
+// double view exact.
+constexpr int mass_fraction_bits = 52;
 
 // The positions' scale: fixed_point.position_exponent, or by default the one that covers the
 // domain's largest coordinate with 52 fraction bits. Either way its unit must resolve dr to

@@ -74,6 +74,15 @@ inline double neighbour_list_bytes(int dimension, double radius_over_spacing) {
   return 8.0 * neighbours_within(dimension, radius_over_spacing);
 }
 
+// The budget of a model whose particles cost `other_bytes` each besides their neighbour lists
+// (state, slot gathers, sums: the model's estimate) at `radius_over_spacing` (the kernel's reach
+// over dr).
+inline ParticleBudget particle_budget(int dimension, double radius_over_spacing, double other_bytes,
+                                      std::size_t memory_bytes) {
+  const double neighbours = neighbour_list_bytes(dimension, radius_over_spacing);
+  return {other_bytes + neighbours, memory_bytes, neighbours};
+}
+
 // Reads every [[particles]] block. Each generated particle must lie inside `domain`. Before any
 // particle is generated, the count is estimated from the block volumes; a case that would not
 // fit in memory (or exceeds 2^32 - 1 particles) is refused with the estimate in the message.

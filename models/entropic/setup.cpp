@@ -24,11 +24,6 @@ constexpr std::string_view particle_kinds[] = {"gas", "wall", "dummy", "thermal"
 // arrays (density, volume, thermodynamic state, force coefficients), the kernel and impulse sums
 // and the cell list ~400 B, plus 4 B per neighbour in the lists and as much again while they are
 // built (as models/wcsph/setup.cpp).
-double bytes_per_particle(int dimension, double support_radius_over_dr) {
-  return 400.0 + neighbour_list_bytes(dimension, support_radius_over_dr);
-}
-// Masses are constants of the setup; 52 bits keep their double view exact.
-constexpr int mass_fraction_bits = 52;
 
 // initial.temperature_gradient and initial.temperature_perturbation: at the initial density
 // T ∝ e^(sigma / c_V) for both gas laws (equation_of_state.hpp), so a temperature T is
@@ -144,9 +139,9 @@ template <int D>
 std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const SimulationOptions& options) {
   const Parameters<D> parameters = read_parameters<D>(case_file);
   const double reach = parameters.support_radius / parameters.dr; // support radius over dr
-  const auto blocks = read_particle_blocks<D>(
-      case_file, parameters.dr, parameters.domain, particle_kinds,
-      {bytes_per_particle(D, reach), options.memory_budget_bytes, neighbour_list_bytes(D, reach)});
+  const auto blocks =
+      read_particle_blocks<D>(case_file, parameters.dr, parameters.domain, particle_kinds,
+                              particle_budget(D, reach, 400.0, options.memory_budget_bytes));
   // Gas particles in block order, at rest, each with the mass rho times its lattice cell volume
   // and the entropy S = m sigma of the initial state (eq. 21 with uniform sigma).
   const double specific_entropy = parameters.initial_specific_entropy();

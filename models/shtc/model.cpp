@@ -14,11 +14,7 @@
 
 namespace revsph::shtc {
 
-namespace {
-
-constexpr int mass_fraction_bits = 52; // masses are constants; their double view stays exact
-
-} // namespace
+namespace {} // namespace
 
 template <int D>
 Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state,

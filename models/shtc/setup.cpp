@@ -21,10 +21,6 @@ constexpr std::string_view particle_kinds[] = {"material", "boundary"};
 // Memory per particle, generously: state (~(2 D + D^2 + 5) * 8 B), slot copies, the matrices H,
 // H^-1, stress, L and its sum (5 D^2 doubles), cell list, plus 4 B per neighbour in the half list
 // and as much again while it is built.
-double bytes_per_particle(int dimension, double support_radius_over_dr) {
-  return 300.0 + 56.0 * dimension * dimension +
-         neighbour_list_bytes(dimension, support_radius_over_dr);
-}
 
 // Paper 2 eqs. (55) and (60).
 template <int D>
@@ -121,7 +117,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   const double reach = parameters.support_radius() / parameters.dr; // support radius over dr
   const auto blocks = read_particle_blocks<D>(
       case_file, parameters.dr, parameters.domain, particle_kinds,
-      {bytes_per_particle(D, reach), options.memory_budget_bytes, neighbour_list_bytes(D, reach)});
+      particle_budget(D, reach, 300.0 + 56.0 * D * D, options.memory_budget_bytes));
   std::vector<Vec<D>> material_positions, boundary_positions, boundary_velocities;
   for (const auto& block : blocks) {
     auto& positions = block.kind == "material" ? material_positions : boundary_positions;

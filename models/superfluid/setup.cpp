@@ -20,10 +20,6 @@ namespace {
 
 constexpr std::string_view particle_kinds[] = {"fluid", "dummy", "wall"};
 // State (2 x (2D + 1) + D + 2 values), derived arrays (~4D + 8) and cell lists, plus neighbours.
-double bytes_per_particle(int dimension, double support_radius_over_dr) {
-  return 400.0 + neighbour_list_bytes(dimension, support_radius_over_dr);
-}
-constexpr int mass_fraction_bits = 52;
 
 // Copy 1 of the initial fields: rest at s0, plus the standing wave of eq. (26) and the seeded
 // random perturbations.
@@ -83,9 +79,9 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   using Raw = typename Arith::Raw;
   const Parameters<D> parameters = read_parameters<D>(case_file);
   const double reach = parameters.support_radius / parameters.dr;
-  const auto blocks = read_particle_blocks<D>(
-      case_file, parameters.dr, parameters.domain, particle_kinds,
-      {bytes_per_particle(D, reach), options.memory_budget_bytes, neighbour_list_bytes(D, reach)});
+  const auto blocks =
+      read_particle_blocks<D>(case_file, parameters.dr, parameters.domain, particle_kinds,
+                              particle_budget(D, reach, 400.0, options.memory_budget_bytes));
   std::vector<Vec<D>> fluid_positions, dummy_positions, wall_positions, wall_velocities;
   std::vector<double> fluid_masses, dummy_masses, wall_masses;
   const double rho0 = parameters.helium.rest_density;

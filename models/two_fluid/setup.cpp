@@ -19,10 +19,6 @@ namespace {
 
 constexpr std::string_view particle_kinds[] = {"superfluid", "normal", "mixed", "wall"};
 // State (2D + 3 values), a dozen per-slot arrays and cell lists, plus neighbours.
-double bytes_per_particle(int dimension, double support_radius_over_dr) {
-  return 300.0 + neighbour_list_bytes(dimension, support_radius_over_dr);
-}
-constexpr int mass_fraction_bits = 52;
 
 // The particles of one kind as the setup collects them.
 template <int D>
@@ -104,9 +100,9 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
     case_file.fail("spin.coefficient", "the spin term (eq. 40) is implemented in 2D only");
   }
   const double reach = parameters.support_radius / parameters.dr;
-  const auto blocks = read_particle_blocks<D>(
-      case_file, parameters.dr, parameters.domain, particle_kinds,
-      {bytes_per_particle(D, reach), options.memory_budget_bytes, neighbour_list_bytes(D, reach)});
+  const auto blocks =
+      read_particle_blocks<D>(case_file, parameters.dr, parameters.domain, particle_kinds,
+                              particle_budget(D, reach, 300.0, options.memory_budget_bytes));
   KindParticles<D> superfluid, normal, wall;
   for (const auto& block : blocks) {
     const bool rigid = rigid_wall(case_file, block.key);

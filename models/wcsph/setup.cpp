@@ -22,11 +22,6 @@ constexpr std::string_view particle_kinds[] = {"fluid", "wall", "dummy"};
 // Memory per particle, generously: state, positions, derived arrays and cell lists ~250 B, plus
 // 4 B per neighbour in the lists and as much again while they are built. Measured about 220 B per
 // particle in 2D at h = 3 dr (~28 neighbours; tools/bench/results).
-double bytes_per_particle(int dimension, double support_radius_over_dr) {
-  return 250.0 + neighbour_list_bytes(dimension, support_radius_over_dr);
-}
-// Masses are constants of the setup; 52 bits keep their double view exact.
-constexpr int mass_fraction_bits = 52;
 
 // The initial velocity and the density each carrier (fluid, then dummy) should have at t = 0:
 // rest, or the Gresho vortex of App. A (its velocity, and the density whose Tait pressure is the
@@ -144,9 +139,9 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   using Raw = typename Arith::Raw;
   const Parameters<D> parameters = read_parameters<D>(case_file);
   const double reach = parameters.support_radius / parameters.dr; // support radius over dr
-  auto blocks = read_particle_blocks<D>(
-      case_file, parameters.dr, parameters.domain, particle_kinds,
-      {bytes_per_particle(D, reach), options.memory_budget_bytes, neighbour_list_bytes(D, reach)});
+  auto blocks =
+      read_particle_blocks<D>(case_file, parameters.dr, parameters.domain, particle_kinds,
+                              particle_budget(D, reach, 250.0, options.memory_budget_bytes));
   // Particles of each set in block order; masses are rho0 times the lattice cell volume.
   std::vector<Vec<D>> fluid_positions, wall_positions, dummy_positions;
   std::vector<double> fluid_masses, dummy_masses;
