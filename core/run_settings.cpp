@@ -27,6 +27,17 @@ std::string case_name(const CaseFile& case_file) {
                              std::filesystem::path(case_file.source_name()).stem().string());
 }
 
+SimulationInfo simulation_info(const CaseFile& case_file, std::string_view model, int dimension,
+                               Arithmetic arithmetic, double dt) {
+  SimulationInfo info;
+  info.case_name = case_name(case_file);
+  info.model = std::string(model);
+  info.dimension = dimension;
+  info.arithmetic = arithmetic;
+  info.dt = dt;
+  return info;
+}
+
 RunSettings read_run_settings(const CaseFile& case_file) {
   RunSettings settings;
   settings.name = case_name(case_file);

@@ -10,10 +10,12 @@
 //   progress_interval = 10.0    seconds between progress lines when not on a terminal
 
 #include "core/case_file.hpp"
+#include "core/simulation.hpp"
 
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace revsph {
 
@@ -38,5 +40,10 @@ RunSettings read_run_settings(const CaseFile& case_file);
 
 // The case's `name`, or the file name without its extension.
 std::string case_name(const CaseFile& case_file);
+
+// What every set-up records first about its simulation (core/simulation.hpp): the case's name,
+// the model, the dimension, the arithmetic and the time step; the model adds its set-up report.
+SimulationInfo simulation_info(const CaseFile& case_file, std::string_view model, int dimension,
+                               Arithmetic arithmetic, double dt);
 
 } // namespace revsph

@@ -252,12 +252,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   fill_scalar_field<FixedArithmetic>(case_file, "particles", thermal_temperatures,
                                      state.thermal.temperature);
 
-  SimulationInfo info;
-  info.case_name = case_name(case_file);
-  info.model = "entropic";
-  info.dimension = D;
-  info.arithmetic = Arithmetic::fixed;
-  info.dt = parameters.dt;
+  SimulationInfo info = simulation_info(case_file, "entropic", D, Arithmetic::fixed, parameters.dt);
   info.setup_report.emplace_back("dt", scientific(parameters.dt));
   info.setup_report.emplace_back("initial_sound_speed",
                                  scientific(parameters.initial_sound_speed()));

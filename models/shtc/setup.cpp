@@ -158,12 +158,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   set_undistorted<D>(case_file, parameters.distortion_scales, parameters.dissipated_scale,
                      state.boundary.carried, boundary_positions.size());
 
-  SimulationInfo info;
-  info.case_name = case_name(case_file);
-  info.model = "shtc";
-  info.dimension = D;
-  info.arithmetic = Arithmetic::fixed;
-  info.dt = parameters.dt;
+  SimulationInfo info = simulation_info(case_file, "shtc", D, Arithmetic::fixed, parameters.dt);
   info.setup_report.emplace_back("dt", scientific(parameters.dt));
   info.setup_report.emplace_back("sound_speed", scientific(parameters.material.sound_speed));
   info.setup_report.emplace_back("shear_speed", scientific(parameters.material.shear_speed));

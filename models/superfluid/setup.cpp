@@ -173,12 +173,8 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   fill_scalar_field<Arith>(case_file, "physics.rest_density", wall_masses, state.wall.mass);
   state.wall.density_constant.resize(wall_positions.size());
 
-  SimulationInfo info;
-  info.case_name = case_name(case_file);
-  info.model = "superfluid";
-  info.dimension = D;
-  info.arithmetic = options.arithmetic;
-  info.dt = parameters.dt;
+  SimulationInfo info =
+      simulation_info(case_file, "superfluid", D, options.arithmetic, parameters.dt);
   // u2 of eq. (14) exists only with a superfluid fraction (not in the classical cavity).
   if (parameters.helium.normal_fraction < 1.0) {
     info.setup_report.emplace_back("second_sound_speed",

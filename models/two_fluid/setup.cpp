@@ -234,12 +234,8 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
                            state.wall.temperature);
   state.wall.spin.resize(wall.position.size()); // walls carry no spin (README)
 
-  SimulationInfo info;
-  info.case_name = case_name(case_file);
-  info.model = "two_fluid";
-  info.dimension = D;
-  info.arithmetic = options.arithmetic;
-  info.dt = parameters.dt;
+  SimulationInfo info =
+      simulation_info(case_file, "two_fluid", D, options.arithmetic, parameters.dt);
   info.setup_report.emplace_back("dt", format_scientific(parameters.dt, 4));
   if (parameters.thermomechanical.entropy_scale > 0.0) {
     const Thermomechanical& t = parameters.thermomechanical;

@@ -122,7 +122,10 @@ void correct_fluid_positions(const CaseFile& case_file, const Parameters<D>& par
   }
   std::string linear_iterations;
   for (const int n : report.linear_iterations) {
-    linear_iterations += (linear_iterations.empty() ? "" : " ") + std::to_string(n);
+    if (!linear_iterations.empty()) {
+      linear_iterations += ' ';
+    }
+    linear_iterations += std::to_string(n);
   }
   report_out.emplace_back("initial_state_correction.seed", std::to_string(parameters.isc.seed));
   report_out.emplace_back("initial_state_correction.jitter", scientific(parameters.isc.jitter));
@@ -214,12 +217,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   free_storage(dummy_masses);
   free_storage(initial.velocity);
 
-  SimulationInfo info;
-  info.case_name = case_name(case_file);
-  info.model = "wcsph";
-  info.dimension = D;
-  info.arithmetic = options.arithmetic;
-  info.dt = parameters.dt;
+  SimulationInfo info = simulation_info(case_file, "wcsph", D, options.arithmetic, parameters.dt);
   info.setup_report = std::move(setup_report);
   Model<D, Arith> model(parameters, std::move(info), std::move(state));
   model.initialise_density_constants(initial.target_density);
