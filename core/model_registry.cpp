@@ -53,6 +53,10 @@ std::unique_ptr<Simulation> create_simulation(const CaseFile& case_file,
     throw std::logic_error("model " + model + " registers no case-key table");
   }
   case_file.use_keys({&common_case_keys(), &entry->keys()});
+  if (options.arithmetic != Arithmetic::fixed && !entry->fixed_point_only.empty()) {
+    throw ArithmeticRefused(model +
+                            " runs in fixed point only: " + std::string(entry->fixed_point_only));
+  }
   try {
     return entry->create(case_file, options);
   } catch (const SimulationFault& fault) {

@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,6 +34,15 @@ struct ModelEntry {
   // The keys of the model's case files beyond common_case_keys(): the reference that
   // `revsph cases --keys` prints and what create_simulation lets the model read.
   const KeyTable& (*keys)() = nullptr;
+  // Why the model has no floating-point variant ("" where it has one): create_simulation then
+  // refuses `--arithmetic float` with this reason before the set-up (ArithmeticRefused).
+  std::string_view fixed_point_only = "";
+};
+
+// The arithmetic asked for is one the model does not have: bad input, not a failed set-up.
+class ArithmeticRefused : public std::invalid_argument {
+public:
+  using std::invalid_argument::invalid_argument;
 };
 
 class ModelRegistry {

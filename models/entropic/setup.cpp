@@ -264,11 +264,6 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
 } // namespace
 
 std::unique_ptr<Simulation> create(const CaseFile& case_file, const SimulationOptions& options) {
-  if (options.arithmetic != Arithmetic::fixed) {
-    throw std::invalid_argument(
-        "entropic SPH runs in fixed point only: its kick adds exact pair impulses to integer "
-        "momenta (models/entropic/model.hpp)");
-  }
   return with_dimension<1, 2, 3>(case_file,
                                  [&]<int D>() { return create_in<D>(case_file, options); });
 }

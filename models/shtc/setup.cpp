@@ -211,11 +211,6 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
 } // namespace
 
 std::unique_ptr<Simulation> create(const CaseFile& case_file, const SimulationOptions& options) {
-  if (options.arithmetic != Arithmetic::fixed) {
-    throw std::invalid_argument(
-        "SHTC-SPH runs in fixed point only: its distortion update is exact in integers "
-        "(models/shtc/README.md)");
-  }
   // The distortion algebra (distortion.hpp) is written for 2D and 3D.
   return with_dimension<2, 3>(case_file, [&]<int D>() { return create_in<D>(case_file, options); });
 }

@@ -29,12 +29,8 @@ LoadedCase build(CaseFile case_file, Arithmetic arithmetic) {
   std::unique_ptr<Simulation> simulation;
   try {
     simulation = create_simulation(case_file, simulation_options);
-  } catch (const std::invalid_argument& refusal) {
-    // A model that has no float variant (SHTC-SPH) refuses --arithmetic float at construction:
-    // bad input, not a failed simulation.
-    if (arithmetic == Arithmetic::fixed) {
-      throw;
-    }
+  } catch (const ArithmeticRefused& refusal) {
+    // A model without a float variant (its registration says so) refuses --arithmetic float.
     throw CaseError(case_file.source_name(), "--arithmetic", refusal.what());
   }
   case_file.require_no_unknown_keys();
