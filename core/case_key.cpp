@@ -38,6 +38,17 @@ PositionScaleKey KeySet::position_scale() {
   return {};
 }
 
+Key<double> KeySet::gravity(std::string_view detail) {
+  return number("physics.gravity", "m/s^2", "0",
+                "gravitational acceleration g along minus the last axis" +
+                    (detail.empty() ? std::string() : "; " + std::string(detail)));
+}
+
+Key<double> KeySet::gravity_reference_height() {
+  return number("physics.gravity_reference_height", "m", "0",
+                "height of zero gravitational energy (shifts the reported energy only)");
+}
+
 const KeyDecl& KeySet::add(KeyDecl decl) {
   table_.add(std::move(decl));
   return table_.keys().back();

@@ -27,6 +27,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -152,6 +153,10 @@ protected:
   ScaleKey scale(const std::string& quantity, const std::string& magnitude, int fraction_bits,
                  std::string meaning, const std::string& note = {});
   PositionScaleKey position_scale();
+  // physics.gravity, g along minus the last axis (`detail`: what it acts on, an equation), and
+  // physics.gravity_reference_height: the two keys every model with gravity has.
+  Key<double> gravity(std::string_view detail = "");
+  Key<double> gravity_reference_height();
   // A key read elsewhere (by a core reader, or an array of numbers read with the dimension):
   // declared here, read through the path this returns.
   std::string declare(KeyDecl decl) { return add(std::move(decl)).path; }

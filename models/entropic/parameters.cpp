@@ -144,17 +144,14 @@ struct Keys : KeySet {
       {{"strang", DissipationSplitting::strang},
        {"midpoint", DissipationSplitting::midpoint},
        {"first_order", DissipationSplitting::first_order}});
-  const Key<double> gravity = number("physics.gravity", "m/s^2", "0",
-                                     "gravitational acceleration g, along minus the last axis");
+  const Key<double> gravity = KeySet::gravity();
   const Choice<bool> boussinesq = choice<bool>(
       "physics.buoyancy", "\"density\"",
       "how gravity acts: \"density\", m g downwards on every gas particle (the buoyancy "
       "comes from the gas's density); \"boussinesq\", the body force m g (T - T0) / T0 "
       "upwards instead (a diagnostic: no potential, the energy budget does not close)",
       {{"density", false}, {"boussinesq", true}});
-  const Key<double> gravity_reference_height =
-      number("physics.gravity_reference_height", "m", "0",
-             "height of zero gravitational potential (shifts the reported energy only)");
+  const Key<double> gravity_reference_height = KeySet::gravity_reference_height();
   const Key<double> initial_density =
       number("initial.density", "kg/m^3", "required",
              "density rho of the gas at rest: particle masses are rho times the lattice cell "

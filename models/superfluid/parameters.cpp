@@ -26,12 +26,8 @@ struct Keys : KeySet {
                                                    "T0 of eq. (13); > 0", positive_or_why);
   const Key<double> reference_entropy = number("physics.reference_entropy", "J/(kg K)", "required",
                                                "s0 of eqs. (8, 13); > 0", positive_or_why);
-  const Key<double> gravity =
-      number("physics.gravity", "m/s^2", "0",
-             "gravitational acceleration g (eq. 29) along minus the last axis, on v and v_s");
-  const Key<double> gravity_reference_height =
-      number("physics.gravity_reference_height", "m", "0",
-             "height of zero gravitational energy (shifts the reported energy only)");
+  const Key<double> gravity = KeySet::gravity("eq. (29), on v and v_s");
+  const Key<double> gravity_reference_height = KeySet::gravity_reference_height();
   const Key<double> viscosity =
       number("physics.viscosity", "Pa s", "0",
              "mu of the normal fluid (eq. 19, Monaghan's form B22, eta = h / 10); >= 0; "

@@ -47,11 +47,8 @@ struct Keys : KeySet {
   const Key<double> temperature =
       number("physics.temperature", "K", "required",
              "T0: every particle's temperature, kept (sec. IV.4); > 0", positive_or_why);
-  const Key<double> gravity = number("physics.gravity", "m/s^2", "0",
-                                     "gravitational acceleration g along minus the last axis");
-  const Key<double> gravity_reference_height =
-      number("physics.gravity_reference_height", "m", "0",
-             "height of zero gravitational energy (shifts the reported energy only)");
+  const Key<double> gravity = KeySet::gravity();
+  const Key<double> gravity_reference_height = KeySet::gravity_reference_height();
   const Key<double> rotational_viscosity =
       number("physics.rotational_viscosity", "Pa s", "0",
              "eta_r of eq. (39): the spin term 2 eta_r curl omega (eq. 40), with the viscosity "

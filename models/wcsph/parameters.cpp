@@ -22,11 +22,8 @@ struct Keys : KeySet {
   const Key<double> sound_speed =
       number("physics.sound_speed", "m/s", "required",
              "numerical speed of sound c of the equation of state; > 0", positive_or_why);
-  const Key<double> gravity = number("physics.gravity", "m/s^2", "0",
-                                     "gravitational acceleration g, along minus the last axis");
-  const Key<double> gravity_reference_height =
-      number("physics.gravity_reference_height", "m", "0",
-             "height of zero gravitational potential (shifts the reported energy only)");
+  const Key<double> gravity = KeySet::gravity();
+  const Key<double> gravity_reference_height = KeySet::gravity_reference_height();
   const Key<double> anti_clump_pressure =
       number("physics.anti_clump_pressure", "Pa", "0",
              "p0 of the anti-clump force of paper 1 App. A; >= 0 (0: off)",
