@@ -21,8 +21,10 @@ template <int D, class Arith>
 struct SummationDensityTerm {
   static constexpr int width = 1;
   const WendlandQuintic<D>& kernel;
-  std::span<const double> mass;                          // by slot
-  std::span<const typename Arith::Raw> density_constant; // by slot, the density's scale
+  std::span<const double> mass; // by slot
+  // By slot, at the density's scale: paper 1's integration constant C_a of eq. (5); empty for
+  // the plain sum (paper 4's eq. 32a).
+  std::span<const typename Arith::Raw> density_constant;
 
   void pair(const PairGeometry<D>& p, std::array<double, 1>& to_a,
             std::array<double, 1>& to_b) const {
@@ -33,7 +35,9 @@ struct SummationDensityTerm {
   template <class Add>
   void self(std::uint32_t s, Add& add) const {
     add(0, mass[s] * kernel.value(0.0));
-    add.raw(0, density_constant[s]);
+    if (!density_constant.empty()) {
+      add.raw(0, density_constant[s]);
+    }
   }
 };
 

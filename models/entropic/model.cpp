@@ -3,6 +3,7 @@
 #include "core/carrier_field.hpp"
 #include "core/case_values.hpp"
 #include "core/state_snapshot.hpp"
+#include "core/summation_density.hpp"
 #include "core/verlet.hpp"
 #include "fixedpoint/exact_sum.hpp"
 #include "models/entropic/pair_terms.hpp"
@@ -211,8 +212,9 @@ void Model<D>::update_geometry() {
       per_slot(static_cast<std::uint32_t>(s));
     }
   } else if (parameters_.volume == ParticleVolume::mass) {
-    sum_pairs<FixedArithmetic>(layout_, DensityTerm<D>{kernel_, slot_mass_}, density_sums_, {},
-                               per_slot);
+    sum_pairs<FixedArithmetic>(layout_,
+                               SummationDensityTerm<D, FixedArithmetic>{kernel_, slot_mass_, {}},
+                               density_sums_, {}, per_slot);
   } else {
     sum_pairs<FixedArithmetic>(layout_, KernelSumsTerm<D>{kernel_, slot_mass_, slot_entropy_},
                                kernel_sums_, {}, per_slot);

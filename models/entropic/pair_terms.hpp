@@ -12,25 +12,8 @@
 
 namespace revsph::entropic {
 
-// Eq. (32a): rho_a = sum_b m_b W_ab, the sum including b = a; the paper uses no integration
-// constant (unlike paper 1's eq. 5).
-template <int D>
-struct DensityTerm {
-  static constexpr int width = 1;
-  const WendlandQuintic<D>& kernel;
-  std::span<const double> mass;
-
-  void pair(const PairGeometry<D>& p, std::array<double, 1>& to_a,
-            std::array<double, 1>& to_b) const {
-    const double w = kernel.value(p.r);
-    to_a[0] = mass[p.b] * w;
-    to_b[0] = mass[p.a] * w;
-  }
-  template <class Add>
-  void self(std::uint32_t s, Add& add) const {
-    add(0, mass[s] * kernel.value(0.0));
-  }
-};
+// Eq. (32a), rho_a = sum_b m_b W_ab with b = a included and no integration constant (unlike
+// paper 1's eq. 5): core's SummationDensityTerm without constants.
 
 // The three kernel sums the other particle volumes need (the sums include b = a):
 //   sum_b m_b W_ab (28a, 32a), sum_b S_b W_ab (28b, 36a), sum_b W_ab (39).
