@@ -3,14 +3,15 @@
 the process's peak resident size beside the size of a process that holds no particles.
 
 Usage: /usr/bin/python3 tools/bench/memory_breakdown.py [CASE] [--steps N] [--revsph PATH]
-           [--set KEY=VALUE ...]
+           [--set KEY=VALUE ...] [--stacks N]
 
 Runs `revsph run CASE --steps N --threads 1` under heaptrack (Debian package heaptrack; it
 records every allocation with its stack) and sums the heap held at the peak by the first
 component found on each allocation's stack (snapshot output before the rest: a snapshot's
 copies and derived views are the peak). Prints MB and bytes per particle (all particles, walls
 included). Default: the Table-1 dam break (`dambreak`), 20 steps (a snapshot at the start and
-one at the end).
+one at the end). --stacks N also prints the N largest allocation sites at the peak (the
+innermost three frames of revsph's own code).
 """
 
 import argparse
