@@ -3,6 +3,7 @@
 // and the relaxation of eq. (69). Pair terms: hyperbolic_heat_terms.hpp.
 
 #include "core/case_values.hpp"
+#include "core/verlet.hpp"
 #include "models/entropic/hyperbolic_heat_terms.hpp"
 #include "models/entropic/model.hpp"
 
@@ -47,19 +48,9 @@ void Model<D>::exchange_flux(double dt) {
   sum_pairs<FixedArithmetic>(
       layout_, FluxExchangeTerm<D>{kernel_, dt, volume_, temperature_, layout_.in(state_.gas)},
       flux_sums_);
-  const std::span<const std::uint32_t> slots = layout_.slots_of(state_.gas);
-  Field& flux = state_.gas.entropy_flux;
   FaultRecorder faults;
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < slots.size(); ++i) {
-    for (int k = 0; k < D; ++k) {
-      std::int64_t& raw = flux.at(k, i);
-      if (!fixedpoint::try_add(raw, flux_sums_.raw_total(k, slots[i]), raw)) {
-        faults.record(i, "gas", "entropy_flux", "overflow in the exchange of eq. (68b)");
-      }
-    }
-  }
-  faults.throw_if_any();
+  add_pair_totals<FixedArithmetic>(state_.gas.entropy_flux, flux_sums_, 0,
+                                   layout_.slots_of(state_.gas), faults); // eq. (68b)
 }
 
 template <int D>
@@ -85,17 +76,10 @@ void Model<D>::exchange_entropy(double dt) {
                                                     parameters_.flux_energy_coefficient, volume_,
                                                     slot_flux_, layout_.in(state_.gas)},
                              entropy_exchange_sums_);
-  Field& entropy = state_.gas.entropy;
   FaultRecorder faults;
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < slots.size(); ++i) {
-    std::int64_t& raw = entropy.at(0, i);
-    if (!fixedpoint::try_add(raw, entropy_exchange_sums_.raw_total(0, slots[i]), raw)) {
-      faults.record(i, "gas", "entropy", "overflow in the exchange of eq. (68a)");
-    }
-  }
-  faults.throw_if_any();
-  geometry_valid_ = false; // the temperatures follow the entropies
+  add_pair_totals<FixedArithmetic>(state_.gas.entropy, entropy_exchange_sums_, 0, slots,
+                                   faults); // eq. (68a)
+  geometry_valid_ = false;                  // the temperatures follow the entropies
 }
 
 template <int D>

@@ -382,19 +382,9 @@ void Model<D>::kick(double dt) {
   update_impulses(dt);
   // M_a += the exact sum of its rounded pair impulses: no rounding of its own, so a reversed
   // kick subtracts bit for bit what this one added.
-  const std::span<const std::uint32_t> slots = layout_.slots_of(state_.gas);
-  Field& momentum = state_.gas.momentum;
   FaultRecorder faults;
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < slots.size(); ++i) {
-    for (int k = 0; k < D; ++k) {
-      std::int64_t& raw = momentum.at(k, i);
-      if (!fixedpoint::try_add(raw, impulse_sums_.raw_total(k, slots[i]), raw)) {
-        faults.record(i, "gas", "momentum", "overflow in a kick");
-      }
-    }
-  }
-  faults.throw_if_any();
+  add_pair_totals<FixedArithmetic>(state_.gas.momentum, impulse_sums_, 0,
+                                   layout_.slots_of(state_.gas), faults);
 }
 
 template <int D>
