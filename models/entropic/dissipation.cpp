@@ -3,6 +3,7 @@
 // (its pair terms: dissipation_terms.hpp).
 
 #include "core/case_values.hpp"
+#include "core/particle_update.hpp"
 #include "models/entropic/dissipation_terms.hpp"
 #include "models/entropic/model.hpp"
 
@@ -172,28 +173,24 @@ void Model<D>::dissipate(double tau) {
   // increment is rounded up, so that rounding never lowers the total entropy.
   const double heat_capacity = parameters_.heat_capacity();
   const fixedpoint::Scale& s_scale = entropy.info().scale;
-  FaultRecorder faults;
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < slots.size(); ++i) {
-    const std::uint32_t s = slots[i];
-    double impulse_squared = 0.0;
-    bool fits = true;
-    for (int k = 0; k < D; ++k) {
-      const std::int64_t impulse = dissipation_sums_.raw_total(k, s);
-      const double real_impulse = fixedpoint::to_real(impulse, m_scale);
-      impulse_squared += real_impulse * real_impulse;
-      fits = fits && fixedpoint::try_add(momentum.at(k, i), impulse, momentum.at(k, i));
-    }
-    const double heat = dissipation_sums_.value(D, s) - 0.5 * impulse_squared / gas_mass[i];
-    const double thermal = gas_mass[i] * heat_capacity * temperature_[s];
-    const double change = gas_mass[i] * heat_capacity * std::log1p(heat / thermal);
-    std::int64_t increment = 0;
-    if (!fits || !fixedpoint::try_round_up_to_fixed(change, s_scale, increment) ||
-        !fixedpoint::try_add(entropy.at(0, i), increment, entropy.at(0, i))) {
-      faults.record(i, "gas", "entropy", "overflow or non-finite value in the dissipation");
-    }
-  }
-  faults.throw_if_any();
+  update_each_particle(
+      entropy, "overflow or non-finite value in the dissipation", [&](std::size_t i) {
+        const std::uint32_t s = slots[i];
+        double impulse_squared = 0.0;
+        bool fits = true;
+        for (int k = 0; k < D; ++k) {
+          const std::int64_t impulse = dissipation_sums_.raw_total(k, s);
+          const double real_impulse = fixedpoint::to_real(impulse, m_scale);
+          impulse_squared += real_impulse * real_impulse;
+          fits = fits && fixedpoint::try_add(momentum.at(k, i), impulse, momentum.at(k, i));
+        }
+        const double heat = dissipation_sums_.value(D, s) - 0.5 * impulse_squared / gas_mass[i];
+        const double thermal = gas_mass[i] * heat_capacity * temperature_[s];
+        const double change = gas_mass[i] * heat_capacity * std::log1p(heat / thermal);
+        std::int64_t increment = 0;
+        return fits && fixedpoint::try_round_up_to_fixed(change, s_scale, increment) &&
+               fixedpoint::try_add(entropy.at(0, i), increment, entropy.at(0, i));
+      });
   // The heat the thermal walls took in (a sum of exact per-particle totals, in slot order: the
   // same for any thread count).
   const double reference = parameters_.initial_temperature();

@@ -3,6 +3,7 @@
 // and the relaxation of eq. (69). Pair terms: hyperbolic_heat_terms.hpp.
 
 #include "core/case_values.hpp"
+#include "core/particle_update.hpp"
 #include "core/verlet.hpp"
 #include "models/entropic/hyperbolic_heat_terms.hpp"
 #include "models/entropic/model.hpp"
@@ -96,34 +97,31 @@ void Model<D>::relax_flux(double dt) {
   const fixedpoint::Scale& w_scale = flux.info().scale;
   const double heat_capacity = parameters_.heat_capacity();
   const double c_w = parameters_.flux_energy_coefficient;
-  FaultRecorder faults;
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < slots.size(); ++i) {
-    const std::uint32_t s = slots[i];
-    const double decay = std::exp(-2.0 * c_w * volume_[s] * dt / parameters_.relaxation_time);
-    double before = 0.0;
-    double after = 0.0;
-    bool fits = true;
-    for (int k = 0; k < D; ++k) {
-      const double w = fixedpoint::to_real(flux.at(k, i), w_scale);
-      std::int64_t decayed = 0;
-      fits = fits && fixedpoint::try_to_fixed(w * decay, w_scale, decayed);
-      const double w_after = fixedpoint::to_real(decayed, w_scale);
-      before += w * w;
-      after += w_after * w_after;
-      flux.at(k, i) = decayed;
-    }
-    const double heat = c_w * volume_[s] * (before - after);
-    const double thermal = gas_mass[i] * heat_capacity * temperature_[s];
-    std::int64_t increment = 0;
-    if (!fits ||
-        !fixedpoint::try_round_up_to_fixed(gas_mass[i] * heat_capacity * std::log1p(heat / thermal),
-                                           entropy.info().scale, increment) ||
-        !fixedpoint::try_add(entropy.at(0, i), increment, entropy.at(0, i))) {
-      faults.record(i, "gas", "entropy", "overflow or non-finite value in the relaxation");
-    }
-  }
-  faults.throw_if_any();
+  update_each_particle(
+      entropy, "overflow or non-finite value in the relaxation", [&](std::size_t i) {
+        const std::uint32_t s = slots[i];
+        const double decay = std::exp(-2.0 * c_w * volume_[s] * dt / parameters_.relaxation_time);
+        double before = 0.0;
+        double after = 0.0;
+        bool fits = true;
+        for (int k = 0; k < D; ++k) {
+          const double w = fixedpoint::to_real(flux.at(k, i), w_scale);
+          std::int64_t decayed = 0;
+          fits = fits && fixedpoint::try_to_fixed(w * decay, w_scale, decayed);
+          const double w_after = fixedpoint::to_real(decayed, w_scale);
+          before += w * w;
+          after += w_after * w_after;
+          flux.at(k, i) = decayed;
+        }
+        const double heat = c_w * volume_[s] * (before - after);
+        const double thermal = gas_mass[i] * heat_capacity * temperature_[s];
+        std::int64_t increment = 0;
+        return fits &&
+               fixedpoint::try_round_up_to_fixed(gas_mass[i] * heat_capacity *
+                                                     std::log1p(heat / thermal),
+                                                 entropy.info().scale, increment) &&
+               fixedpoint::try_add(entropy.at(0, i), increment, entropy.at(0, i));
+      });
   geometry_valid_ = false;
 }
 
