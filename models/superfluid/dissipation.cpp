@@ -1,5 +1,6 @@
 // The irreversible sub-step of the superfluid model: viscosity and heat conduction
 // (dissipation_terms.hpp), the heat turned into entropy so that the energy (15) is kept.
+#include "core/particle_update.hpp"
 #include "core/verlet.hpp"
 #include "models/superfluid/dissipation_terms.hpp"
 #include "models/superfluid/model.hpp"
@@ -149,8 +150,7 @@ void Model<D, Arith>::dissipate(double dt) {
   auto& s1 = state_.fluid.entropy;
   auto& s2 = state_.fluid.entropy_copy;
   const auto& s_scale = s1.info().scale;
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < fluid.size(); ++i) {
+  update_each_particle(s1, "overflow or non-finite value in the heat update", [&](std::size_t i) {
     const std::uint32_t slot = fluid[i];
     const double s = 0.5 * (Arith::real(s1.at(0, i), s_scale) + Arith::real(s2.at(0, i), s_scale));
     double dv_squared = 0.0, u_squared = 0.0;
@@ -162,12 +162,8 @@ void Model<D, Arith>::dissipate(double dt) {
     }
     const double heat = dissipation_sums_.value(D, slot) - 0.5 * mass[i] * dv_squared / he.chi_n(s);
     const double ds = entropy_for_heat(s, u_squared, mass[i], heat);
-    const bool ok = add_entropy(i, ds);
-    if (!ok) {
-      faults.record(i, "fluid", "entropy", "overflow or non-finite value in the heat update");
-    }
-  }
-  faults.throw_if_any();
+    return add_entropy(i, ds);
+  });
   if (walls) {
     exchanged_energy_ += energy().total() - energy_before;
   }
