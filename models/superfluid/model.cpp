@@ -1,5 +1,6 @@
 #include "models/superfluid/model.hpp"
 
+#include "core/particle_update.hpp"
 #include "core/summation_density.hpp"
 #include "core/verlet.hpp"
 #include "models/superfluid/dissipation_terms.hpp"
@@ -128,19 +129,15 @@ void Model<D, Arith>::drift(double dt) {
   const auto& v2 = state_.fluid.velocity_copy;
   const auto& x_scale = position.info().scale;
   const auto& v_scale = v1.info().scale;
-  FaultRecorder faults;
-  const std::size_t n = fluid_count();
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
+  update_each_particle(position, "overflow or non-finite value in a drift", [&](std::size_t i) {
+    bool fits = true;
     for (int k = 0; k < D; ++k) {
       const double mean =
           0.5 * (Arith::real(v1.at(k, i), v_scale) + Arith::real(v2.at(k, i), v_scale));
-      if (!Arith::try_increment(position.at(k, i), dt * mean, x_scale)) {
-        faults.record(i, "fluid", "position", "overflow or non-finite value in a drift");
-      }
+      fits = Arith::try_increment(position.at(k, i), dt * mean, x_scale) && fits;
     }
-  }
-  faults.throw_if_any();
+    return fits;
+  });
   density_valid_ = false;
 }
 
