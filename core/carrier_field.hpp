@@ -45,42 +45,7 @@ public:
                        fields_[set]->info().scale);
   }
 
-  // Component c of every carrier, in carrier order, as physical values, into `out` (its
-  // capacity reused from call to call).
-  void fill_reals(int component, std::vector<double>& out) const {
-    out.resize(count_);
-    for (std::size_t set = 0; set < fields_.size(); ++set) {
-      const auto raw = fields_[set]->component(component);
-      const fixedpoint::Scale& scale = fields_[set]->info().scale;
-      double* first = out.data() + firsts_[set];
-#pragma omp parallel for schedule(static)
-      for (std::size_t i = 0; i < raw.size(); ++i) {
-        first[i] = Arith::real(raw[i], scale);
-      }
-    }
-  }
-  // Components 0 .. D-1 of every carrier (positions, say) into out[k], in one parallel region
-  // (every region is a barrier: issue 15).
-  template <int D>
-  void fill_reals(std::array<std::vector<double>, D>& out) const {
-    for (int k = 0; k < D; ++k) {
-      out[k].resize(count_);
-    }
-#pragma omp parallel
-    for (std::size_t set = 0; set < fields_.size(); ++set) {
-      const fixedpoint::Scale& scale = fields_[set]->info().scale;
-      const std::size_t first = firsts_[set];
-      const std::size_t n = fields_[set]->count();
-      for (int k = 0; k < D; ++k) {
-        const auto raw = fields_[set]->component(k);
-#pragma omp for schedule(static) nowait
-        for (std::size_t i = 0; i < n; ++i) {
-          out[k][first + i] = Arith::real(raw[i], scale);
-        }
-      }
-    }
-  }
-  // The same as a new vector.
+  // Component c of every carrier, in carrier order, as physical values.
   std::vector<double> reals(int component = 0) const {
     std::vector<double> values;
     values.reserve(count_);

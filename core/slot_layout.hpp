@@ -92,12 +92,6 @@ public:
     build([&position](int axis, std::size_t carrier) { return position.real(axis, carrier); },
           radius, gathered...);
   }
-  // Whether a carrier belongs to a set, for Gathered: 1 or 0.
-  auto in_set(std::size_t set) const {
-    return [first = first_carrier_[set], end = first_carrier_[set + 1]](std::size_t carrier) {
-      return static_cast<std::uint8_t>(carrier >= first && carrier < end);
-    };
-  }
 
   std::size_t carrier_count() const { return carrier_count_; }
   std::size_t slot_count() const { return carrier_count_; }
