@@ -115,7 +115,6 @@ public:
   // The two halves of reset for a pair loop that runs in one parallel region: resize before it,
   // zero_in_team in it (by every thread of the team).
   void resize(std::size_t n) {
-    slots_ = n;
     totals_.resize(n * K);
     if constexpr (exact) {
       invalid_.resize(n); // floating-point totals carry their own verdict (not finite)
@@ -123,7 +122,7 @@ public:
     resize_values(n);
   }
   void zero_in_team() {
-    const std::size_t n = slots_;
+    const std::size_t n = totals_.size() / K;
 #pragma omp for schedule(static)
     for (std::size_t s = 0; s < n; ++s) {
       for (int q = 0; q < K; ++q) {
@@ -228,7 +227,6 @@ private:
 
   std::array<SummedQuantity, K> quantities_;
   std::array<double, K> inverse_unit_{};
-  std::size_t slots_ = 0;
   std::vector<Total> totals_; // slot-major: quantity q of slot s at s * K + q
   std::vector<Bits> invalid_; // per slot, one bit per quantity (fixed point)
   std::array<std::vector<double>, values_are_totals ? 0 : K> values_;
