@@ -15,7 +15,9 @@ those walls with the authors' hydrostatic start and background pressure (1 at th
 rayleigh-benard-s6.5 and -s6.5-conduction: the authors' RaBe.jl support, seeded or from the
 conduction profile; rayleigh-benard-hydrostatic: the authors' start (initial.hydrostatic, the
 conduction profile) at their low background pressure (about 1 at the top) with walls twice
-the support thick, 3 dr, to t = 30 (about 45 minutes on one thread)).
+the support thick, 3 dr, to t = 30 (about 45 minutes on one thread);
+rayleigh-benard-hydrostatic-s6.5: the same at the authors' 6.5 dr (about 7 hours on one thread,
+chained with revsph run --from as RUN-2, RUN-3, ...)).
 Writes into --out (default docs/figures):
   entropic_cavity.png  the Nusselt numbers of the hot and the cold wall over time against the
                        benchmark, and the temperature field with the velocities at the end.
@@ -42,14 +44,7 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from revsph_runs import (  # noqa: E402
-    REPO,
-    case_of,
-    figure_parser,
-    figure_script_main,
-    read_csv,
-    save_figure,
-    snapshots,
-)
+    REPO, case_of, chosen_runs_main, read_csv, save_figure, snapshots)
 
 CASES = REPO / "models" / "entropic" / "cases"
 RUNS = {
@@ -65,6 +60,21 @@ RUNS = {
 }
 
 
+def walls_around_unit_square(support, thickness, dr):
+    """The outer edges (lo, hi) of walls ceil(thickness * support) layers of dr thick around the
+    unit square: thick enough (thickness 1) that no gas particle sees past them, or (2) that
+    no wall particle a gas particle sees has its kernel sum cut by the wall's outer edge."""
+    t = np.ceil(thickness * support - 1e-9) * dr
+    return -t, 1.0 + t
+
+
+def domain_around(lo, hi):
+    """The --set arguments of a domain 0.02 beyond walls reaching from lo to hi: the cases' own
+    domain is too small for walls thicker than theirs."""
+    return ["--set", f"domain.min=[{lo - 0.02!r}, {lo - 0.02!r}]",
+            "--set", f"domain.max=[{hi + 0.02!r}, {hi + 0.02!r}]"]
+
+
 def wider_kernel(case, dr, support, thickness=1, hydrostatic_pressure=None, refine=False):
     """The side-heated cavity with the kernel's support at `support` dr (issue 30: paper 4's
     cases use 3 dr, the authors' RaBe.jl 6.5 dr): the walls ceil(thickness * support) layers
@@ -75,8 +85,7 @@ def wider_kernel(case, dr, support, thickness=1, hydrostatic_pressure=None, refi
     authors' start and background pressure instead (as hydrostatic_rayleigh_benard), the
     pressure at mid-height and the stiffened gas's reference pressure. refine: dr is not the
     case's own spacing; set it."""
-    t = np.ceil(thickness * support - 1e-9) * dr
-    lo, hi = -t, 1.0 + t
+    lo, hi = walls_around_unit_square(support, thickness, dr)
     extra = [] if hydrostatic_pressure is None else [
         "--set", "initial.hydrostatic=true",
         "--set", f"initial.pressure={hydrostatic_pressure!r}",
@@ -84,8 +93,7 @@ def wider_kernel(case, dr, support, thickness=1, hydrostatic_pressure=None, refi
     if refine:
         extra += ["--set", f"discretisation.dr={dr!r}"]
     if lo < -0.2:
-        extra += ["--set", f"domain.min=[{lo - 0.02!r}, {lo - 0.02!r}]",
-                  "--set", f"domain.max=[{hi + 0.02!r}, {hi + 0.02!r}]"]
+        extra += domain_around(lo, hi)
     return ["run", str(CASES / case), *extra,
             "--set", f"discretisation.support_radius_over_dr={support!r}",
             "--set", f"discretisation.courant_number={0.65 / support!r}",
@@ -110,22 +118,26 @@ RUNS["cavity-ra1e4-s4.5-hydro-n80"] = wider_kernel("cavity-ra1e4.toml", 0.0125, 
                                                      refine=True)
 
 
+def rayleigh_benard_walls(support, thickness, courant):
+    """rayleigh-benard (dr = 1/105) with the kernel's support at `support` dr: the heater and
+    cooler rows and the side walls as walls_around_unit_square makes them, the domain around
+    them, and dt = courant dr / c0 whatever the support."""
+    lo, hi = walls_around_unit_square(support, thickness, 1.0 / 105.0)
+    return ["run", str(CASES / "rayleigh-benard.toml"),
+            "--set", f"discretisation.support_radius_over_dr={support!r}",
+            "--set", f"discretisation.courant_number={courant / support!r}",
+            *domain_around(lo, hi),
+            "--set", f"particles[1].min=[{lo!r}, {lo!r}]", "--set", f"particles[1].max=[{hi!r}, 0.0]",
+            "--set", f"particles[2].min=[{lo!r}, 1.0]", "--set", f"particles[2].max=[{hi!r}, {hi!r}]",
+            "--set", f"particles[3].min=[{lo!r}, 0.0]", "--set", f"particles[4].max=[{hi!r}, 1.0]"]
+
+
 def wider_kernel_rayleigh_benard(support, conduction_start=False):
     """rayleigh-benard with the authors' RaBe.jl kernel (support 6.5 dr): heater and cooler rows
     and the side walls ceil(support) layers thick, dt = 0.65 dr / c0; conduction_start: the
     authors' start from the conduction profile (T from 1.05 at the bottom to 0.95 at the top)
     instead of uniform T with a seeded roll."""
-    dr = 1.0 / 105.0
-    t = np.ceil(support - 1e-9) * dr
-    lo, hi = -t, 1.0 + t
-    command = ["run", str(CASES / "rayleigh-benard.toml"),
-               "--set", f"discretisation.support_radius_over_dr={support!r}",
-               "--set", f"discretisation.courant_number={0.65 / support!r}",
-               "--set", f"domain.min=[{lo - 0.02!r}, {lo - 0.02!r}]",
-               "--set", f"domain.max=[{hi + 0.02!r}, {hi + 0.02!r}]",
-               "--set", f"particles[1].min=[{lo!r}, {lo!r}]", "--set", f"particles[1].max=[{hi!r}, 0.0]",
-               "--set", f"particles[2].min=[{lo!r}, 1.0]", "--set", f"particles[2].max=[{hi!r}, {hi!r}]",
-               "--set", f"particles[3].min=[{lo!r}, 0.0]", "--set", "particles[4].max=[" + repr(hi) + ", 1.0]"]
+    command = rayleigh_benard_walls(support, 1, 0.65)
     if conduction_start:
         command += ["--set", "initial.temperature_gradient=[0.0, -0.1]"]
     return command
@@ -141,17 +153,7 @@ def hydrostatic_rayleigh_benard(support=3.0, pressure=4.0, t_end=30.0):
     and side walls twice the support thick (a wall particle's kernel sum cut by the wall's outer
     edge gives it a strongly negative pressure; with 3 layers the gas was drawn into the top
     corners by t = 3)."""
-    dr = 1.0 / 105.0
-    t = np.ceil(2 * support - 1e-9) * dr
-    lo, hi = -t, 1.0 + t
-    return ["run", str(CASES / "rayleigh-benard.toml"),
-            "--set", f"discretisation.support_radius_over_dr={support!r}",
-            "--set", f"discretisation.courant_number={0.75 / support!r}",
-            "--set", f"domain.min=[{lo - 0.02!r}, {lo - 0.02!r}]",
-            "--set", f"domain.max=[{hi + 0.02!r}, {hi + 0.02!r}]",
-            "--set", f"particles[1].min=[{lo!r}, {lo!r}]", "--set", f"particles[1].max=[{hi!r}, 0.0]",
-            "--set", f"particles[2].min=[{lo!r}, 1.0]", "--set", f"particles[2].max=[{hi!r}, {hi!r}]",
-            "--set", f"particles[3].min=[{lo!r}, 0.0]", "--set", "particles[4].max=[" + repr(hi) + ", 1.0]",
+    return [*rayleigh_benard_walls(support, 2, 0.75),
             "--set", "initial.hydrostatic=true", "--set", "initial.temperature_gradient=[0.0, -0.1]",
             "--set", f"initial.pressure={pressure!r}", "--set", f"physics.reference_pressure={pressure!r}",
             "--set", f"run.t_end={t_end!r}", "--set", "output.snapshot_every=4000"]
@@ -160,6 +162,10 @@ def hydrostatic_rayleigh_benard(support=3.0, pressure=4.0, t_end=30.0):
 RUNS["rayleigh-benard-hydrostatic"] = hydrostatic_rayleigh_benard()
 RUNS["rayleigh-benard-s6.5"] = wider_kernel_rayleigh_benard(6.5)
 RUNS["rayleigh-benard-s6.5-conduction"] = wider_kernel_rayleigh_benard(6.5, True)
+# The authors' start at their support: at 6.5 dr the lattice's kernel sum is only 0.012 % above
+# rho (3 dr: 0.51 %), so the pressure offset that gave about 1 at the top at 3 dr shrinks from 2.1
+# to 0.05: 2.0 at mid-height gives about 1 at the top again.
+RUNS["rayleigh-benard-hydrostatic-s6.5"] = hydrostatic_rayleigh_benard(6.5, 2.0)
 
 # de Vahl Davis (1983), Int. J. Numer. Methods Fluids 3, 249-264: mean Nusselt numbers of the
 # benchmark solution (Pr = 0.71).
@@ -282,19 +288,8 @@ def make_figures(runs, out, report, names):
 
 
 def main():
-    parser = figure_parser(__doc__)
-    parser.set_defaults(runs="out/entropic", out=str(REPO / "docs" / "figures"))
-    parser.add_argument("--only", nargs="*", default=list(RUNS))
-    args = parser.parse_args()
-    names = [n for n in RUNS if n in args.only]
-    unknown = [n for n in args.only if n not in RUNS]
-    if unknown:
-        parser.error(f"--only: unknown run {', '.join(unknown)} (known: {', '.join(RUNS)})")
-    table = {n: RUNS[n] for n in names}
-    return figure_script_main(
-        args, table,
-        [(names, lambda runs, out, report: make_figures(runs, out, report, names))],
-        "entropic_cavity.md")
+    return chosen_runs_main(__doc__, "out/entropic", RUNS, lambda name: RUNS[name], make_figures,
+                            "entropic_cavity.md")
 
 
 if __name__ == "__main__":

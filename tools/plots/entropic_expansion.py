@@ -39,15 +39,8 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from revsph_runs import (  # noqa: E402
-    REPO,
-    case_of,
-    figure_parser,
-    figure_script_main,
-    read_csv,
-    save_figure,
-    snapshots,
-    write_csv,
-)
+    REPO, case_of, figure_parser, figure_script_main, label_axes, read_csv, save_figure, snapshots,
+    write_csv)
 
 STEPS = {"expansion": 0.001, "expansion-c0.002": 0.002, "expansion-c0.004": 0.004}
 RUNS = {"expansion": ["run", "expansion"]}
@@ -101,6 +94,15 @@ def slice_temperatures(gas, slices=40):
     return 0.5 * (edges[1:] + edges[:-1]), profile
 
 
+def draw_slice_temperatures(ax, gas, **reference):
+    """The panel of the temperature along x at one snapshot (gas, as read_gas gives it) against
+    a reference level, drawn with the axhline keywords `reference` (y, style, label), so that
+    the adiabatic and the dissipative expansion show it alike."""
+    ax.plot(*slice_temperatures(gas), ".-", label=f"t = {gas['time']:.2f} s")
+    ax.axhline(**reference)
+    label_axes(ax, "x (m)", "mass-mean T of the slice (K)")
+
+
 def relative_error(run):
     energy = read_csv(run / "energy.csv")
     return energy["time"], energy["relative_error"]
@@ -136,10 +138,7 @@ def make_figures(runs, out, report, t_compare):
         compare[name] = np.max(np.abs(error[t <= t_compare + 1e-9]))
     ax.axhline(3e-6, color="k", ls=":", lw=1, label="issue target 3e-6")
     ax.axhline(1e-6, color="grey", ls="--", lw=1, label="paper 1e-4 %")
-    ax.set_xlabel("t (s)")
-    ax.set_ylabel("|E - E0| / E0")
-    ax.legend(fontsize=7)
-    ax.grid(True, alpha=0.3)
+    label_axes(ax, "t (s)", "|E - E0| / E0")
     t_main, error_main = energy_columns["expansion"]
     report.append(("max |E - E0| / E0 up to the end of the paper-setting run",
                    f"{np.max(np.abs(error_main)):.3g} (t_end = {t_main[-1]:.4g} s)"))
@@ -169,25 +168,14 @@ def make_figures(runs, out, report, t_compare):
             label="T + (E_kin + E_wall) / (M c_V)")
     ax.axhline(adiabatic, color="k", ls=":", label="T0 2^-(gamma-1), uniform fill")
     ax.axhline(t0, color="grey", ls="--", lw=1, label="T0")
-    ax.set_xlabel("t (s)")
-    ax.set_ylabel("T (K)")
-    ax.legend(fontsize=7)
-    ax.grid(True, alpha=0.3)
+    label_axes(ax, "t (s)", "T (K)")
 
     # the temperature along x at the end, against the uniform fill
-    ax = fig.add_subplot(3, 2, 5)
-    last = read_gas(paths[-1])
-    ax.plot(*slice_temperatures(last), ".-", label=f"t = {last['time']:.2f} s")
-    ax.axhline(adiabatic, color="k", ls=":", label="T0 2^-(gamma-1)")
-    ax.set_xlabel("x (m)")
-    ax.set_ylabel("mass-mean T of the slice (K)")
-    ax.legend(fontsize=7)
-    ax.grid(True, alpha=0.3)
+    draw_slice_temperatures(fig.add_subplot(3, 2, 5), read_gas(paths[-1]), y=adiabatic,
+                            color="k", ls=":", label="T0 2^-(gamma-1)")
     ax = fig.add_subplot(3, 2, 6)
     ax.plot(rows[:, 0], rows[:, 4] / rows[0, 4], "-")
-    ax.set_xlabel("t (s)")
-    ax.set_ylabel("sum V / sum V(0)")
-    ax.grid(True, alpha=0.3)
+    label_axes(ax, "t (s)", "sum V / sum V(0)", legend=False)
     save_figure(fig, out / "entropic_expansion.png")
 
     end = rows[-1]
@@ -216,8 +204,7 @@ def make_figures(runs, out, report, t_compare):
 
 
 def main():
-    parser = figure_parser(__doc__)
-    parser.set_defaults(runs="out/entropic", out=str(REPO / "docs" / "figures"))
+    parser = figure_parser(__doc__, "out/entropic", REPO / "docs" / "figures")
     parser.add_argument("--t-compare", type=float, default=2.0)
     args = parser.parse_args()
     return figure_script_main(

@@ -37,15 +37,7 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from revsph_runs import (  # noqa: E402
-    REPO,
-    case_of,
-    figure_parser,
-    figure_script_main,
-    read_csv,
-    save_figure,
-    snapshots,
-    write_csv,
-)
+    REPO, case_of, figure_parser, figure_script_main, read_csv, save_figure, snapshots, write_csv)
 
 RUNS = {"hyperbolic": ["run", str(REPO / "models/entropic/cases/hyperbolic.toml")]}
 
@@ -262,8 +254,7 @@ def case_dt(run):
 
 
 def main():
-    parser = figure_parser(__doc__)
-    parser.set_defaults(runs="out/entropic", out=str(REPO / "docs" / "figures"))
+    parser = figure_parser(__doc__, "out/entropic", REPO / "docs" / "figures")
     args = parser.parse_args()
     return figure_script_main(args, RUNS, [(["hyperbolic"], make_figures)],
                               "entropic_hyperbolic.md")

@@ -54,6 +54,16 @@ def save_figure(fig, path, dpi=110):
     plt.close(fig)
 
 
+def label_axes(ax, xlabel, ylabel, legend=True):
+    """Names the axes and lays a light grid under the curves, with a small legend (legend=True):
+    one finish for the panels of a figure so that they read alike."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    if legend:
+        ax.legend(fontsize=7)
+    ax.grid(True, alpha=0.3)
+
+
 def fit_sinusoid(t, y, omegas):
     """Least-squares y = c + a sin(w t) + b cos(w t), best w of `omegas`."""
     best = None
@@ -159,3 +169,18 @@ def figure_script_main(args, runs_table, makers, report_name):
     write_report(out / report_name, report)
     print(f"wrote {out}/")
     return 0 if made else 1
+
+
+def chosen_runs_main(doc, default_runs, runs_table, command, make_figures, report_name):
+    """main() of a figure script whose one maker, make_figures(runs, out, report, names), draws
+    the runs that --only chooses (all of runs_table by default), so that such scripts cannot
+    drift apart in their options: those of figure_parser with --runs defaulting to
+    `default_runs` and --out to docs/figures; command(name) gives the revsph arguments that
+    --make-runs runs `name` with. Returns figure_script_main's exit status."""
+    parser = figure_parser(doc, default_runs, REPO / "docs" / "figures", runs_table)
+    args = parser.parse_args()
+    names = chosen_runs(parser, args, runs_table)
+    return figure_script_main(
+        args, {n: command(n) for n in names},
+        [(names, lambda runs, out, report: make_figures(runs, out, report, names))],
+        report_name)

@@ -22,7 +22,6 @@ The velocity at a point is the kernel-weighted (Shepard) average over the fluid 
 (walls with their own velocity), with the run's kernel.
 """
 
-import csv
 import sys
 from pathlib import Path
 
@@ -34,8 +33,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from cavity_ghia import CentreLines, draw_ghia  # noqa: E402
-from revsph_runs import REPO, chosen_runs, figure_parser, figure_script_main, save_figure, snapshots  # noqa: E402,E501
+from cavity_ghia import cavity_main, measure_runs  # noqa: E402
+from revsph_runs import REPO, snapshots  # noqa: E402
 
 CASE = REPO / "models" / "superfluid" / "cases" / "superfluid-cavity-re100.toml"
 # (Re, N, the kernel's support in dr): 3 dr is Table I's h as the authors' code uses it; the
@@ -56,6 +55,12 @@ def command(re, n, support=3.0):
             "--set", "output.snapshot_every=1000000000"]
 
 
+def support_of(name):
+    """Re, N and the kernel's support (a length) of run `name`."""
+    re, n, support = RUNS[name]
+    return re, n, support / n
+
+
 def final_state(run):
     with h5py.File(snapshots(run)[-1]) as f:
         fluid, wall = f["particles/fluid"], f["particles/wall"]
@@ -64,26 +69,17 @@ def final_state(run):
         return position, velocity, float(f.attrs["time"])
 
 
-def make_figures(runs, out, report, names):
+def draw_figure(runs, report, names):
+    """The centre lines at Re = 100 (top) and 400 (bottom), and the error against dr with its
+    fitted slopes (also into report); the figure and the results."""
     fig = plt.figure(figsize=(14, 8))
     grid = fig.add_gridspec(2, 3)
     profile_axes = {re: (fig.add_subplot(grid[row, 0]), fig.add_subplot(grid[row, 1]))
                     for row, re in enumerate((100, 400))}
     error_axis = fig.add_subplot(grid[:, 2])
-    line = np.linspace(0.0, 1.0, 101)
-    rows = []
-    for name in names:
-        re, n, support = RUNS[name]
-        position, velocity, time = final_state(runs / name)
-        lines = CentreLines(position, velocity, support / n, re)
-        error, interior = lines.error, lines.interior
-        rows.append((name, re, n, error, time, interior))
-        u_axis, v_axis = profile_axes[re]
-        u_axis.plot(lines.u_at(line), line, label=f"N = {n}")
-        v_axis.plot(line, lines.v_at(line), label=f"N = {n}")
-    for re in sorted({r[1] for r in rows}):
-        draw_ghia(*profile_axes[re], re)
-        pts = sorted((1.0 / r[2], r[3], r[5]) for r in rows if r[1] == re)
+    results = measure_runs(runs, names, final_state, support_of, profile_axes)
+    for re in sorted({r.re for r in results}):
+        pts = sorted((1.0 / r.n, r.error, r.interior) for r in results if r.re == re)
         line_of = error_axis.loglog([p[0] for p in pts], [p[1] for p in pts], "o-",
                                     label=f"Re {re}")
         error_axis.loglog([p[0] for p in pts], [p[2] for p in pts], "s--",
@@ -97,25 +93,12 @@ def make_figures(runs, out, report, names):
             report.append((f"Re {re}: the same away from the walls", f"{inner:.3f}"))
     error_axis.set(xlabel="dr", ylabel="max |SPH - Ghia| at Ghia's points")
     error_axis.legend(fontsize=7)
-    fig.tight_layout()
-    save_figure(fig, out / "superfluid_cavity.png")
-    with open(out / "superfluid_cavity.csv", "w", newline="") as f:
-        writer = csv.writer(f)
-        writer.writerow(["run", "Re", "N", "linf_error", "time", "linf_error_interior"])
-        writer.writerows([r[0], r[1], r[2], f"{r[3]:.6g}", f"{r[4]:.6g}", f"{r[5]:.6g}"]
-                         for r in rows)
-    report[:0] = [(f"{r[0]}: L-infinity error against Ghia at t = {r[4]:.2f} (away from the "
-                   f"walls)", f"{r[3]:.4f} ({r[5]:.4f})") for r in rows]
+    return fig, results
 
 
 def main():
-    parser = figure_parser(__doc__, "out/superfluid", REPO / "docs" / "figures", RUNS)
-    args = parser.parse_args()
-    names = chosen_runs(parser, args, RUNS)
-    return figure_script_main(
-        args, {n: command(*RUNS[n]) for n in names},
-        [(names, lambda runs, out, report: make_figures(runs, out, report, names))],
-        "superfluid_cavity.md")
+    return cavity_main(__doc__, "out/superfluid", RUNS, lambda name: command(*RUNS[name]),
+                       draw_figure, "superfluid_cavity", ("error", "time", "interior"), 2)
 
 
 if __name__ == "__main__":

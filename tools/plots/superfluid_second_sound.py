@@ -45,7 +45,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from revsph_runs import REPO, chosen_runs, figure_parser, figure_script_main, read_csv, save_figure  # noqa: E402
+from revsph_runs import REPO, chosen_runs_main, read_csv, save_figure  # noqa: E402
 
 CASE = REPO / "models" / "superfluid" / "cases" / "second-sound-small.toml"
 L, S0, U1, U2 = 0.01, 725.5, 40.0, 18.83
@@ -174,14 +174,8 @@ def make_figures(runs, out, report, names):
 
 
 def main():
-    parser = figure_parser(__doc__, "out/superfluid", REPO / "docs" / "figures", RUNS)
-    args = parser.parse_args()
-    names = chosen_runs(parser, args, RUNS)
-    table = {n: command(*RUNS[n]) for n in names}
-    return figure_script_main(
-        args, table,
-        [(names, lambda runs, out, report: make_figures(runs, out, report, names))],
-        "superfluid_second_sound.md")
+    return chosen_runs_main(__doc__, "out/superfluid", RUNS, lambda name: command(*RUNS[name]),
+                            make_figures, "superfluid_second_sound.md")
 
 
 if __name__ == "__main__":

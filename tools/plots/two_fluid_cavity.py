@@ -18,7 +18,6 @@ the walls (walls with their own velocity), support 3 dr as in the case; "away fr
 keeps Ghia's points at least one support inside the cavity.
 """
 
-import csv
 import sys
 from pathlib import Path
 
@@ -30,8 +29,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from cavity_ghia import CentreLines, draw_ghia  # noqa: E402
-from revsph_runs import REPO, chosen_runs, figure_parser, figure_script_main, save_figure, snapshots  # noqa: E402,E501
+from cavity_ghia import cavity_main, measure_runs  # noqa: E402
+from revsph_runs import REPO, snapshots  # noqa: E402
 
 CASE = REPO / "models" / "two_fluid" / "cases" / "two-fluid-cavity-re100.toml"
 RUNS = {f"cavity-re{re}-n{n}": (re, n) for re, ns in ((100, (40, 60)), (1000, (60, 80)))
@@ -56,39 +55,21 @@ def final_state(run):
         return position, velocity, float(f.attrs["time"])
 
 
-def make_figures(runs, out, report, names):
+def support_of(name):
+    """Re, N and the kernel's support (a length: 3 dr, as in the case) of run `name`."""
+    re, n = RUNS[name]
+    return re, n, 3.0 / n
+
+
+def draw_figure(runs, report, names):
+    """The centre lines at Re = 100 (top) and 1000 (bottom); the figure and the results."""
     fig, axes = plt.subplots(2, 2, figsize=(10, 8))
-    line = np.linspace(0.0, 1.0, 101)
-    rows = []
-    for name in names:
-        re, n = RUNS[name]
-        position, velocity, time = final_state(runs / name)
-        lines = CentreLines(position, velocity, 3.0 / n, re)
-        rows.append((name, re, n, lines.error, lines.interior, time))
-        row = 0 if re == 100 else 1
-        axes[row, 0].plot(lines.u_at(line), line, label=f"N = {n}")
-        axes[row, 1].plot(line, lines.v_at(line), label=f"N = {n}")
-    for re in sorted({r[1] for r in rows}):
-        draw_ghia(*axes[0 if re == 100 else 1], re)
-    fig.tight_layout()
-    save_figure(fig, out / "two_fluid_cavity.png")
-    with open(out / "two_fluid_cavity.csv", "w", newline="") as f:
-        writer = csv.writer(f)
-        writer.writerow(["run", "Re", "N", "linf_error", "linf_error_interior", "time"])
-        writer.writerows([r[0], r[1], r[2], f"{r[3]:.6g}", f"{r[4]:.6g}", f"{r[5]:.6g}"]
-                         for r in rows)
-    report[:0] = [(f"{r[0]}: L-infinity error against Ghia at t = {r[5]:.1f} (away from the "
-                   f"walls)", f"{r[3]:.4f} ({r[4]:.4f})") for r in rows]
+    return fig, measure_runs(runs, names, final_state, support_of, {100: axes[0], 1000: axes[1]})
 
 
 def main():
-    parser = figure_parser(__doc__, "out/two_fluid", REPO / "docs" / "figures", RUNS)
-    args = parser.parse_args()
-    names = chosen_runs(parser, args, RUNS)
-    return figure_script_main(
-        args, {n: command(*RUNS[n]) for n in names},
-        [(names, lambda runs, out, report: make_figures(runs, out, report, names))],
-        "two_fluid_cavity.md")
+    return cavity_main(__doc__, "out/two_fluid", RUNS, lambda name: command(*RUNS[name]),
+                       draw_figure, "two_fluid_cavity", ("error", "interior", "time"), 1)
 
 
 if __name__ == "__main__":

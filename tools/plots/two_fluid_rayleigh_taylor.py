@@ -42,7 +42,7 @@ import numpy as np  # noqa: E402
 from scipy.optimize import curve_fit  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from revsph_runs import REPO, chosen_runs, figure_parser, figure_script_main, save_figure, snapshots  # noqa: E402,E501
+from revsph_runs import REPO, chosen_runs_main, save_figure, snapshots  # noqa: E402
 
 CASE = REPO / "models" / "two_fluid" / "cases" / "rayleigh-taylor-linear.toml"
 PAPER_CASE = REPO / "models" / "two_fluid" / "cases" / "rayleigh-taylor.toml"
@@ -160,13 +160,8 @@ def make_figures(runs, out, report, names):
 
 
 def main():
-    parser = figure_parser(__doc__, "out/two_fluid", REPO / "docs" / "figures", RUNS)
-    args = parser.parse_args()
-    names = chosen_runs(parser, args, RUNS)
-    return figure_script_main(
-        args, {n: command(RUNS[n]) for n in names},
-        [(names, lambda runs, out, report: make_figures(runs, out, report, names))],
-        "two_fluid_rayleigh_taylor.md")
+    return chosen_runs_main(__doc__, "out/two_fluid", RUNS, lambda name: command(RUNS[name]),
+                            make_figures, "two_fluid_rayleigh_taylor.md")
 
 
 if __name__ == "__main__":
