@@ -1,4 +1,5 @@
 #include "core/case_key.hpp"
+#include "core/step_splitting.hpp"
 
 namespace revsph {
 
@@ -47,6 +48,20 @@ Key<double> KeySet::gravity(std::string_view detail) {
 Key<double> KeySet::gravity_reference_height() {
   return number("physics.gravity_reference_height", "m", "0",
                 "height of zero gravitational energy (shifts the reported energy only)");
+}
+
+Choice<Splitting> KeySet::splitting(const std::string& default_name) {
+  return choice<Splitting>(
+      "step.splitting", "\"" + default_name + "\"",
+      "where the irreversible operators (dissipation, relaxation) go in the step "
+      "(core/step_splitting.hpp): \"strang\", half updates at the step's ends (or the sites "
+      "the model marks), second order; \"midpoint\", one update between the halves of the "
+      "central sub-step, second order; \"after_centre\", one update after the central "
+      "sub-step (paper 2 eq. 52), first order; \"lie\", one update after the step, first order",
+      {{"strang", Splitting::strang},
+       {"midpoint", Splitting::midpoint},
+       {"after_centre", Splitting::after_centre},
+       {"lie", Splitting::lie}});
 }
 
 const KeyDecl& KeySet::add(KeyDecl decl) {

@@ -34,6 +34,8 @@
 
 namespace revsph {
 
+enum class Splitting; // core/step_splitting.hpp
+
 // "" if a value is acceptable, else why not ("must be >= 0").
 template <class T>
 using KeyCheck = std::function<std::string(const T&)>;
@@ -157,6 +159,9 @@ protected:
   // physics.gravity_reference_height: the two keys every model with gravity has.
   Key<double> gravity(std::string_view detail = "");
   Key<double> gravity_reference_height();
+  // step.splitting: where the model's irreversible operators go in the step
+  // (core/step_splitting.hpp); `default_name` is the model's ("strang", ...).
+  Choice<Splitting> splitting(const std::string& default_name);
   // A key read elsewhere (by a core reader, or an array of numbers read with the dimension):
   // declared here, read through the path this returns.
   std::string declare(KeyDecl decl) { return add(std::move(decl)).path; }

@@ -10,6 +10,7 @@
 #include "core/particle_view.hpp"
 #include "core/state_snapshot.hpp"
 #include "core/step_composition.hpp"
+#include "core/step_splitting.hpp"
 
 #include <concepts>
 #include <cstdint>
@@ -31,6 +32,9 @@ struct SimulationInfo {
   int dimension = 2;
   Arithmetic arithmetic = Arithmetic::fixed;
   double dt = 0.0;
+  // Where the model's irreversible operators go in the step (core/step_splitting.hpp): the
+  // case's step.splitting, for a model that has operators.
+  Splitting splitting = Splitting::strang;
   // Filled by ModelSimulation from the state's particle sets.
   std::vector<ParticleCount> particles;
   // The sub-steps and hooks that act irreversibly in this case ("name: what"), filled by
@@ -111,6 +115,22 @@ concept HasStepHooks = requires {
   { M::step_hooks() } -> std::convertible_to<std::span<const StepHook<M>>>;
 };
 
+// Optional: irreversible operators over dt (a dissipation, a relaxation), which the core places
+// around the palindrome by the case's splitting (core/step_splitting.hpp).
+template <class M>
+concept HasIrreversibleOperators = requires {
+  { M::irreversible_operators() } -> std::convertible_to<std::span<const IrreversibleOperator<M>>>;
+};
+
+template <class M>
+std::span<const IrreversibleOperator<M>> irreversible_operators_of() {
+  if constexpr (HasIrreversibleOperators<M>) {
+    return M::irreversible_operators();
+  } else {
+    return {};
+  }
+}
+
 template <class M>
 std::span<const StepHook<M>> step_hooks_of() {
   if constexpr (HasStepHooks<M>) {
@@ -186,7 +206,7 @@ public:
     require_palindrome<M>(M::palindrome());
     require_complete(model_.state());
     info_.particles = set_sizes(model_.state());
-    info_.irreversible_terms = irreversible_terms<M>(model_, M::palindrome(), step_hooks_of<M>());
+    place_irreversible_operators();
   }
 
   const SimulationInfo& info() const override { return info_; }
@@ -198,7 +218,7 @@ public:
         if constexpr (HasClock<M>) {
           model_.set_time(time_at(steps_taken_));
         }
-        apply_step<M>(model_, M::palindrome(), dt);
+        apply_step<M>(model_, step_, dt);
         for (const StepHook<M>& hook : step_hooks_of<M>()) {
           (model_.*hook.apply)(steps_taken_ + 1);
         }
@@ -256,18 +276,36 @@ public:
 
   std::vector<std::string> substep_names() const override {
     std::vector<std::string> names;
-    for (const Substep<M>& s : M::palindrome()) {
+    for (const Substep<M>& s : step_) {
       names.emplace_back(s.name);
     }
     return names;
   }
   void apply_substep(std::size_t index, double dt) override {
-    attributing_faults([&] { (model_.*M::palindrome()[index].apply)(dt); });
+    attributing_faults([&] { (model_.*step_.at(index).apply)(dt); });
   }
 
   M& model() { return model_; }
 
 private:
+  // The step: the palindrome with the operators that act in this case placed by the case's
+  // splitting; their terms first in the irreversible terms, each with its placement.
+  void place_irreversible_operators() {
+    std::vector<IrreversibleOperator<M>> acting;
+    const bool marked = marked_strang_sites<M>(M::palindrome()) != 0;
+    for (const IrreversibleOperator<M>& op : irreversible_operators_of<M>()) {
+      if (const std::string what = op.acts(model_); !what.empty()) {
+        acting.push_back(op);
+        info_.irreversible_terms.push_back(std::string(op.name) + ": " + what + ", " +
+                                           placement_text(info_.splitting, marked));
+      }
+    }
+    step_ = compose_step<M>(M::palindrome(), acting, info_.splitting);
+    for (std::string& term : irreversible_terms<M>(model_, M::palindrome(), step_hooks_of<M>())) {
+      info_.irreversible_terms.push_back(std::move(term));
+    }
+  }
+
   // A fault found outside advance(), in quantities derived from the current state (say the
   // forces of a restored snapshot), belongs to the next step: the first one to use them.
   template <class Compute>
@@ -284,6 +322,7 @@ private:
 
   M model_;
   SimulationInfo info_;
+  std::vector<Substep<M>> step_;
 };
 
 } // namespace revsph

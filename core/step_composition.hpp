@@ -21,12 +21,15 @@ namespace revsph {
 template <class Model>
 struct Substep {
   std::string_view name;
-  double dt_fraction;              // this sub-step advances its group by dt_fraction * dt
+  double dt_fraction; // this sub-step advances its group by dt_fraction * dt
+  // Null for a mark in the palindrome that does nothing itself (strang_site,
+  // core/step_splitting.hpp).
   void (Model::*apply)(double dt); // a member function of the model
-  // The one declaration of an irreversible sub-step (dissipation, an update without an exact
-  // inverse): null for an exactly invertible one; otherwise what it does irreversibly in this
-  // case, or "" where it does nothing irreversible (a relaxation sub-step in a solid, say). The
-  // verifier, info() and the output read this (irreversible_terms below).
+  // The one declaration of an irreversible sub-step (an update without an exact inverse, such as
+  // paper 2's Cayley update; dissipation is an IrreversibleOperator, core/step_splitting.hpp):
+  // null for an exactly invertible one; otherwise what it does irreversibly in this case, or ""
+  // where it does nothing irreversible. The verifier, info() and the output read this
+  // (irreversible_terms below).
   std::string (*irreversible)(const Model& model) = nullptr;
 };
 

@@ -1,6 +1,6 @@
-// Entropic SPH's dissipation (paper 4 §5.1-5.2) as sub-steps of the model: the Strang half
-// steps, the first-order hook, their declarations as irreversible terms, and the update itself
-// (its pair terms: dissipation_terms.hpp).
+// Entropic SPH's dissipation (paper 4 §5.1-5.2): the update that the core places by the case's
+// splitting (core/step_splitting.hpp), and its declaration as an irreversible term (its pair
+// terms: dissipation_terms.hpp).
 
 #include "core/case_values.hpp"
 #include "core/particle_update.hpp"
@@ -12,83 +12,26 @@
 namespace revsph::entropic {
 
 template <int D>
-std::string Model<D>::dissipation_description() const {
+std::string Model<D>::dissipation_description(const Model& model) {
   // "viscosity and heat conduction (mu = ..., eq. 60; lambda_F = ..., eqs. 51-56)": the short
-  // name first (the verifier's verdict cuts at the parenthesis).
+  // name first (the verifier's verdict cuts at the parenthesis); "" without dissipation.
+  const Parameters<D>& p = model.parameters_;
+  if (!p.dissipative()) {
+    return "";
+  }
   std::string names;
   std::string details;
-  if (parameters_.viscosity > 0.0) {
+  if (p.viscosity > 0.0) {
     names = "viscosity";
-    details = "mu = " + format_scientific(parameters_.viscosity, 3) + ", eq. 60";
+    details = "mu = " + format_scientific(p.viscosity, 3) + ", eq. 60";
   }
-  if (parameters_.heat_conductivity > 0.0) {
+  if (p.heat_conductivity > 0.0) {
     names += (names.empty() ? "" : " and ") + std::string("heat conduction");
     details += (details.empty() ? "" : "; ") + std::string("lambda_F = ") +
-               format_scientific(parameters_.heat_conductivity, 3) +
-               (parameters_.conduction == HeatConduction::two_pass ? ", eqs. 51-56" : ", pairwise");
+               format_scientific(p.heat_conductivity, 3) +
+               (p.conduction == HeatConduction::two_pass ? ", eqs. 51-56" : ", pairwise");
   }
   return names + " (" + details + ")";
-}
-
-template <int D>
-bool Model<D>::dissipates_in(DissipationSplitting splitting) const {
-  return parameters_.dissipative() && parameters_.splitting == splitting;
-}
-
-template <int D>
-std::string Model<D>::dissipation_in(DissipationSplitting splitting,
-                                     const std::string& placement) const {
-  return dissipates_in(splitting) ? dissipation_description() + ", " + placement : "";
-}
-
-template <int D>
-std::string Model<D>::strang_dissipation(const Model& model) {
-  return model.dissipation_in(DissipationSplitting::strang, "half steps at the step's ends");
-}
-
-template <int D>
-std::string Model<D>::first_order_dissipation(const Model& model) {
-  return model.dissipation_in(DissipationSplitting::first_order,
-                              "one update after each step (first order)");
-}
-
-template <int D>
-std::string Model<D>::midpoint_dissipation(const Model& model) {
-  return model.dissipation_in(DissipationSplitting::midpoint,
-                              "one update in the middle of the drift");
-}
-
-template <int D>
-void Model<D>::drift_substep(double dt) {
-  // With the midpoint splitting, Strang the other way round: the drift is split in halves and
-  // the dissipation acts over the whole step between them, so the kicks at a step boundary see
-  // one state.
-  const bool midpoint = dissipates_in(DissipationSplitting::midpoint);
-  const bool moving = parameters_.particles_move;
-  const double drift_time = midpoint ? 0.5 * dt : dt;
-  if (moving) {
-    drift(drift_time);
-  }
-  if (midpoint) {
-    dissipate(dt);
-    if (moving) {
-      drift(drift_time);
-    }
-  }
-}
-
-template <int D>
-void Model<D>::dissipation_substep(double dt) {
-  if (dissipates_in(DissipationSplitting::strang)) {
-    dissipate(dt);
-  }
-}
-
-template <int D>
-void Model<D>::dissipation_hook(std::int64_t /*step*/) {
-  if (dissipates_in(DissipationSplitting::first_order)) {
-    dissipate(parameters_.dt);
-  }
 }
 
 template <int D>
@@ -208,15 +151,7 @@ void Model<D>::dissipate(double tau) {
 }
 
 #define REVSPH_ENTROPIC_DISSIPATION(D)                                                             \
-  template std::string Model<D>::dissipation_description() const;                                  \
-  template bool Model<D>::dissipates_in(DissipationSplitting) const;                               \
-  template std::string Model<D>::dissipation_in(DissipationSplitting, const std::string&) const;   \
-  template std::string Model<D>::strang_dissipation(const Model&);                                 \
-  template std::string Model<D>::first_order_dissipation(const Model&);                            \
-  template std::string Model<D>::midpoint_dissipation(const Model&);                               \
-  template void Model<D>::drift_substep(double);                                                   \
-  template void Model<D>::dissipation_substep(double);                                             \
-  template void Model<D>::dissipation_hook(std::int64_t);                                          \
+  template std::string Model<D>::dissipation_description(const Model&);                            \
   template void Model<D>::dissipate(double);
 REVSPH_ENTROPIC_DISSIPATION(1)
 REVSPH_ENTROPIC_DISSIPATION(2)

@@ -27,13 +27,6 @@ void Model<D>::entropy_exchange_substep(double dt) {
 }
 
 template <int D>
-void Model<D>::relaxation_substep(double dt) {
-  if (parameters_.relaxing()) {
-    relax_flux(dt);
-  }
-}
-
-template <int D>
 std::string Model<D>::relaxation_description(const Model& model) {
   const Parameters<D>& p = model.parameters_;
   return p.relaxing() ? "relaxation of the entropy flux w into heat (tau = " +
@@ -128,7 +121,6 @@ void Model<D>::relax_flux(double dt) {
 #define REVSPH_ENTROPIC_HYPERBOLIC_HEAT(D)                                                         \
   template void Model<D>::flux_substep(double);                                                    \
   template void Model<D>::entropy_exchange_substep(double);                                        \
-  template void Model<D>::relaxation_substep(double);                                              \
   template std::string Model<D>::relaxation_description(const Model&);                             \
   template void Model<D>::exchange_flux(double);                                                   \
   template void Model<D>::exchange_entropy(double);                                                \

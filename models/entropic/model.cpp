@@ -123,30 +123,26 @@ std::array<SummedQuantity, D + 2> Model<D>::wall_mirror_quantities(const Paramet
 template <int D>
 std::span<const Substep<Model<D>>> Model<D>::palindrome() {
   // The reversible core is kick-drift-kick around the exchange of the hyperbolic heat
-  // conduction (w, S, w: eq. 68); the irreversible relaxation (eq. 69) and dissipation sit at
-  // both ends as Strang half steps. Each sub-step does nothing where its physics is off.
+  // conduction (w, S, w: eq. 68). Each sub-step does nothing where its physics is off.
   static constexpr Substep<Model> sequence[] = {
-      {"dissipation", 0.5, &Model::dissipation_substep, &Model::strang_dissipation},
-      {"relaxation", 0.5, &Model::relaxation_substep, &Model::relaxation_description},
       {"kick", 0.5, &Model::kick_substep},
       {"flux", 0.5, &Model::flux_substep},
       {"entropy_exchange", 0.5, &Model::entropy_exchange_substep},
-      {"drift", 1.0, &Model::drift_substep, &Model::midpoint_dissipation},
+      {"drift", 1.0, &Model::drift_substep},
       {"entropy_exchange", 0.5, &Model::entropy_exchange_substep},
       {"flux", 0.5, &Model::flux_substep},
       {"kick", 0.5, &Model::kick_substep},
-      {"relaxation", 0.5, &Model::relaxation_substep, &Model::relaxation_description},
-      {"dissipation", 0.5, &Model::dissipation_substep, &Model::strang_dissipation},
   };
   return sequence;
 }
 
 template <int D>
-std::span<const StepHook<Model<D>>> Model<D>::step_hooks() {
-  static constexpr StepHook<Model> hooks[] = {
-      {"dissipation", &Model::dissipation_hook, &Model::first_order_dissipation},
+std::span<const IrreversibleOperator<Model<D>>> Model<D>::irreversible_operators() {
+  static constexpr IrreversibleOperator<Model> operators[] = {
+      {"dissipation", &Model::dissipate, &Model::dissipation_description},
+      {"relaxation", &Model::relax_flux, &Model::relaxation_description},
   };
-  return hooks;
+  return operators;
 }
 
 template <int D>

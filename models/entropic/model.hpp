@@ -47,6 +47,9 @@ public:
   Model(Parameters<D> parameters, SimulationInfo info, State<D> state);
 
   static std::span<const Substep<Model>> palindrome();
+  // The dissipation (§5.1-5.2) and the flux relaxation (eq. 69), placed by the case's
+  // step.splitting (core/step_splitting.hpp).
+  static std::span<const IrreversibleOperator<Model>> irreversible_operators();
 
   State<D>& state() { return state_; }
   const SimulationInfo& info() const { return info_; }
@@ -71,7 +74,6 @@ public:
   // receives, conduction and the kinetic energy the viscosity removed, at fixed density: the
   // total energy is kept up to rounding. Irreversible.
   void dissipate(double tau);
-  static std::span<const StepHook<Model>> step_hooks();
   // The hyperbolic heat conduction (§5.5, hyperbolic_heat.cpp): the reversible exchange of
   // eq. (68) as two shears, w from (S, x) and S from (w, x), and the relaxation of eq. (69),
   // which turns the energy of w into heat (irreversible, energy kept up to rounding).
@@ -91,23 +93,16 @@ private:
       kick(dt);
     }
   }
-  // The drift; with the midpoint splitting, two half drifts around the dissipative update.
-  void drift_substep(double dt);
+  void drift_substep(double dt) {
+    if (parameters_.particles_move) {
+      drift(dt);
+    }
+  }
   void flux_substep(double dt);
   void entropy_exchange_substep(double dt);
-  void relaxation_substep(double dt);
+  // What the operators do in this case ("" where they do not act).
   static std::string relaxation_description(const Model& model);
-  // The dissipation as Strang half steps at the step's ends, or as one update after the step
-  // (parameters.hpp); each does nothing in the other splitting or without dissipation.
-  void dissipation_substep(double dt);
-  void dissipation_hook(std::int64_t step);
-  static std::string strang_dissipation(const Model& model);
-  static std::string first_order_dissipation(const Model& model);
-  static std::string midpoint_dissipation(const Model& model);
-  std::string dissipation_description() const;
-  // Whether the dissipation acts in this splitting; what it does there ("" where it does not).
-  bool dissipates_in(DissipationSplitting splitting) const;
-  std::string dissipation_in(DissipationSplitting splitting, const std::string& placement) const;
+  static std::string dissipation_description(const Model& model);
   // The gas's part of a per-carrier array.
   std::span<const double> of_gas(const std::vector<double>& by_carrier) const {
     return layout_.part_of(std::span<const double>(by_carrier), state_.gas);

@@ -135,15 +135,7 @@ struct Keys : KeySet {
                                 : "must be > 0 (leave it out for no relaxation; got " +
                                       format_scientific(tau, 3) + ")";
              });
-  const Choice<DissipationSplitting> splitting = choice<DissipationSplitting>(
-      "dissipation.splitting", "\"strang\"",
-      "where the dissipative update goes: \"strang\", half steps at both ends of the "
-      "reversible step (second order); \"midpoint\", one full update between two half "
-      "drifts (second order, about 1.5 times cheaper); \"first_order\", one full step "
-      "after it (the paper's)",
-      {{"strang", DissipationSplitting::strang},
-       {"midpoint", DissipationSplitting::midpoint},
-       {"first_order", DissipationSplitting::first_order}});
+  const Choice<Splitting> splitting = KeySet::splitting("strang");
   const Key<double> gravity = KeySet::gravity();
   const Choice<bool> boussinesq = choice<bool>(
       "physics.buoyancy", "\"density\"",

@@ -6,6 +6,7 @@
 #include "core/case_keys.hpp"
 #include "core/geometry.hpp"
 #include "core/particle_discretisation.hpp"
+#include "core/step_splitting.hpp"
 #include "fixedpoint/scale.hpp"
 #include "models/entropic/equation_of_state.hpp"
 
@@ -22,14 +23,6 @@ using GasLaw = std::variant<IdealGas, StiffenedGas>;
 
 // The particle volumes of §3.2 and §4 (eqs. 23-28).
 enum class ParticleVolume { mass, entropic, direct, implicit, mixed };
-
-// Where the dissipative update of §5.1-5.2 goes in the step: half steps at both ends of the
-// reversible palindrome (Strang splitting, second order); one full update in the middle of the
-// drift (Strang splitting the other way round, second order too: kick, half drift, dissipation,
-// half drift, kick; both kicks of a step boundary then see the same state, so a step costs one
-// force pass and one dissipative update instead of two of each, and one more neighbour search);
-// or one full update after it (the paper's first-order explicit update, kept for comparison).
-enum class DissipationSplitting { strang, midpoint, first_order };
 
 // The discretisation of Fourier's heat conduction: the paper's two passes, q = lambda G(1/T) then
 // its divergence (eqs. 54-56), or one pass over pairs (dissipation_terms.hpp), whose wider-stencil
@@ -52,7 +45,12 @@ struct Parameters {
   double viscosity = 0.0;
   double heat_conductivity = 0.0; // lambda_F
   HeatConduction conduction = HeatConduction::two_pass;
-  DissipationSplitting splitting = DissipationSplitting::strang;
+  // Where the dissipation and the flux relaxation go (step.splitting, core/step_splitting.hpp):
+  // strang, half updates at the step's ends; midpoint, one update between two half drifts (both
+  // kicks of a step boundary see the same state: one force pass and one update per step instead
+  // of two of each, one more neighbour search); lie, one update after the step (the paper's
+  // first-order explicit update, kept for comparison).
+  Splitting splitting = Splitting::strang;
   // Whether the viscosity acts between the gas and the dummy and thermal particles (at rest):
   // no-slip walls. Otherwise the walls are free-slip.
   bool no_slip_walls = false;

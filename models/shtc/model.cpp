@@ -34,15 +34,20 @@ Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state,
 template <int D>
 std::span<const Substep<Model<D>>> Model<D>::palindrome() {
   static constexpr Substep<Model> sequence[] = {
-      {"relaxation", 0.5, &Model::relax_at_step_end, &Model::relaxation_irreversibility},
       {"kick", 0.5, &Model::kick},
       {"drift", 0.5, &Model::drift},
       {"distortion", 1.0, &Model::update_distortion, &Model::distortion_irreversibility},
       {"drift", 0.5, &Model::drift},
       {"kick", 0.5, &Model::kick},
-      {"relaxation", 0.5, &Model::relax_at_step_end, &Model::relaxation_irreversibility},
   };
   return sequence;
+}
+
+template <int D>
+std::span<const IrreversibleOperator<Model<D>>> Model<D>::irreversible_operators() {
+  static constexpr IrreversibleOperator<Model> operators[] = {
+      {"relaxation", &Model::relax_all, &Model::relaxation_irreversibility}};
+  return operators;
 }
 
 template <int D>
@@ -53,23 +58,16 @@ std::string Model<D>::relaxation_description() const {
 
 template <int D>
 std::string Model<D>::distortion_irreversibility(const Model& model) {
-  std::string what;
   if (model.parameters_.cayley_distortion_update) {
-    what = "the paper's Cayley distortion update (eq. 49), rounded to fixed point: not exactly "
+    return "the paper's Cayley distortion update (eq. 49), rounded to fixed point: not exactly "
            "invertible";
   }
-  if (model.parameters_.relaxation_time && !model.parameters_.relaxation_splitting.at_step_ends) {
-    what += (what.empty() ? "" : "; ") + model.relaxation_description() + " after the update";
-  }
-  return what;
+  return "";
 }
 
 template <int D>
 std::string Model<D>::relaxation_irreversibility(const Model& model) {
-  if (model.parameters_.relaxation_time && model.parameters_.relaxation_splitting.at_step_ends) {
-    return model.relaxation_description() + " at the step's ends";
-  }
-  return "";
+  return model.parameters_.relaxation_time ? model.relaxation_description() : "";
 }
 
 template <int D>
@@ -263,16 +261,6 @@ void Model<D>::update_distortion(double dt) {
     if (!add_wall_work(dt)) {
       throw SimulationFault({"boundary", 0, "wall_work", "does not fit its fixed-point scale"}, 0);
     }
-  }
-  if (parameters_.relaxation_time && !parameters_.relaxation_splitting.at_step_ends) {
-    relax_all(dt); // eq. (52d), after the update
-  }
-}
-
-template <int D>
-void Model<D>::relax_at_step_end(double dt) {
-  if (parameters_.relaxation_time && parameters_.relaxation_splitting.at_step_ends) {
-    relax_all(dt);
   }
 }
 

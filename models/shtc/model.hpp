@@ -8,9 +8,9 @@
 // Each sub-step is undone bit for bit by itself after a time reversal (v -> -v), and the
 // sequence is a palindrome: the step is bitwise reversible (design note §2, §4). The distortion
 // update replaces the paper's Cayley form (same second order; tests compare them).
-// A fluid's relaxation (eqs. 51-53, irreversible) runs after the distortion update (the paper's
-// eq. 52) or, with relaxation_splitting = "step_ends", as a half step at both ends of the
-// sequence (relaxation.hpp); for a solid those end sub-steps do nothing.
+// A fluid's relaxation (eqs. 51-53, irreversible) is an operator the core places by the case's
+// step.splitting: by default right after the distortion update (the paper's eq. 52), or as half
+// steps at both ends ("strang"), ...; a solid has none (relaxation.hpp).
 //
 // Particles: "material" (moving) then "boundary" (in place, at rest or pretending a wall
 // velocity; state.hpp), together the carriers. The neighbour loops run over the carriers in cell order (slots); the state and every
@@ -51,6 +51,8 @@ public:
   void initialise_constants();
 
   static std::span<const Substep<Model>> palindrome();
+  // The relaxation (eqs. 51-53), placed by step.splitting.
+  static std::span<const IrreversibleOperator<Model>> irreversible_operators();
 
   State<D>& state() { return state_; }
   const SimulationInfo& info() const { return info_; }
@@ -71,8 +73,6 @@ public:
   void kick(double dt);
   void drift(double dt);
   void update_distortion(double dt);
-  // The relaxation at the step's ends (relaxation_splitting = "step_ends"); nothing otherwise.
-  void relax_at_step_end(double dt);
   // Relaxes every carrier's distortion over dt (eqs. 52d, 53), counting the energy it removes.
   void relax_all(double dt);
 

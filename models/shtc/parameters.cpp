@@ -11,7 +11,7 @@ namespace revsph::shtc {
 
 namespace {
 
-enum class Splitting { paper, matched, step_ends };
+enum class RelaxationRate { paper, matched };
 
 // Every key of an SHTC case file beyond common_case_keys(), including those setup.cpp reads, in
 // the reference's order.
@@ -49,14 +49,13 @@ struct Keys : KeySet {
       number("material.kinematic_viscosity", "m^2/s", "none: an elastic solid",
              "a fluid of viscosity nu: tau = 6 nu / cs^2 (eqs. 65, 69); not with relaxation_time",
              positive_or_why);
-  const Choice<Splitting> relaxation_splitting = choice<Splitting>(
-      "material.relaxation_splitting", "\"paper\"",
-      "how the relaxation is split from the reversible step (models/shtc/README.md): eq. (52), "
-      "nu kept at any dt / tau, or RK4 at the step's ends (dt / tau < 1/3); only with "
-      "relaxation",
-      {{"paper", Splitting::paper},
-       {"matched", Splitting::matched},
-       {"step_ends", Splitting::step_ends}});
+  const Choice<RelaxationRate> relaxation_rate = choice<RelaxationRate>(
+      "material.relaxation_rate", "\"paper\"",
+      "the rate of the RK4 relaxation (models/shtc/README.md): \"paper\", eq. (53)'s tau; "
+      "\"matched\", the rate that keeps nu at any dt / tau for the case's step.splitting "
+      "(strang and midpoint: dt / tau < 1/3); only with relaxation",
+      {{"paper", RelaxationRate::paper}, {"matched", RelaxationRate::matched}});
+  const Choice<Splitting> splitting = KeySet::splitting("after_centre");
   const Key<double> penalty_speed =
       number("penalty.speed", "m/s", "0", "cp of the tensile penalty (eqs. 39-42); >= 0 (0: off)",
              must<double>([](double cp) { return cp >= 0.0 && std::isfinite(cp); },
@@ -232,6 +231,30 @@ void read_initial_field(const CaseFile& case_file, Parameters<D>& p) {
   }
 }
 
+// The relaxation's RK4 rate for where step.splitting puts it (relaxation.hpp): the paper's tau
+// anywhere; matched, the rate that keeps nu for that placement.
+template <int D>
+RelaxationSplitting relaxation_splitting(const CaseFile& case_file, const Keys& k,
+                                         RelaxationRate rate, const Parameters<D>& p) {
+  const double tau = *p.relaxation_time;
+  if (rate == RelaxationRate::paper) {
+    return paper_splitting(tau);
+  }
+  if (p.splitting == Splitting::after_centre || p.splitting == Splitting::lie) {
+    return matched_splitting(tau, p.dt);
+  }
+  const auto matched = p.splitting == Splitting::strang ? step_ends_splitting(tau, p.dt)
+                                                        : midpoint_splitting(tau, p.dt);
+  if (!matched) {
+    case_file.fail(k.relaxation_rate.path(),
+                   "\"matched\" with step.splitting \"strang\" or \"midpoint\" needs dt / tau "
+                   "< 1/3 (here " +
+                       std::to_string(p.dt / tau) +
+                       "): use a smaller time step or step.splitting = \"after_centre\"");
+  }
+  return *matched;
+}
+
 } // namespace
 
 template <int D>
@@ -264,23 +287,13 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.cell_size_factor = k.cell_size_factor.read(case_file);
   p.cayley_distortion_update = k.cayley_distortion_update.read(case_file);
 
-  const Splitting splitting = k.relaxation_splitting.read(case_file);
+  p.splitting = k.splitting.read(case_file);
+  const RelaxationRate rate = k.relaxation_rate.read(case_file);
   if (p.relaxation_time) {
-    const double tau = *p.relaxation_time;
-    if (splitting == Splitting::paper) {
-      p.relaxation_splitting = paper_splitting(tau);
-    } else if (splitting == Splitting::matched) {
-      p.relaxation_splitting = matched_splitting(tau, p.dt);
-    } else if (const auto at_ends = step_ends_splitting(tau, p.dt)) {
-      p.relaxation_splitting = *at_ends;
-    } else {
-      case_file.fail(k.relaxation_splitting.path(),
-                     "\"step_ends\" needs dt / tau < 1/3 (here " + std::to_string(p.dt / tau) +
-                         "): use a smaller time step or \"matched\"");
-    }
-  } else if (case_file.has(k.relaxation_splitting.path())) {
+    p.relaxation_splitting = relaxation_splitting(case_file, k, rate, p);
+  } else if (case_file.has(k.relaxation_rate.path())) {
     case_file.fail(
-        k.relaxation_splitting.path(),
+        k.relaxation_rate.path(),
         "needs relaxation_time or kinematic_viscosity (an elastic solid does not relax)");
   }
 

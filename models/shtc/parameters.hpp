@@ -5,6 +5,7 @@
 #include "core/case_file.hpp"
 #include "core/case_keys.hpp"
 #include "core/geometry.hpp"
+#include "core/step_splitting.hpp"
 #include "fixedpoint/scale.hpp"
 #include "models/shtc/distortion.hpp"
 #include "models/shtc/elastic_energy.hpp"
@@ -44,8 +45,11 @@ struct Parameters {
   // tau of eqs. (51)-(53), from relaxation_time or kinematic_viscosity (tau = 6 nu / cs^2,
   // eqs. 65, 69); none: an elastic solid (tau = infinity)
   std::optional<double> relaxation_time;
-  // How the relaxation is split from the reversible step: [material] relaxation_splitting =
-  // "paper" (eq. 52, the default) or "matched" (relaxation.hpp: nu kept at any dt / tau)
+  // Where the relaxation goes in the step (step.splitting, core/step_splitting.hpp; by default
+  // after the distortion update, the paper's eq. 52) and its RK4 rate there ([material]
+  // relaxation_rate = "paper", eq. 53's tau, or "matched": relaxation.hpp, nu kept at any
+  // dt / tau)
+  Splitting splitting = Splitting::after_centre;
   RelaxationSplitting relaxation_splitting;
   // [penalty]: the tensile penalty of eqs. (39)–(42); cp = 0 switches it off
   double penalty_speed = 0.0;

@@ -13,13 +13,11 @@
 
 namespace revsph::shtc {
 
-// How the relaxation is integrated within one time step of length dt.
+// How the relaxation is integrated over the time the step gives it (where it goes in the step is
+// the case's step.splitting, core/step_splitting.hpp).
 struct RelaxationSplitting {
   double relaxation_time = 0.0; // the tau used in eq. (53)
   int substeps = 1;             // RK4 steps per relaxation sub-step
-  // false: after the distortion update, over dt (eq. 52); true: over dt / 2 at both ends of the
-  // step, outside the reversible kick-drift-distortion-drift-kick
-  bool at_step_ends = false;
 };
 
 // The paper's splitting (eq. 52): one RK4 step over dt with the case's tau, right after the
@@ -31,7 +29,7 @@ struct RelaxationSplitting {
 // the relaxed stress while the update raised the elastic energy with the unrelaxed one, so the
 // energy budget closes only to first order in dt (tests/system/shtc_test.cpp).
 inline RelaxationSplitting paper_splitting(double relaxation_time) {
-  return {relaxation_time, 1, false};
+  return {relaxation_time, 1};
 }
 
 namespace detail {
@@ -39,7 +37,7 @@ namespace detail {
 // RK4 steps over `length` whose linearised amplification is `target`: one RK4 step of rate z /
 // k amplifies by R(z) = 1 - z + z^2/2 - z^3/6 + z^4/24, decreasing on [0, 1.5] from 1 to 0.27;
 // the length is cut into enough substeps that each needs z <= 1 (R(1) = 0.375), z by bisection.
-inline RelaxationSplitting amplifying_by(double target, double length, bool at_step_ends) {
+inline RelaxationSplitting amplifying_by(double target, double length) {
   auto amplification = [](double z) {
     return 1.0 - z + z * z / 2.0 - z * z * z / 6.0 + z * z * z * z / 24.0;
   };
@@ -55,7 +53,7 @@ inline RelaxationSplitting amplifying_by(double target, double length, bool at_s
     (amplification(z) > per_substep ? low : high) = z;
   }
   const double z = 0.5 * (low + high);
-  return {6.0 * (length / substeps) / z, substeps, at_step_ends};
+  return {6.0 * (length / substeps) / z, substeps};
 }
 
 } // namespace detail
@@ -64,7 +62,7 @@ inline RelaxationSplitting amplifying_by(double target, double length, bool at_s
 // 1 / (1 + x) over dt, for which the steady strain delta R / (1 - R) is delta / x. The energy
 // budget is still that of the paper's splitting.
 inline RelaxationSplitting matched_splitting(double relaxation_time, double dt) {
-  return detail::amplifying_by(1.0 / (1.0 + 6.0 * dt / relaxation_time), dt, false);
+  return detail::amplifying_by(1.0 / (1.0 + 6.0 * dt / relaxation_time), dt);
 }
 
 // Relaxation over dt / 2 at both ends of the step. The reversible part then pairs the elastic
@@ -79,7 +77,19 @@ inline std::optional<RelaxationSplitting> step_ends_splitting(double relaxation_
   if (!(x < 2.0)) {
     return std::nullopt;
   }
-  return detail::amplifying_by(std::sqrt((2.0 - x) / (2.0 + x)), 0.5 * dt, true);
+  return detail::amplifying_by(std::sqrt((2.0 - x) / (2.0 + x)), 0.5 * dt);
+}
+
+// One relaxation over dt between the halves of the distortion update (step.splitting =
+// "midpoint"): the kicks see s_end = R (s_start + delta / 2) + delta / 2, steady at delta (1 + R)
+// / (2 (1 - R)), which is delta / x, i.e. nu, for the same R = (2 - x) / (2 + x) over dt as the
+// two halves at the step's ends give. Needs x < 2 too (std::nullopt beyond).
+inline std::optional<RelaxationSplitting> midpoint_splitting(double relaxation_time, double dt) {
+  const double x = 6.0 * dt / relaxation_time;
+  if (!(x < 2.0)) {
+    return std::nullopt;
+  }
+  return detail::amplifying_by((2.0 - x) / (2.0 + x), dt);
 }
 
 template <int D>

@@ -41,6 +41,8 @@ public:
   void initialise_density_constants();
 
   static std::span<const Substep<Model>> palindrome();
+  // Viscosity and heat conduction, placed by step.splitting (strang: after the half drifts).
+  static std::span<const IrreversibleOperator<Model>> irreversible_operators();
 
   State<D, Raw>& state() { return state_; }
   const SimulationInfo& info() const { return info_; }

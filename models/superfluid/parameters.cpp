@@ -28,6 +28,7 @@ struct Keys : KeySet {
                                                "s0 of eqs. (8, 13); > 0", positive_or_why);
   const Key<double> gravity = KeySet::gravity("eq. (29), on v and v_s");
   const Key<double> gravity_reference_height = KeySet::gravity_reference_height();
+  const Choice<Splitting> splitting = KeySet::splitting("strang");
   const Key<double> viscosity =
       number("physics.viscosity", "Pa s", "0",
              "mu of the normal fluid (eq. 19, Monaghan's form B22, eta = h / 10); >= 0; "
@@ -285,6 +286,7 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.helium = read_helium(case_file);
   p.gravity = k.gravity.read(case_file);
   p.gravity_reference_height = k.gravity_reference_height.read(case_file);
+  p.splitting = k.splitting.read(case_file);
   p.viscosity = k.viscosity.read(case_file);
   p.heat_conductivity = k.heat_conductivity.read(case_file);
   p.dummy_no_slip = k.dummy_no_slip.read(case_file);

@@ -5,6 +5,7 @@
 #include "core/case_file.hpp"
 #include "core/case_keys.hpp"
 #include "core/geometry.hpp"
+#include "core/step_splitting.hpp"
 #include "fixedpoint/scale.hpp"
 #include "models/superfluid/helium.hpp"
 
@@ -60,10 +61,12 @@ struct Parameters {
   Helium helium;
   double gravity = 0.0;                  // g (m/s^2) along minus the last axis (eq. 29)
   double gravity_reference_height = 0.0; // height of zero gravitational energy (m)
-  double viscosity = 0.0;                // mu of the normal fluid (eq. 19), >= 0
-  double heat_conductivity = 0.0;        // beta (eq. 5), >= 0
-  bool dummy_no_slip = false;            // viscosity against the dummies (physics.dummy_slip)
-  bool absorbing_walls = false;          // physics.cooler = "absorbing"
+  // Where viscosity and heat conduction go (step.splitting, core/step_splitting.hpp).
+  Splitting splitting = Splitting::strang;
+  double viscosity = 0.0;         // mu of the normal fluid (eq. 19), >= 0
+  double heat_conductivity = 0.0; // beta (eq. 5), >= 0
+  bool dummy_no_slip = false;     // viscosity against the dummies (physics.dummy_slip)
+  bool absorbing_walls = false;   // physics.cooler = "absorbing"
   // [discretisation]
   double dr = 0.0;
   double support_radius = 0.0; // the kernel's support: Table I's h (the authors' code)

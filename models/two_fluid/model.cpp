@@ -32,13 +32,18 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
 template <int D, class Arith>
 std::span<const Substep<Model<D, Arith>>> Model<D, Arith>::palindrome() {
   static constexpr Substep<Model> sequence[] = {
-      {"dissipate", 0.5, &Model::dissipate, &Model::dissipation_acts},
       {"kick", 0.5, &Model::kick},
       {"drift", 1.0, &Model::drift},
       {"kick", 0.5, &Model::kick},
-      {"dissipate", 0.5, &Model::dissipate, &Model::dissipation_acts},
   };
   return sequence;
+}
+
+template <int D, class Arith>
+std::span<const IrreversibleOperator<Model<D, Arith>>> Model<D, Arith>::irreversible_operators() {
+  static constexpr IrreversibleOperator<Model> operators[] = {
+      {"dissipate", &Model::dissipate, &Model::dissipation_acts}};
+  return operators;
 }
 
 template <int D, class Arith>

@@ -3,8 +3,9 @@
 // conservative core (number density 36, Tait pressure in three forms, thermomechanical force 27,
 // spin term 40, gravity) integrated by velocity Verlet in momentum form, bitwise reversible in
 // fixed point: kick(dt/2) drift(dt) kick(dt/2). The irreversible part (viscosity 34/39, mutual
-// friction 29/35: dissipation_terms.hpp) is a dissipate(dt/2) sub-step at both ends of the
-// palindrome, a no-op where it is off; the energy it takes is counted (energy accounts).
+// friction 29/35: dissipation_terms.hpp) is an operator the core places by step.splitting (by
+// default half updates at both ends of the palindrome); the energy it takes is counted (energy
+// accounts).
 
 #include "core/carrier_field.hpp"
 #include "core/energy.hpp"
@@ -32,6 +33,7 @@ public:
   Model(Parameters<D> parameters, SimulationInfo info, State<D, Raw> state);
 
   static std::span<const Substep<Model>> palindrome();
+  static std::span<const IrreversibleOperator<Model>> irreversible_operators();
 
   State<D, Raw>& state() { return state_; }
   const SimulationInfo& info() const { return info_; }

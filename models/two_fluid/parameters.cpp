@@ -49,6 +49,7 @@ struct Keys : KeySet {
              "T0: every particle's temperature, kept (sec. IV.4); > 0", positive_or_why);
   const Key<double> gravity = KeySet::gravity();
   const Key<double> gravity_reference_height = KeySet::gravity_reference_height();
+  const Choice<Splitting> splitting = KeySet::splitting("strang");
   const Key<double> rotational_viscosity =
       number("physics.rotational_viscosity", "Pa s", "0",
              "eta_r of eq. (39): the spin term 2 eta_r curl omega (eq. 40), with the viscosity "
@@ -261,6 +262,7 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.temperature = k.temperature.read(case_file);
   p.gravity = k.gravity.read(case_file);
   p.gravity_reference_height = k.gravity_reference_height.read(case_file);
+  p.splitting = k.splitting.read(case_file);
   p.pressure_form = k.pressure_form.read(case_file);
   p.interpenetrating = k.interpenetrating.read(case_file);
 

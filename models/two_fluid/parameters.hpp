@@ -6,6 +6,7 @@
 #include "core/case_file.hpp"
 #include "core/case_keys.hpp"
 #include "core/geometry.hpp"
+#include "core/step_splitting.hpp"
 #include "fixedpoint/scale.hpp"
 #include "models/two_fluid/helium_ii.hpp"
 
@@ -79,6 +80,8 @@ struct Parameters {
   double temperature = 0.0;         // T0: every particle's temperature (sec. IV.4), K
   double gravity = 0.0;             // g along minus the last axis, m/s^2
   double gravity_reference_height = 0.0;
+  // Where viscosity, friction and contacts go (step.splitting, core/step_splitting.hpp).
+  Splitting splitting = Splitting::strang;
   PressureForm pressure_form = PressureForm::hu_adams;
   Thermomechanical thermomechanical;
   double rotational_viscosity = 0.0; // eta_r of eq. (39): the spin term 2 eta_r curl omega (40)

@@ -30,7 +30,7 @@ PYTHON = "/usr/bin/python3"
 PLOTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "plots")
 NAME = "expansion-nonadiabatic"
 SETTINGS = ["--set", "physics.viscosity=0.001", "--set", "physics.heat_conductivity=0.1",
-            "--set", "dissipation.splitting=midpoint", "--threads", "1"]
+            "--set", "step.splitting=midpoint", "--threads", "1"]
 
 
 def run(command, timeout=240):

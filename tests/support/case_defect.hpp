@@ -46,3 +46,13 @@ inline std::string case_defect_name(const ::testing::TestParamInfo<CaseDefect>& 
 }
 
 } // namespace revsph::testing
+
+// The tests Defects/<suite>.RunExitsWithOneLineAndWritesNothing/<name>, one for each CaseDefect in
+// the vector `defects`: each must be rejected (expect_case_defect_rejected).
+#define REVSPH_CASE_DEFECT_TESTS(suite, defects)                                                   \
+  class suite : public ::testing::TestWithParam<::revsph::testing::CaseDefect> {};                 \
+  TEST_P(suite, RunExitsWithOneLineAndWritesNothing) {                                             \
+    ::revsph::testing::expect_case_defect_rejected(GetParam());                                    \
+  }                                                                                                \
+  INSTANTIATE_TEST_SUITE_P(Defects, suite, ::testing::ValuesIn(defects),                           \
+                           ::revsph::testing::case_defect_name)

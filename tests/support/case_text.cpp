@@ -31,4 +31,12 @@ int line_at(const std::string& text, std::size_t offset) {
   return line;
 }
 
+std::string with_edit_line(std::string part, const std::string& text, const std::string& edit) {
+  const std::string marker = "@LINE@";
+  if (const std::size_t at = part.find(marker); at != std::string::npos) {
+    part.replace(at, marker.size(), std::to_string(line_at(text, text.find(edit) + edit.size())));
+  }
+  return part;
+}
+
 } // namespace revsph::testing

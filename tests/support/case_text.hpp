@@ -17,4 +17,8 @@ std::string replaced_once(std::string text, std::string_view from, std::string_v
 // 1-based line on which the character at `offset` lies.
 int line_at(const std::string& text, std::size_t offset);
 
+// `part` with "@LINE@" (its first occurrence) replaced by the line on which the last line of
+// `edit` lies in `text`: for messages that point into an edited case file.
+std::string with_edit_line(std::string part, const std::string& text, const std::string& edit);
+
 } // namespace revsph::testing

@@ -94,21 +94,24 @@ std::vector<T> to_points(const SlotLayout<D>& layout, const std::vector<T>& by_s
   layout.scatter(std::span<const T>(by_slot), by_point);
   return by_point;
 }
+// `convert` applied to each axis of `arrays`.
+template <int D, class Convert>
+CoordinateArrays<D> each_axis(const CoordinateArrays<D>& arrays, Convert convert) {
+  CoordinateArrays<D> converted;
+  for (int k = 0; k < D; ++k) {
+    converted[k] = convert(arrays[k]);
+  }
+  return converted;
+}
 template <int D>
 CoordinateArrays<D> to_slots(const SlotLayout<D>& layout, const CoordinateArrays<D>& by_point) {
-  CoordinateArrays<D> by_slot;
-  for (int k = 0; k < D; ++k) {
-    by_slot[k] = to_slots<D>(layout, by_point[k]);
-  }
-  return by_slot;
+  return each_axis<D>(by_point,
+                      [&](const std::vector<double>& axis) { return to_slots<D>(layout, axis); });
 }
 template <int D>
 CoordinateArrays<D> to_points(const SlotLayout<D>& layout, const CoordinateArrays<D>& by_slot) {
-  CoordinateArrays<D> by_point;
-  for (int k = 0; k < D; ++k) {
-    by_point[k] = to_points<D>(layout, by_slot[k]);
-  }
-  return by_point;
+  return each_axis<D>(by_slot,
+                      [&](const std::vector<double>& axis) { return to_points<D>(layout, axis); });
 }
 
 } // namespace revsph::testing

@@ -1,5 +1,5 @@
 #pragma once
-// The dimensions a typed test runs in: TYPED_TEST_SUITE(Suite, revsph::testing::Dimensions), then
+// The dimensions a typed test runs in: REVSPH_DIMENSION_TEST_SUITE(Suite) (below), then
 // TypeParam::value is 2 or 3.
 
 #include <gtest/gtest.h>
@@ -15,3 +15,10 @@ template <class Dimension>
 class DimensionTest : public ::testing::Test {};
 
 } // namespace revsph::testing
+
+// Declares the typed suite `suite` over Dimensions: REVSPH_DIMENSION_TEST_SUITE(Suite); then
+// TYPED_TEST(Suite, Name) { constexpr int D = TypeParam::value; ... }.
+#define REVSPH_DIMENSION_TEST_SUITE(suite)                                                         \
+  template <class Dimension>                                                                       \
+  class suite : public ::revsph::testing::DimensionTest<Dimension> {};                             \
+  TYPED_TEST_SUITE(suite, ::revsph::testing::Dimensions)

@@ -38,6 +38,33 @@ std::string hash_of(Simulation& simulation) {
   return state_hash(simulation.capture_state());
 }
 
+std::string hash_after(const std::string& name, std::int64_t steps,
+                       const std::vector<Override>& overrides) {
+  auto simulation = make_simulation(name, overrides);
+  simulation->advance(steps);
+  return hash_of(*simulation);
+}
+
+fixedpoint::int128 raw_total(Simulation& simulation, const std::string& set,
+                             const std::string& field) {
+  const StateSnapshot state = simulation.capture_state();
+  fixedpoint::int128 total = 0;
+  for (const std::int64_t raw : state.find(set, field)->bits) {
+    total += raw;
+  }
+  return total;
+}
+
+fixedpoint::int128 raw_total(const StateSnapshot& state, const std::string& set,
+                             const std::string& field, std::size_t component) {
+  const FieldSnapshot& f = *state.find(set, field);
+  fixedpoint::int128 total = 0;
+  for (std::size_t i = 0; i < f.count; ++i) {
+    total += f.bits[component * f.count + i];
+  }
+  return total;
+}
+
 double named_value(const std::vector<EnergyTerm>& terms, const std::string& name) {
   for (const EnergyTerm& term : terms) {
     if (term.name == name) {

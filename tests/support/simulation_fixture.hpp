@@ -3,7 +3,10 @@
 
 #include "core/model_registry.hpp"
 #include "core/simulation.hpp"
+#include "fixedpoint/exact_sum.hpp"
 
+#include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -25,6 +28,18 @@ std::unique_ptr<Simulation> make_simulation(const std::string& name,
 std::unique_ptr<Simulation> make_simulation_from_text(const std::string& text);
 
 std::string hash_of(Simulation& simulation);
+
+// The state hash of the built-in case `name` (with `overrides`) after `steps` steps.
+std::string hash_after(const std::string& name, std::int64_t steps,
+                       const std::vector<Override>& overrides = {});
+
+// The exact sum of the raw integers of the field `set`.`field` (all its components).
+fixedpoint::int128 raw_total(Simulation& simulation, const std::string& set,
+                             const std::string& field);
+
+// The same of one component of the field in `state`.
+fixedpoint::int128 raw_total(const StateSnapshot& state, const std::string& set,
+                             const std::string& field, std::size_t component);
 
 // The value of the energy term or diagnostic called `name`; NaN (which fails every comparison)
 // if there is none.

@@ -2,6 +2,7 @@
 // known case must keep its known hash (a golden regression value).
 
 #include "core/threads.hpp"
+#include "golden_hash.hpp"
 #include "simulation_fixture.hpp"
 
 #include <gtest/gtest.h>
@@ -11,18 +12,15 @@
 
 namespace {
 
-using revsph::testing::hash_of;
-using revsph::testing::make_simulation;
-
-std::string hash_after(const std::string& case_name, std::int64_t steps, int threads,
-                       const std::string& cell_size_factor) {
+// The hash after `steps` steps on `threads` threads with the given cell size factor.
+std::string hash_with(const std::string& case_name, std::int64_t steps, int threads,
+                      const std::string& cell_size_factor) {
   const int previous = revsph::thread_count();
   revsph::set_thread_count(threads);
-  auto simulation =
-      make_simulation(case_name, {{"discretisation.cell_size_factor", cell_size_factor}});
-  simulation->advance(steps);
+  const std::string hash = revsph::testing::hash_after(
+      case_name, steps, {{"discretisation.cell_size_factor", cell_size_factor}});
   revsph::set_thread_count(previous);
-  return hash_of(*simulation);
+  return hash;
 }
 
 struct DeterminismCase {
@@ -36,13 +34,13 @@ class Determinism : public ::testing::TestWithParam<DeterminismCase> {};
 // cell size (which orders the particles and their pairs) may change a single bit.
 TEST_P(Determinism, HashIsTheSameForThreadCountsAndCellSizes) {
   const DeterminismCase& c = GetParam();
-  const std::string reference = hash_after(c.name, c.steps, 1, "1.0");
+  const std::string reference = hash_with(c.name, c.steps, 1, "1.0");
   for (const int threads : {1, 2, 3}) {
     for (const char* factor : {"1.0", "1.7", "2.3"}) {
       if (threads == 1 && std::string(factor) == "1.0") {
         continue;
       }
-      EXPECT_EQ(hash_after(c.name, c.steps, threads, factor), reference)
+      EXPECT_EQ(hash_with(c.name, c.steps, threads, factor), reference)
           << threads << " threads, cell size factor " << factor;
     }
   }
@@ -74,36 +72,18 @@ INSTANTIATE_TEST_SUITE_P(
 // and paste the output below, saying in the commit message why it changed.
 // History: 2026-11-22 the wcsph state gained the (here empty) dummy particle set of App. A;
 // the fluid and wall integers after 500 steps were checked to be unchanged bit for bit.
-TEST(GoldenHash, DambreakSmallAfter500Steps) {
-  auto simulation = make_simulation("dambreak-small");
-  simulation->advance(500);
-  EXPECT_EQ(hash_of(*simulation),
-            "9ad61cad0f43907c05e3f8337981a113b12a2b8611aeddbfc23f20deb2ea5f02");
-}
-
-TEST(GoldenHash, Dambreak3DAfter100Steps) {
-  auto simulation = make_simulation("dambreak-3d-small");
-  simulation->advance(100);
-  EXPECT_EQ(hash_of(*simulation),
-            "76697a48b686a082e97d3d274252dbe17c8bd5950396f542df171ba3d81db928");
-}
+REVSPH_GOLDEN_HASH_TEST(GoldenHash, DambreakSmallAfter500Steps, "dambreak-small", 500,
+                        "9ad61cad0f43907c05e3f8337981a113b12a2b8611aeddbfc23f20deb2ea5f02");
+REVSPH_GOLDEN_HASH_TEST(GoldenHash, Dambreak3DAfter100Steps, "dambreak-3d-small", 100,
+                        "76697a48b686a082e97d3d274252dbe17c8bd5950396f542df171ba3d81db928");
 
 // SHTC's golden hashes. History: 2026-11-23 (issue 15) its pair sums moved from doubles summed in
 // pair-list order, whose bits changed with discretisation.cell_size_factor, to exact integer sums
 // (core/pair_sum.hpp, models/shtc/sum_scales.hpp): every SHTC state changed once, on purpose.
 // Regenerate with: build/bin/revsph hash beryllium-plate-small --steps 200 (and so on).
-TEST(GoldenHash, BerylliumPlateSmallAfter200Steps) {
-  auto simulation = make_simulation("beryllium-plate-small");
-  simulation->advance(200);
-  EXPECT_EQ(hash_of(*simulation),
-            "2915cf43dcd657c6afd8d570bf2acdfbe05c06e343e0d1d9e47904bc2b7d475f");
-}
-
-TEST(GoldenHash, CavityRe100SmallAfter100Steps) {
-  auto simulation = make_simulation("cavity-re100-small");
-  simulation->advance(100);
-  EXPECT_EQ(hash_of(*simulation),
-            "bf370b123cb3b1670d3e95d13f5aa12b9e5c34291dc240cf941d797762c61a2e");
-}
+REVSPH_GOLDEN_HASH_TEST(GoldenHash, BerylliumPlateSmallAfter200Steps, "beryllium-plate-small", 200,
+                        "2915cf43dcd657c6afd8d570bf2acdfbe05c06e343e0d1d9e47904bc2b7d475f");
+REVSPH_GOLDEN_HASH_TEST(GoldenHash, CavityRe100SmallAfter100Steps, "cavity-re100-small", 100,
+                        "bf370b123cb3b1670d3e95d13f5aa12b9e5c34291dc240cf941d797762c61a2e");
 
 } // namespace

@@ -3,32 +3,22 @@
 // exactly; with the relaxation of eq. (69) the energy is kept, the entropy rises every step and
 // ends where thermodynamics puts it once the body is at one temperature.
 
-#include "core/threads.hpp"
 #include "fixedpoint/exact_sum.hpp"
+#include "golden_hash.hpp"
+#include "reversibility_expectations.hpp"
 #include "simulation_fixture.hpp"
-#include "verify/reversibility.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numeric>
-#include <random>
 #include <string>
 #include <vector>
 
 namespace {
 
-using revsph::VerifyOptions;
 using revsph::testing::make_simulation;
-
-revsph::fixedpoint::int128 total_entropy(revsph::Simulation& simulation) {
-  const revsph::StateSnapshot state = simulation.capture_state();
-  revsph::fixedpoint::int128 total = 0;
-  for (const std::int64_t raw : state.find("gas", "entropy")->bits) {
-    total += raw;
-  }
-  return total;
-}
+using revsph::testing::raw_total;
 
 std::vector<double> gas_view(revsph::Simulation& simulation, const std::string& name) {
   std::vector<double> values;
@@ -42,30 +32,20 @@ std::vector<double> gas_view(revsph::Simulation& simulation, const std::string& 
 
 // tau infinite: 2000 steps each way on 1 and 2 threads, and every sub-step alone.
 TEST(EntropicHyperbolicHeat, ExchangeReturnsBitwiseOnOneAndTwoThreads) {
-  for (const int threads : {1, 2}) {
-    const int previous = revsph::thread_count();
-    revsph::set_thread_count(threads);
-    auto simulation = make_simulation("hyperbolic-small");
-    VerifyOptions options;
-    options.steps = 2000;
-    const auto report = revsph::verify_reversibility(*simulation, options);
-    EXPECT_TRUE(report.identical()) << threads << " threads: " << report.comparison.verdict();
-    EXPECT_NE(report.initial_hash, report.turning_point_hash) << "heat did move";
-    for (const auto& check : revsph::check_substeps(*simulation, simulation->info().dt)) {
-      EXPECT_TRUE(check.comparison.identical) << check.name << ": " << check.comparison.verdict();
-    }
-    revsph::set_thread_count(previous);
-  }
+  revsph::testing::expect_returns_on_one_and_two_threads(
+      "hyperbolic-small", 2000, {}, "", "heat did move", [](revsph::Simulation& simulation) {
+        revsph::testing::expect_substeps_undo_themselves(simulation);
+      });
 }
 
 // The S exchange is antisymmetric per pair in integers: the sum of the raw entropies does not
 // change by one unit while the waves run.
 TEST(EntropicHyperbolicHeat, ExchangeKeepsTheTotalEntropyExactly) {
   auto simulation = make_simulation("hyperbolic-small");
-  const revsph::fixedpoint::int128 initial = total_entropy(*simulation);
+  const revsph::fixedpoint::int128 initial = raw_total(*simulation, "gas", "entropy");
   const std::vector<double> t0 = gas_view(*simulation, "temperature");
   simulation->advance(300);
-  EXPECT_TRUE(total_entropy(*simulation) == initial);
+  EXPECT_TRUE(raw_total(*simulation, "gas", "entropy") == initial);
   const std::vector<double> t1 = gas_view(*simulation, "temperature");
   double largest_change = 0.0;
   for (std::size_t i = 0; i < t0.size(); ++i) {
@@ -96,11 +76,11 @@ TEST(EntropicHyperbolicHeat, RelaxationRaisesEntropyToEquilibriumAndKeepsEnergy)
   }();
   const double e0 = simulation->energy().total();
   const double s0 = revsph::testing::named_value(simulation->diagnostics(), "entropy");
-  revsph::fixedpoint::int128 previous = total_entropy(*simulation);
+  revsph::fixedpoint::int128 previous = raw_total(*simulation, "gas", "entropy");
   double largest_error = 0.0;
   for (int step = 0; step < 2000; ++step) {
     simulation->advance(1);
-    const revsph::fixedpoint::int128 now = total_entropy(*simulation);
+    const revsph::fixedpoint::int128 now = raw_total(*simulation, "gas", "entropy");
     ASSERT_TRUE(now >= previous) << "step " << step + 1;
     previous = now;
     if (step % 50 == 0) {
@@ -130,23 +110,9 @@ TEST(EntropicHyperbolicHeat, RelaxationRaisesEntropyToEquilibriumAndKeepsEnergy)
 TEST(EntropicHyperbolicHeat, EverySubstepUndoesItselfOnRandomStates) {
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
     auto simulation = make_simulation("hyperbolic-small");
-    revsph::StateSnapshot state = simulation->capture_state();
-    std::mt19937_64 engine(seed);
-    std::uniform_int_distribution<std::int64_t> flux(-(std::int64_t{1} << 46),
-                                                     std::int64_t{1} << 46);
-    std::uniform_int_distribution<std::int64_t> jitter(-(std::int64_t{1} << 44),
-                                                       std::int64_t{1} << 44);
-    for (std::int64_t& bits : state.find("gas", "entropy_flux")->bits) {
-      bits = flux(engine);
-    }
-    for (std::int64_t& bits : state.find("gas", "entropy")->bits) {
-      bits += jitter(engine);
-    }
-    simulation->restore_state(state);
-    for (const auto& check : revsph::check_substeps(*simulation, simulation->info().dt)) {
-      EXPECT_TRUE(check.comparison.identical)
-          << "seed " << seed << ", " << check.name << ": " << check.comparison.verdict();
-    }
+    revsph::testing::expect_substeps_undo_themselves_on_random_state(
+        *simulation, seed, {{"gas", "entropy_flux", 46, false}, {"gas", "entropy", 44}},
+        "seed " + std::to_string(seed) + ", ");
   }
 }
 
@@ -154,11 +120,7 @@ TEST(EntropicHyperbolicHeat, EverySubstepUndoesItselfOnRandomStates) {
 // build/bin/revsph hash hyperbolic-small --steps 300.
 // History: 2026-11-24 (8e55d26) the empty thermal set's temperature scale changed; every other
 // dataset of the state compared equal with 619ae8a's build; was 199dfd14….
-TEST(EntropicHyperbolicHeat, GoldenHashAfter300Steps) {
-  auto simulation = make_simulation("hyperbolic-small");
-  simulation->advance(300);
-  EXPECT_EQ(revsph::testing::hash_of(*simulation),
-            "b60e0ae192e9857bd85784d1fb10e3f2d0039d376aeebb0a716533b233ce2dd2");
-}
+REVSPH_GOLDEN_HASH_TEST(EntropicHyperbolicHeat, GoldenHashAfter300Steps, "hyperbolic-small", 300,
+                        "b60e0ae192e9857bd85784d1fb10e3f2d0039d376aeebb0a716533b233ce2dd2");
 
 } // namespace

@@ -2,21 +2,21 @@
 // bit, each sub-step is undone by itself, internal forces leave the total momentum unchanged in
 // integers, and the energy error falls as dt^2 (Verlet).
 
-#include "core/threads.hpp"
+#include "golden_hash.hpp"
+#include "reversibility_expectations.hpp"
 #include "simulation_fixture.hpp"
-#include "verify/reversibility.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <random>
 #include <string>
 
 namespace {
 
-using revsph::VerifyOptions;
+using revsph::Simulation;
+using revsph::testing::expect_returns_on_one_and_two_threads;
 using revsph::testing::make_simulation;
 using revsph::testing::named_value;
 
@@ -29,24 +29,13 @@ TEST(Entropic, ExpansionReturnsBitwiseOnOneAndTwoThreadsForEveryVolume) {
   };
   for (const Variant variant : {Variant{"mass", "10"}, Variant{"direct", "10"},
                                 Variant{"mixed", "10"}, Variant{"entropic", "30"}}) {
-    for (const int threads : {1, 2}) {
-      const int previous = revsph::thread_count();
-      revsph::set_thread_count(threads);
-      auto simulation =
-          make_simulation("expansion-small", {{"physics.particle_volume", variant.volume},
-                                              {"initial.pressure", variant.pressure}});
-      VerifyOptions options;
-      options.steps = 2000;
-      const auto report = revsph::verify_reversibility(*simulation, options);
-      EXPECT_TRUE(report.identical())
-          << variant.volume << ", " << threads << " threads: " << report.comparison.verdict();
-      EXPECT_NE(report.initial_hash, report.turning_point_hash) << "the gas did move";
-      for (const auto& check : revsph::check_substeps(*simulation, simulation->info().dt)) {
-        EXPECT_TRUE(check.comparison.identical)
-            << variant.volume << ", " << check.name << ": " << check.comparison.verdict();
-      }
-      revsph::set_thread_count(previous);
-    }
+    const std::string label = std::string(variant.volume) + ", ";
+    expect_returns_on_one_and_two_threads(
+        "expansion-small", 2000,
+        {{"physics.particle_volume", variant.volume}, {"initial.pressure", variant.pressure}},
+        label, "the gas did move", [&](Simulation& simulation) {
+          revsph::testing::expect_substeps_undo_themselves(simulation, label);
+        });
   }
 }
 
@@ -58,19 +47,12 @@ TEST(Entropic, ExpansionReturnsBitwiseOnOneAndTwoThreadsForEveryVolume) {
 // box, 2000 steps each way, on 1 and 2 threads; the same hash for two cell sizes; and the
 // volumes solve W V = 1 to the solver's tolerance.
 TEST(Entropic, ImplicitVolumeReturnsBitwiseAndSolvesItsSystem) {
-  for (const int threads : {1, 2}) {
-    const int previous = revsph::thread_count();
-    revsph::set_thread_count(threads);
-    auto simulation = make_simulation("box-small", {{"physics.particle_volume", "implicit"},
-                                                    {"discretisation.courant_number", "0.01"}});
-    VerifyOptions options;
-    options.steps = 2000;
-    const auto report = revsph::verify_reversibility(*simulation, options);
-    EXPECT_TRUE(report.identical()) << threads << " threads: " << report.comparison.verdict();
-    EXPECT_NE(report.initial_hash, report.turning_point_hash) << "the gas did move";
-    EXPECT_LT(named_value(simulation->diagnostics(), "implicit_volume_residual"), 1e-10);
-    revsph::set_thread_count(previous);
-  }
+  expect_returns_on_one_and_two_threads(
+      "box-small", 2000,
+      {{"physics.particle_volume", "implicit"}, {"discretisation.courant_number", "0.01"}}, "",
+      "the gas did move", [](Simulation& simulation) {
+        EXPECT_LT(named_value(simulation.diagnostics(), "implicit_volume_residual"), 1e-10);
+      });
   auto hash_with_cells = [](const char* factor) {
     auto simulation = make_simulation("box-small", {{"physics.particle_volume", "implicit"},
                                                     {"discretisation.courant_number", "0.01"},
@@ -87,35 +69,15 @@ TEST(Entropic, ImplicitVolumeReturnsBitwiseAndSolvesItsSystem) {
 // threads.
 TEST(Entropic, BoxWithDummyWallsReturnsBitwise) {
   for (const char* volume : {"mass", "mixed"}) {
-    for (const int threads : {1, 2}) {
-      const int previous = revsph::thread_count();
-      revsph::set_thread_count(threads);
-      auto simulation = make_simulation("box-small", {{"physics.particle_volume", volume}});
-      VerifyOptions options;
-      options.steps = 2000;
-      const auto report = revsph::verify_reversibility(*simulation, options);
-      EXPECT_TRUE(report.identical())
-          << volume << ", " << threads << " threads: " << report.comparison.verdict();
-      EXPECT_NE(report.initial_hash, report.turning_point_hash) << "the gas did move";
-      revsph::set_thread_count(previous);
-    }
+    expect_returns_on_one_and_two_threads("box-small", 2000, {{"physics.particle_volume", volume}},
+                                          std::string(volume) + ", ", "the gas did move");
   }
 }
 
 // The core's D = 1 path with the 1D Wendland kernel: the gas of tube-1d sloshing between
 // dummy-particle ends returns bit for bit after 2000 steps each way, on 1 and 2 threads.
 TEST(Entropic, OneDimensionalTubeReturnsBitwise) {
-  for (const int threads : {1, 2}) {
-    const int previous = revsph::thread_count();
-    revsph::set_thread_count(threads);
-    auto simulation = make_simulation("tube-1d");
-    VerifyOptions options;
-    options.steps = 2000;
-    const auto report = revsph::verify_reversibility(*simulation, options);
-    EXPECT_TRUE(report.identical()) << threads << " threads: " << report.comparison.verdict();
-    EXPECT_NE(report.initial_hash, report.turning_point_hash) << "the gas did move";
-    revsph::set_thread_count(previous);
-  }
+  expect_returns_on_one_and_two_threads("tube-1d", 2000, {}, "", "the gas did move");
 }
 
 // With equal masses the direct volume is the mass volume (V = 1 / sum W = m / sum m W, eqs. 23,
@@ -148,12 +110,8 @@ TEST(Entropic, DirectVolumeFollowsTheMassVolumeForEqualMasses) {
 // the build of faf3cbd to be unchanged bit for bit; was 313d6a6d…. 2026-11-24 (8e55d26) the
 // empty thermal set's temperature scale became 2^-51 (covering 1 K, not T0): every dataset of
 // the 400-step snapshot compared equal with 619ae8a's but that scale attribute; was 5193e147….
-TEST(Entropic, GoldenHashAfter400Steps) {
-  auto simulation = make_simulation("expansion-small");
-  simulation->advance(400);
-  EXPECT_EQ(revsph::testing::hash_of(*simulation),
-            "7fbf9c8825bc61066761b91e8ace29e540b40f14b5f30a6e9c175f4790dc4236");
-}
+REVSPH_GOLDEN_HASH_TEST(Entropic, GoldenHashAfter400Steps, "expansion-small", 400,
+                        "7fbf9c8825bc61066761b91e8ace29e540b40f14b5f30a6e9c175f4790dc4236");
 
 // Each sub-step (kick, drift) alone, then the time reversal, the same sub-step and the reversal
 // again returns every bit, on states far from the case's: random momenta up to about a quarter
@@ -161,23 +119,9 @@ TEST(Entropic, GoldenHashAfter400Steps) {
 TEST(Entropic, EverySubstepUndoesItselfOnRandomStates) {
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
     auto simulation = make_simulation("expansion-small");
-    revsph::StateSnapshot state = simulation->capture_state();
-    std::mt19937_64 engine(seed);
-    std::uniform_int_distribution<std::int64_t> momentum(-(std::int64_t{1} << 48),
-                                                         std::int64_t{1} << 48);
-    std::uniform_int_distribution<std::int64_t> jitter(-(std::int64_t{1} << 44),
-                                                       std::int64_t{1} << 44);
-    for (std::int64_t& bits : state.find("gas", "momentum")->bits) {
-      bits = momentum(engine);
-    }
-    for (std::int64_t& bits : state.find("gas", "position")->bits) {
-      bits += jitter(engine);
-    }
-    simulation->restore_state(state);
-    for (const auto& check : revsph::check_substeps(*simulation, simulation->info().dt)) {
-      EXPECT_TRUE(check.comparison.identical)
-          << "seed " << seed << ", " << check.name << ": " << check.comparison.verdict();
-    }
+    revsph::testing::expect_substeps_undo_themselves_on_random_state(
+        *simulation, seed, {{"gas", "momentum", 48, false}, {"gas", "position", 44}},
+        "seed " + std::to_string(seed) + ", ");
   }
 }
 

@@ -1,7 +1,7 @@
 // The central promise: forward N steps, time reversal, N steps, time reversal returns every raw
 // integer of the initial state. And the verifier that checks it can fail.
 
-#include "core/threads.hpp"
+#include "reversibility_expectations.hpp"
 #include "simulation_fixture.hpp"
 #include "verify/reversibility.hpp"
 
@@ -14,6 +14,7 @@ using revsph::StateSnapshot;
 using revsph::VerifyOptions;
 using revsph::VerifyPhase;
 using revsph::testing::make_simulation;
+using revsph::testing::reversal_of;
 
 // Changes one raw integer of one variable by one unit, through the public state interface.
 void nudge(Simulation& simulation, const std::string& set, const std::string& variable,
@@ -27,9 +28,7 @@ void nudge(Simulation& simulation, const std::string& set, const std::string& va
 
 TEST(Reversibility, DambreakSmallReturnsBitwiseAfter5000StepsEachWay) {
   auto simulation = make_simulation("dambreak-small");
-  VerifyOptions options;
-  options.steps = 5000;
-  const auto report = revsph::verify_reversibility(*simulation, options);
+  const auto report = reversal_of(*simulation, 5000);
   EXPECT_TRUE(report.identical()) << report.comparison.verdict();
   EXPECT_EQ(report.initial_hash, report.final_hash);
   EXPECT_NE(report.initial_hash, report.turning_point_hash) << "the fluid did move";
@@ -38,43 +37,26 @@ TEST(Reversibility, DambreakSmallReturnsBitwiseAfter5000StepsEachWay) {
 TEST(Reversibility, EverySubstepIsSelfInverseUnderTimeReversal) {
   auto simulation = make_simulation("dambreak-small");
   simulation->advance(300); // a state with motion and wall contact
-  for (const auto& check : revsph::check_substeps(*simulation, simulation->info().dt)) {
-    EXPECT_TRUE(check.comparison.identical) << check.name << ": " << check.comparison.verdict();
-  }
+  revsph::testing::expect_substeps_undo_themselves(*simulation);
 }
 
 TEST(Reversibility, Dambreak3DReturnsBitwise) {
   auto simulation = make_simulation("dambreak-3d-small");
-  VerifyOptions options;
-  options.steps = 400;
-  const auto report = revsph::verify_reversibility(*simulation, options);
+  const auto report = reversal_of(*simulation, 400);
   EXPECT_TRUE(report.identical()) << report.comparison.verdict();
 }
 
 // The 1D path (kernel, lattice, cell and pair lists): 2 000 steps each way on 1 and 2 threads,
 // and every sub-step self-inverse on its own.
 TEST(Reversibility, Column1DReturnsBitwiseOnOneAndTwoThreads) {
-  for (const int threads : {1, 2}) {
-    const int previous = revsph::thread_count();
-    revsph::set_thread_count(threads);
-    auto simulation = make_simulation("column-1d");
-    VerifyOptions options;
-    options.steps = 2000;
-    const auto report = revsph::verify_reversibility(*simulation, options);
-    EXPECT_TRUE(report.identical()) << threads << " threads: " << report.comparison.verdict();
-    EXPECT_NE(report.initial_hash, report.turning_point_hash) << "the column did move";
-    for (const auto& check : revsph::check_substeps(*simulation, simulation->info().dt)) {
-      EXPECT_TRUE(check.comparison.identical) << check.name << ": " << check.comparison.verdict();
-    }
-    revsph::set_thread_count(previous);
-  }
+  revsph::testing::expect_returns_on_one_and_two_threads(
+      "column-1d", 2000, {}, "", "the column did move",
+      [](Simulation& simulation) { revsph::testing::expect_substeps_undo_themselves(simulation); });
 }
 
 TEST(Reversibility, FloatingPointVariantDoesNotReturnAndReportsHowFar) {
   auto simulation = make_simulation("dambreak-small", {}, revsph::Arithmetic::floating);
-  VerifyOptions options;
-  options.steps = 500;
-  const auto report = revsph::verify_reversibility(*simulation, options);
+  const auto report = reversal_of(*simulation, 500);
   ASSERT_FALSE(report.identical());
   ASSERT_TRUE(report.comparison.first_difference.has_value());
   bool position_differs = false;
@@ -130,9 +112,7 @@ TEST(Verifier, NamesExactlyTheParticleChangedJustBeforeTheComparison) {
 
 TEST(Verifier, IdenticalReturnHasNoDistance) {
   auto simulation = make_simulation("dambreak-small");
-  VerifyOptions options;
-  options.steps = 20;
-  const auto report = revsph::verify_reversibility(*simulation, options);
+  const auto report = reversal_of(*simulation, 20);
   EXPECT_TRUE(report.identical());
   EXPECT_FALSE(report.distance.has_value());
 }

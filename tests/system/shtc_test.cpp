@@ -42,7 +42,7 @@ TEST(ShtcPlateSteps, EverySubstepIsSelfInverseUnderTimeReversal) {
   auto simulation = make_simulation("beryllium-plate-small");
   simulation->advance(300);
   const auto checks = revsph::check_substeps(*simulation, simulation->info().dt);
-  ASSERT_EQ(checks.size(), 4u); // relaxation (nothing for a solid), kick, drift, distortion
+  ASSERT_EQ(checks.size(), 3u); // kick, drift, distortion (a solid has no relaxation to place)
   for (const auto& check : checks) {
     EXPECT_TRUE(check.comparison.identical) << check.name << ": " << check.comparison.verdict();
   }
@@ -93,7 +93,7 @@ std::unique_ptr<revsph::Simulation> make_elastic_cavity(const std::string& no_sl
   using revsph::testing::replaced_once;
   std::string text = revsph::testing::builtin_case_text("cavity-re100-small");
   text = replaced_once(text, "kinematic_viscosity = 0.01", "");
-  text = replaced_once(text, "relaxation_splitting = \"matched\"", "");
+  text = replaced_once(text, "relaxation_rate = \"matched\"", "");
   text = replaced_once(text, "ramp_time = 1.0", "ramp_time = 0.05\nno_slip = \"" + no_slip + "\"");
   return revsph::testing::make_simulation_from_text(text);
 }
@@ -203,11 +203,12 @@ TEST_P(ShtcDrivenWalls, EnergyGrowsByTheWorkOfTheWalls) {
 }
 
 // Largest |E(t) - E(0)| over the largest energy term, the small plate made viscous (nu = 1, dt /
-// tau about 0.05) for 2.5e-6 s.
-double viscous_plate_budget(const char* splitting, double factor) {
+// tau about 0.05) for 2.5e-6 s, the relaxation placed by `splitting` at the `rate`.
+double viscous_plate_budget(const char* splitting, const char* rate, double factor) {
   auto simulation = make_simulation("beryllium-plate-small",
                                     {{"material.kinematic_viscosity", "1.0"},
-                                     {"material.relaxation_splitting", splitting},
+                                     {"step.splitting", splitting},
+                                     {"material.relaxation_rate", rate},
                                      {"discretisation.time_step_factor", std::to_string(factor)}});
   const auto steps = static_cast<int>(std::llround(2.5e-6 / simulation->info().dt));
   const double initial = simulation->energy().total();
@@ -229,10 +230,10 @@ TEST(ShtcRelaxationBudget, RelaxationAtTheStepEndsClosesTheBudgetToSecondOrder) 
   // the elastic energy the update adds: the budget closes to first order in dt. At the step's
   // ends the reversible part keeps its O(dt^2) energy error and the relaxation's removal is
   // counted exactly.
-  const double paper = viscous_plate_budget("\"paper\"", 0.05);
-  const double paper_fine = viscous_plate_budget("\"paper\"", 0.025);
-  const double ends = viscous_plate_budget("\"step_ends\"", 0.05);
-  const double ends_fine = viscous_plate_budget("\"step_ends\"", 0.025);
+  const double paper = viscous_plate_budget("\"after_centre\"", "\"paper\"", 0.05);
+  const double paper_fine = viscous_plate_budget("\"after_centre\"", "\"paper\"", 0.025);
+  const double ends = viscous_plate_budget("\"strang\"", "\"matched\"", 0.05);
+  const double ends_fine = viscous_plate_budget("\"strang\"", "\"matched\"", 0.025);
   std::printf("budget error: paper %.3e -> %.3e, step ends %.3e -> %.3e when dt halves\n", paper,
               paper_fine, ends, ends_fine);
   EXPECT_LT(paper / paper_fine, 2.5);
@@ -245,7 +246,7 @@ TEST(ShtcRelaxationBudget, VerifierFindsTheDrivenViscousCavityBudgetClosed) {
   // ramping up: energy enters through the lid and leaves as dissipation, and the budget
   // (verify/energy_budget.hpp, what `revsph verify` checks for a dissipative case) closes.
   auto simulation =
-      make_simulation("cavity-re100-small", {{"material.relaxation_splitting", "\"step_ends\""},
+      make_simulation("cavity-re100-small", {{"step.splitting", "\"strang\""},
                                              {"discretisation.time_step_factor", "0.0275"},
                                              {"walls.ramp_time", "0.05"}});
   EXPECT_FALSE(simulation->info().irreversible_terms.empty());

@@ -4,50 +4,81 @@
 // momentum and total entropy are kept in integers; golden hashes.
 
 #include "case_text.hpp"
-#include "core/threads.hpp"
+#include "golden_hash.hpp"
 #include "reversibility_expectations.hpp"
 #include "simulation_fixture.hpp"
-#include "verify/reversibility.hpp"
 
-#include <boost/multiprecision/cpp_int.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <random>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace {
 
-using revsph::VerifyOptions;
 using revsph::testing::hash_of;
 using revsph::testing::make_simulation;
 using revsph::testing::named_value;
+using revsph::testing::raw_total;
 
-TEST(Superfluid, RandomDropletReturnsBitwiseOnOneAndTwoThreads) {
-  revsph::testing::expect_returns_on_one_and_two_threads("droplet-small", 2000);
+// The index of the sub-step called "dissipate" (the number of sub-steps if there is none).
+std::size_t dissipate_index(revsph::Simulation& simulation) {
+  const std::vector<std::string> names = simulation.substep_names();
+  return static_cast<std::size_t>(std::find(names.begin(), names.end(), "dissipate") -
+                                  names.begin());
 }
 
-TEST(Superfluid, SecondSoundReturnsBitwiseOnOneAndTwoThreads) {
-  revsph::testing::expect_returns_on_one_and_two_threads("second-sound-small", 2000);
+// The states and energies around one dissipation sub-step of ten times the step (so that the heat
+// is large against rounding).
+struct Dissipation {
+  revsph::StateSnapshot before;
+  revsph::StateSnapshot after;
+  double energy_before = 0.0;
+  double energy_after = 0.0;
+  double kinetic_before = 0.0;
+  double kinetic_after = 0.0;
+
+  double moved() const { return std::abs(kinetic_after - kinetic_before); }
+  double energy_error() const { return std::abs(energy_after - energy_before); }
+  // Rounding: each particle's entropy increment is rounded up by less than one unit of its scale,
+  // worth m T < m * 2 K of energy each.
+  double rounding() const {
+    const revsph::FieldSnapshot& entropy = *after.find("fluid", "entropy");
+    return static_cast<double>(entropy.count) * after.find("fluid", "mass")->real(0, 0) * 2.0 *
+           entropy.info.scale.unit();
+  }
+};
+
+Dissipation dissipate_once(revsph::Simulation& simulation, std::size_t dissipate) {
+  Dissipation step;
+  step.before = simulation.capture_state();
+  step.energy_before = simulation.energy().total();
+  step.kinetic_before = named_value(simulation.energy().terms, "kinetic");
+  simulation.apply_substep(dissipate, 10.0 * simulation.info().dt);
+  step.after = simulation.capture_state();
+  step.energy_after = simulation.energy().total();
+  step.kinetic_after = named_value(simulation.energy().terms, "kinetic");
+  return step;
 }
 
-TEST(Superfluid, AbsorbingCoolerReturnsBitwiseOnOneAndTwoThreads) {
-  revsph::testing::expect_returns_on_one_and_two_threads("cooler-small", 2000);
-}
+REVSPH_REVERSAL_TEST(Superfluid, RandomDropletReturnsBitwiseOnOneAndTwoThreads, "droplet-small",
+                     2000);
 
-TEST(Superfluid, ThreeDimensionalDropletReturnsBitwise) {
-  revsph::testing::expect_returns_on_one_and_two_threads("droplet-3d-small", 500);
-}
+REVSPH_REVERSAL_TEST(Superfluid, SecondSoundReturnsBitwiseOnOneAndTwoThreads, "second-sound-small",
+                     2000);
+
+REVSPH_REVERSAL_TEST(Superfluid, AbsorbingCoolerReturnsBitwiseOnOneAndTwoThreads, "cooler-small",
+                     2000);
+
+REVSPH_REVERSAL_TEST(Superfluid, ThreeDimensionalDropletReturnsBitwise, "droplet-3d-small", 500);
 
 // The reversible core on the fountain's geometry (glass shells, cooler walls, gravity, a free
 // surface) at dr = d / 2: about 1 900 fluid and 2 600 wall and dummy particles.
-TEST(Superfluid, FountainReversibleCoreReturnsBitwiseOnOneAndTwoThreads) {
-  revsph::testing::expect_returns_on_one_and_two_threads("fountain-small", 2000);
-}
+REVSPH_REVERSAL_TEST(Superfluid, FountainReversibleCoreReturnsBitwiseOnOneAndTwoThreads,
+                     "fountain-small", 2000);
 
 // Each sub-step (drift, copy_one, copy_two) alone, forward then with -dt, on random states: the
 // droplet's random v, v_s, s with copy 2 jittered away from copy 1 (as the copies drift apart in
@@ -56,29 +87,16 @@ TEST(Superfluid, EverySubstepIsUndoneByItselfOnRandomStates) {
   for (const char* name : {"droplet-small", "droplet-3d-small", "cooler-small"}) {
     for (const std::uint64_t seed : {1u, 2u}) {
       auto simulation = make_simulation(name);
-      revsph::StateSnapshot state = simulation->capture_state();
-      std::mt19937_64 engine(seed);
-      std::uniform_int_distribution<std::int64_t> jitter(-(std::int64_t{1} << 40),
-                                                         std::int64_t{1} << 40);
-      for (const char* field : {"velocity_copy", "superflow_velocity_copy", "entropy_copy"}) {
-        for (std::int64_t& bits : state.find("fluid", field)->bits) {
-          bits += jitter(engine);
-        }
-      }
-      // The absorbing walls' own superflow velocities, differing between the copies.
-      for (const char* field : {"superflow_velocity", "superflow_velocity_copy"}) {
-        for (std::int64_t& bits : state.find("wall", field)->bits) {
-          bits += jitter(engine) * 1024;
-        }
-      }
-      for (std::int64_t& bits : state.find("fluid", "position")->bits) {
-        bits += jitter(engine) * 16;
-      }
-      simulation->restore_state(state);
-      for (const auto& check : revsph::check_substeps(*simulation, simulation->info().dt)) {
-        EXPECT_TRUE(check.comparison.identical) << name << ", seed " << seed << ", " << check.name
-                                                << ": " << check.comparison.verdict();
-      }
+      revsph::testing::expect_substeps_undo_themselves_on_random_state(
+          *simulation, seed,
+          {{"fluid", "velocity_copy", 40},
+           {"fluid", "superflow_velocity_copy", 40},
+           {"fluid", "entropy_copy", 40},
+           // The absorbing walls' own superflow velocities, differing between the copies.
+           {"wall", "superflow_velocity", 40, true, 1024},
+           {"wall", "superflow_velocity_copy", 40, true, 1024},
+           {"fluid", "position", 40, true, 16}},
+          std::string(name) + ", seed " + std::to_string(seed) + ", ");
     }
   }
 }
@@ -128,16 +146,12 @@ TEST(Superfluid, EachCopyKeepsMomentumAndEntropyInIntegers) {
   auto simulation = make_simulation("droplet-small");
   auto totals = [&] {
     const revsph::StateSnapshot state = simulation->capture_state();
-    std::vector<boost::multiprecision::int128_t> sums;
+    std::vector<revsph::fixedpoint::int128> sums;
     for (const char* field : {"velocity", "velocity_copy", "entropy", "entropy_copy"}) {
       const revsph::FieldSnapshot& f = *state.find("fluid", field);
       const std::size_t components = f.bits.size() / f.count;
       for (std::size_t k = 0; k < components; ++k) {
-        boost::multiprecision::int128_t sum = 0;
-        for (std::size_t i = 0; i < f.count; ++i) {
-          sum += f.bits[k * f.count + i];
-        }
-        sums.push_back(sum);
+        sums.push_back(raw_total(state, "fluid", field, k));
       }
     }
     return sums;
@@ -163,36 +177,18 @@ TEST(Superfluid, DissipationKeepsEnergyAndMomentumAndRaisesEntropy) {
   auto simulation = make_simulation(
       "droplet-small", {{"physics.viscosity", "1e-4"}, {"physics.heat_conductivity", "5"}});
   simulation->advance(300);
-  const std::vector<std::string> names = simulation->substep_names();
-  const std::size_t dissipate =
-      static_cast<std::size_t>(std::find(names.begin(), names.end(), "dissipate") - names.begin());
-  ASSERT_LT(dissipate, names.size());
+  const std::size_t dissipate = dissipate_index(*simulation);
+  ASSERT_LT(dissipate, simulation->substep_names().size());
   auto sum_of = [](const revsph::StateSnapshot& state, const char* field, std::size_t component) {
-    const revsph::FieldSnapshot& f = *state.find("fluid", field);
-    boost::multiprecision::int128_t sum = 0;
-    for (std::size_t i = 0; i < f.count; ++i) {
-      sum += f.bits[component * f.count + i];
-    }
-    return sum;
+    return raw_total(state, "fluid", field, component);
   };
-  const revsph::StateSnapshot before = simulation->capture_state();
-  const double energy_before = simulation->energy().total();
-  const double kinetic_before = named_value(simulation->energy().terms, "kinetic");
-  // Ten times the step, so that the heat is large against rounding.
-  simulation->apply_substep(dissipate, 10.0 * simulation->info().dt);
-  const revsph::StateSnapshot after = simulation->capture_state();
-  const double energy_after = simulation->energy().total();
-  const double kinetic_after = named_value(simulation->energy().terms, "kinetic");
-  EXPECT_NE(kinetic_before, kinetic_after) << "the viscosity acted";
-  // Rounding: each particle's entropy increment is rounded up by less than one unit of its scale,
-  // worth m T < m * 2 K of energy each.
-  const revsph::FieldSnapshot& entropy = *after.find("fluid", "entropy");
-  const double rounding = static_cast<double>(entropy.count) *
-                          after.find("fluid", "mass")->real(0, 0) * 2.0 * entropy.info.scale.unit();
-  const double moved = std::abs(kinetic_after - kinetic_before);
-  EXPECT_LT(std::abs(energy_after - energy_before), 1e-9 * moved + rounding)
-      << "energy " << energy_before << " -> " << energy_after << ", kinetic energy moved " << moved
-      << ", rounding bound " << rounding;
+  const Dissipation step = dissipate_once(*simulation, dissipate);
+  const revsph::StateSnapshot& before = step.before;
+  const revsph::StateSnapshot& after = step.after;
+  EXPECT_NE(step.kinetic_before, step.kinetic_after) << "the viscosity acted";
+  EXPECT_LT(step.energy_error(), 1e-9 * step.moved() + step.rounding())
+      << "energy " << step.energy_before << " -> " << step.energy_after << ", kinetic energy moved "
+      << step.moved() << ", rounding bound " << step.rounding();
   EXPECT_TRUE(sum_of(after, "entropy", 0) > sum_of(before, "entropy", 0));
   for (std::size_t k = 0; k < 2; ++k) {
     EXPECT_TRUE(sum_of(after, "velocity", k) == sum_of(before, "velocity", k));
@@ -228,10 +224,8 @@ TEST(Superfluid, NoSlipDummiesTakeMomentumAndKeepEnergy) {
   for (const std::string slip : {"free", "no_slip"}) {
     auto simulation = droplet_in_glass(slip);
     simulation->advance(20);
-    const std::vector<std::string> names = simulation->substep_names();
-    const std::size_t dissipate = static_cast<std::size_t>(
-        std::find(names.begin(), names.end(), "dissipate") - names.begin());
-    ASSERT_LT(dissipate, names.size());
+    const std::size_t dissipate = dissipate_index(*simulation);
+    ASSERT_LT(dissipate, simulation->substep_names().size());
     auto momentum = [&](const revsph::StateSnapshot& state) {
       const revsph::FieldSnapshot& v = *state.find("fluid", "velocity");
       const double m = state.find("fluid", "mass")->real(0, 0);
@@ -245,22 +239,11 @@ TEST(Superfluid, NoSlipDummiesTakeMomentumAndKeepEnergy) {
       }
       return std::pair{net_x, total};
     };
-    const revsph::StateSnapshot before = simulation->capture_state();
-    const double energy_before = simulation->energy().total();
-    const double kinetic_before = named_value(simulation->energy().terms, "kinetic");
-    simulation->apply_substep(dissipate, 10.0 * simulation->info().dt);
-    const revsph::StateSnapshot after = simulation->capture_state();
-    const double energy_after = simulation->energy().total();
-    const double moved =
-        std::abs(named_value(simulation->energy().terms, "kinetic") - kinetic_before);
-    const revsph::FieldSnapshot& entropy = *after.find("fluid", "entropy");
-    const double rounding = static_cast<double>(entropy.count) *
-                            after.find("fluid", "mass")->real(0, 0) * 2.0 *
-                            entropy.info.scale.unit();
-    EXPECT_GT(moved, 0.0) << slip;
-    EXPECT_LT(std::abs(energy_after - energy_before), 1e-9 * moved + rounding) << slip;
-    const auto [net_before, scale] = momentum(before);
-    const double net_after = momentum(after).first;
+    const Dissipation step = dissipate_once(*simulation, dissipate);
+    EXPECT_GT(step.moved(), 0.0) << slip;
+    EXPECT_LT(step.energy_error(), 1e-9 * step.moved() + step.rounding()) << slip;
+    const auto [net_before, scale] = momentum(step.before);
+    const double net_after = momentum(step.after).first;
     if (slip == "free") {
       EXPECT_NEAR(net_after, net_before, 1e-12 * scale) << "free slip keeps momentum";
     } else {
@@ -300,18 +283,9 @@ TEST(Superfluid, FountainSourcesKeepTheEnergyBudget) {
 // 2026-11-26 second-sound-small's kernel support went from 6 dr to 3 dr (Table I's h is the
 // support, as in the authors' code: issue 30, README "The kernel's width"), its dt unchanged;
 // then the wall set gained its superflow velocities (absorbing cooler; empty here): both changed.
-TEST(GoldenHash, SuperfluidDropletSmallAfter200Steps) {
-  auto simulation = make_simulation("droplet-small");
-  simulation->advance(200);
-  EXPECT_EQ(hash_of(*simulation),
-            "cd90a29661de3d8a8bc1c3b229823e2cb631cdae8bcacc0345d7a056591fb7d2");
-}
-
-TEST(GoldenHash, SuperfluidSecondSoundSmallAfter100Steps) {
-  auto simulation = make_simulation("second-sound-small");
-  simulation->advance(100);
-  EXPECT_EQ(hash_of(*simulation),
-            "c1f77268d80486e9f3bd8093565ecf6bc8928a9e177d6909f61a3601da8cc196");
-}
+REVSPH_GOLDEN_HASH_TEST(GoldenHash, SuperfluidDropletSmallAfter200Steps, "droplet-small", 200,
+                        "cd90a29661de3d8a8bc1c3b229823e2cb631cdae8bcacc0345d7a056591fb7d2");
+REVSPH_GOLDEN_HASH_TEST(GoldenHash, SuperfluidSecondSoundSmallAfter100Steps, "second-sound-small",
+                        100, "c1f77268d80486e9f3bd8093565ecf6bc8928a9e177d6909f61a3601da8cc196");
 
 } // namespace

@@ -4,33 +4,27 @@
 // forces keep the total momentum exactly in integers; the variational pressure keeps the energy
 // to second order in dt; golden hashes.
 
-#include "core/threads.hpp"
+#include "golden_hash.hpp"
 #include "reversibility_expectations.hpp"
 #include "simulation_fixture.hpp"
-#include "verify/reversibility.hpp"
 
-#include <boost/multiprecision/cpp_int.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
-#include <random>
 #include <string>
 #include <vector>
 
 namespace {
 
-using revsph::VerifyOptions;
 using revsph::testing::hash_of;
 using revsph::testing::make_simulation;
 
-TEST(TwoFluid, RayleighTaylorReturnsBitwiseOnOneAndTwoThreads) {
-  revsph::testing::expect_returns_on_one_and_two_threads("rayleigh-taylor-small", 2000);
-}
+REVSPH_REVERSAL_TEST(TwoFluid, RayleighTaylorReturnsBitwiseOnOneAndTwoThreads,
+                     "rayleigh-taylor-small", 2000);
 
-TEST(TwoFluid, RandomMixtureReturnsBitwiseOnOneAndTwoThreads) {
-  revsph::testing::expect_returns_on_one_and_two_threads("two-fluid-mixture-small", 2000);
-}
+REVSPH_REVERSAL_TEST(TwoFluid, RandomMixtureReturnsBitwiseOnOneAndTwoThreads,
+                     "two-fluid-mixture-small", 2000);
 
 // Each sub-step alone, forward then with -dt, on the mixture's random momenta with positions
 // jittered by about dr / 30, for each pressure form.
@@ -38,22 +32,12 @@ TEST(TwoFluid, EverySubstepIsUndoneByItselfOnRandomStates) {
   for (const char* form : {"\"hu_adams\"", "\"standard\"", "\"variational\""}) {
     for (const std::uint64_t seed : {1u, 2u}) {
       auto simulation = make_simulation("two-fluid-mixture-small", {{"pressure.form", form}});
-      revsph::StateSnapshot state = simulation->capture_state();
-      std::mt19937_64 engine(seed);
-      std::uniform_int_distribution<std::int64_t> jitter(-(std::int64_t{1} << 40),
-                                                         std::int64_t{1} << 40);
-      for (const char* set : {"superfluid", "normal"}) {
-        for (std::int64_t& bits : state.find(set, "position")->bits) {
-          bits += jitter(engine) * 16;
-        }
-      }
-      simulation->restore_state(state);
-      // dissipate (a no-op without viscosity and friction), kick, drift
-      EXPECT_EQ(revsph::check_substeps(*simulation, simulation->info().dt).size(), 3u);
-      for (const auto& check : revsph::check_substeps(*simulation, simulation->info().dt)) {
-        EXPECT_TRUE(check.comparison.identical) << form << ", seed " << seed << ", " << check.name
-                                                << ": " << check.comparison.verdict();
-      }
+      const std::size_t checked = revsph::testing::expect_substeps_undo_themselves_on_random_state(
+          *simulation, seed,
+          {{"superfluid", "position", 40, true, 16}, {"normal", "position", 40, true, 16}},
+          std::string(form) + ", seed " + std::to_string(seed) + ", ");
+      // kick, drift (without viscosity and friction no dissipation is placed in the step)
+      EXPECT_EQ(checked, 2u);
     }
   }
 }
@@ -83,16 +67,10 @@ TEST(TwoFluid, PairForcesKeepMomentumInIntegers) {
                                                   {"domain.max", "[4.0e-4, 4.0e-4]"}});
   auto totals = [&] {
     const revsph::StateSnapshot state = simulation->capture_state();
-    std::vector<boost::multiprecision::int128_t> sums;
-    for (int k = 0; k < 2; ++k) {
-      boost::multiprecision::int128_t sum = 0;
-      for (const char* set : {"superfluid", "normal"}) {
-        const revsph::FieldSnapshot& f = *state.find(set, "momentum");
-        for (std::size_t i = 0; i < f.count; ++i) {
-          sum += f.bits[k * f.count + i];
-        }
-      }
-      sums.push_back(sum);
+    std::vector<revsph::fixedpoint::int128> sums;
+    for (std::size_t k = 0; k < 2; ++k) {
+      sums.push_back(revsph::testing::raw_total(state, "superfluid", "momentum", k) +
+                     revsph::testing::raw_total(state, "normal", "momentum", k));
     }
     return sums;
   };
@@ -139,18 +117,10 @@ TEST(TwoFluid, DifferenceFormOfTheThermomechanicalForceVanishesForAUniformTemper
   EXPECT_EQ(hash_with("1.428e-3"), hash_with("0"));
 }
 
-TEST(GoldenHash, TwoFluidRayleighTaylorSmallAfter200Steps) {
-  auto simulation = make_simulation("rayleigh-taylor-small");
-  simulation->advance(200);
-  EXPECT_EQ(hash_of(*simulation),
-            "b04a7e3a7e4db5e326391d1b3bc3e241ca7baf4a5085111dabba54340c2ee588");
-}
-
-TEST(GoldenHash, TwoFluidMixtureSmallAfter200Steps) {
-  auto simulation = make_simulation("two-fluid-mixture-small");
-  simulation->advance(200);
-  EXPECT_EQ(hash_of(*simulation),
-            "cce7c272acc7daad49db29f4bdad56710a0eb1939f7d99a2ae43d942bc70a78a");
-}
+REVSPH_GOLDEN_HASH_TEST(GoldenHash, TwoFluidRayleighTaylorSmallAfter200Steps,
+                        "rayleigh-taylor-small", 200,
+                        "b04a7e3a7e4db5e326391d1b3bc3e241ca7baf4a5085111dabba54340c2ee588");
+REVSPH_GOLDEN_HASH_TEST(GoldenHash, TwoFluidMixtureSmallAfter200Steps, "two-fluid-mixture-small",
+                        200, "cce7c272acc7daad49db29f4bdad56710a0eb1939f7d99a2ae43d942bc70a78a");
 
 } // namespace

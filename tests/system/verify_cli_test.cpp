@@ -51,7 +51,7 @@ TEST(VerifyCli, IrreversibleCaseRunsTheReversalAndReportsDistanceBudgetAndEntrop
       {"verify", "cavity-re100-small", "--steps", "200", "--out", sandbox.out().string()});
   ASSERT_EQ(result.exit_status, 0) << result;
   EXPECT_EQ(result.err, "") << result;
-  EXPECT_TRUE(contains(result.out, "irreversible term: distortion: relaxation of the distortion"))
+  EXPECT_TRUE(contains(result.out, "irreversible term: relaxation: relaxation of the distortion"))
       << result;
   EXPECT_TRUE(contains(result.out, "backward 400/400 steps")) << "both halves ran: " << result;
 
@@ -63,7 +63,7 @@ TEST(VerifyCli, IrreversibleCaseRunsTheReversalAndReportsDistanceBudgetAndEntrop
   const std::string entropy = line_starting(result, "entropy of the material speeds");
   EXPECT_TRUE(contains(entropy, "start ") && contains(entropy, "turning point ")) << entropy;
   const std::string verdict = line_starting(result, "verdict: ");
-  EXPECT_EQ(verdict.rfind("verdict: not reversible by design: 1 irreversible term (distortion: "
+  EXPECT_EQ(verdict.rfind("verdict: not reversible by design: 1 irreversible term (relaxation: "
                           "relaxation of the distortion); returned to within ",
                           0),
             0u)

@@ -363,18 +363,6 @@ const std::vector<Defect>& defects() {
   return all;
 }
 
-std::string expected_reason_part(const std::string& part, const std::string& defective_text,
-                                 const Defect& defect) {
-  const std::string marker = "@LINE@";
-  const std::size_t at = part.find(marker);
-  if (at == std::string::npos) {
-    return part;
-  }
-  const std::size_t edit = defective_text.find(defect.to);
-  const int line = line_at(defective_text, edit + defect.to.size());
-  return part.substr(0, at) + std::to_string(line) + part.substr(at + marker.size());
-}
-
 class CaseDefectTest : public ::testing::TestWithParam<Defect> {};
 
 TEST_P(CaseDefectTest, RejectedWithFileKeyAndReason) {
@@ -385,7 +373,7 @@ TEST_P(CaseDefectTest, RejectedWithFileKeyAndReason) {
   EXPECT_EQ(error->file(), bad_file_name);
   EXPECT_EQ(error->key(), defect.key) << error->what();
   for (const std::string& part : defect.reason_parts) {
-    const std::string expected = expected_reason_part(part, text, defect);
+    const std::string expected = testing::with_edit_line(part, text, defect.to);
     EXPECT_NE(error->reason().find(expected), std::string::npos)
         << "reason \"" << error->reason() << "\" lacks \"" << expected << "\"";
   }

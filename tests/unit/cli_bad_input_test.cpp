@@ -34,28 +34,7 @@ std::string dambreak_small_text() {
   return revsph::testing::builtin_case_text("dambreak-small");
 }
 
-using revsph::testing::CommandResult;
-using revsph::testing::entries_of;
-using revsph::testing::error_prefix;
-using revsph::testing::expect_clean_rejection;
-using revsph::testing::read_file;
-using revsph::testing::replaced_once;
-using revsph::testing::Sandbox;
-
-// Line (1-based) on which the last line of `edit` lies in `text`, for messages that point into
-// the file.
-int line_of_edit(const std::string& text, const std::string& edit) {
-  return revsph::testing::line_at(text, text.find(edit) + edit.size());
-}
-
-// "@LINE@" in `part` stands for line_of_edit.
-std::string with_line(std::string part, const std::string& text, const std::string& edit) {
-  const std::string marker = "@LINE@";
-  if (const std::size_t at = part.find(marker); at != std::string::npos) {
-    part.replace(at, marker.size(), std::to_string(line_of_edit(text, edit)));
-  }
-  return part;
-}
+using namespace revsph::testing;
 
 // ---------------------------------------------------------------------------------------------
 // One edit of the built-in case per defect, run with `revsph run`.
@@ -226,7 +205,7 @@ TEST_P(CliDefectTest, RunExitsWithOneLineAndWritesNothing) {
 
   std::vector<std::string> parts;
   for (const std::string& part : defect.reason_parts) {
-    parts.push_back(with_line(part, text, defect.to));
+    parts.push_back(with_edit_line(part, text, defect.to));
   }
   // The file, then the key, exactly as CaseError formats them.
   parts.push_back(error_prefix + case_path.string() + ": " +
@@ -242,44 +221,42 @@ INSTANTIATE_TEST_SUITE_P(BadCaseFiles, CliDefectTest, ::testing::ValuesIn(defect
 // ---------------------------------------------------------------------------------------------
 // The other subcommands reject the same way.
 
-TEST(CliBadInputTest, VerifyRejectsBadCase) {
+// `revsph <command> CASE --steps 1`, CASE being dambreak-small with `from` replaced by `to`, is
+// rejected; the message holds CASE followed by `after_path`, then each of `parts` (in both,
+// "@LINE@" stands for the line of the edit).
+void expect_command_rejects_edit(const std::string& command, const std::string& from,
+                                 const std::string& to, const std::string& after_path,
+                                 const std::vector<std::string>& parts = {}) {
   Sandbox sandbox;
-  const fs::path case_path = sandbox.write_case(
-      replaced_once(dambreak_small_text(), "courant_number = 0.2", "dt = -1e-4"));
-  const CommandResult result = sandbox.revsph({"verify", case_path.string(), "--steps", "1"});
-  expect_clean_rejection(sandbox, result, {"case.toml"},
-                         {case_path.string() + ": discretisation.dt: ", "must be > 0"});
+  const std::string text = replaced_once(dambreak_small_text(), from, to);
+  const fs::path case_path = sandbox.write_case(text);
+  const CommandResult result = sandbox.revsph({command, case_path.string(), "--steps", "1"});
+  std::vector<std::string> expected = {with_edit_line(case_path.string() + after_path, text, to)};
+  for (const std::string& part : parts) {
+    expected.push_back(with_edit_line(part, text, to));
+  }
+  expect_clean_rejection(sandbox, result, {"case.toml"}, expected);
+}
+
+TEST(CliBadInputTest, VerifyRejectsBadCase) {
+  expect_command_rejects_edit("verify", "courant_number = 0.2", "dt = -1e-4",
+                              ": discretisation.dt: ", {"must be > 0"});
 }
 
 TEST(CliBadInputTest, VerifyRejectsSyntaxError) {
-  Sandbox sandbox;
-  const std::string text = replaced_once(dambreak_small_text(), "\ndr = 0.02", "\ndr = = 0.02");
-  const fs::path case_path = sandbox.write_case(text);
-  const CommandResult result = sandbox.revsph({"verify", case_path.string(), "--steps", "1"});
-  expect_clean_rejection(
-      sandbox, result, {"case.toml"},
-      {with_line(case_path.string() + ": syntax error at line @LINE@,", text, "\ndr = = 0.02")});
+  expect_command_rejects_edit("verify", "\ndr = 0.02", "\ndr = = 0.02",
+                              ": syntax error at line @LINE@,");
 }
 
 TEST(CliBadInputTest, HashRejectsBadCase) {
-  Sandbox sandbox;
-  const fs::path case_path = sandbox.write_case(
-      replaced_once(dambreak_small_text(), "sound_speed = 120.0", "sound_speed = \"120\""));
-  const CommandResult result = sandbox.revsph({"hash", case_path.string(), "--steps", "1"});
-  expect_clean_rejection(sandbox, result, {"case.toml"},
-                         {case_path.string() + ": physics.sound_speed: ", "got a string"});
+  expect_command_rejects_edit("hash", "sound_speed = 120.0", "sound_speed = \"120\"",
+                              ": physics.sound_speed: ", {"got a string"});
 }
 
 TEST(CliBadInputTest, HashRejectsUnknownKey) {
-  Sandbox sandbox;
-  const std::string edit = "dimension = 2\ndimensions = 2";
-  const std::string text = replaced_once(dambreak_small_text(), "dimension = 2", edit);
-  const fs::path case_path = sandbox.write_case(text);
-  const CommandResult result = sandbox.revsph({"hash", case_path.string(), "--steps", "1"});
-  expect_clean_rejection(
-      sandbox, result, {"case.toml"},
-      {case_path.string() + ": dimensions: ",
-       with_line("unknown key (line @LINE@; every key: revsph cases --keys wcsph)", text, edit)});
+  expect_command_rejects_edit(
+      "hash", "dimension = 2", "dimension = 2\ndimensions = 2",
+      ": dimensions: ", {"unknown key (line @LINE@; every key: revsph cases --keys wcsph)"});
 }
 
 TEST(CliBadInputTest, MissingCaseFileIsRejected) {

@@ -57,8 +57,8 @@ std::vector<Defect> defects() {
        "initial.temperature_perturbation", "gives a temperature <= 0 K"},
       {"unknown_buoyancy", "physics.buoyancy=boussinesque", "physics.buoyancy",
        "expected \"density\" or \"boussinesq\", got \"boussinesque\""},
-      {"unknown_splitting", "dissipation.splitting=leapfrog", "dissipation.splitting",
-       "expected \"strang\", \"midpoint\" or \"first_order\", got \"leapfrog\""},
+      {"unknown_splitting", "step.splitting=leapfrog", "step.splitting",
+       "expected \"strang\", \"midpoint\", \"after_centre\" or \"lie\", got \"leapfrog\""},
   };
 }
 

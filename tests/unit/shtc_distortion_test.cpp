@@ -161,9 +161,7 @@ void expect_close_to_cayley(std::uint64_t seed) {
   EXPECT_LT(coarse / fine, 4.5);
 }
 
-template <class Dimension>
-class ShtcDistortion : public revsph::testing::DimensionTest<Dimension> {};
-TYPED_TEST_SUITE(ShtcDistortion, revsph::testing::Dimensions);
+REVSPH_DIMENSION_TEST_SUITE(ShtcDistortion);
 
 TYPED_TEST(ShtcDistortion, EachUpdateIsUndoneBitForBit) {
   expect_single_steps_reverse_exactly<TypeParam::value>(10 + TypeParam::value);

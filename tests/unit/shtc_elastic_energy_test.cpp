@@ -50,9 +50,7 @@ Tensor<D> random_rotation(std::mt19937_64& rng) {
   return q;
 }
 
-template <class Dimension>
-class ShtcElasticEnergy : public revsph::testing::DimensionTest<Dimension> {};
-TYPED_TEST_SUITE(ShtcElasticEnergy, revsph::testing::Dimensions);
+REVSPH_DIMENSION_TEST_SUITE(ShtcElasticEnergy);
 
 TYPED_TEST(ShtcElasticEnergy, VanishesAtRest) {
   constexpr int D = TypeParam::value;

@@ -18,12 +18,8 @@
 #include <cmath>
 #include <random>
 
+namespace revsph::shtc {
 namespace {
-
-using revsph::CoordinateArrays;
-using revsph::shtc::ElasticMaterial;
-using revsph::shtc::GradientMatrix;
-using revsph::shtc::ShearEnergy;
 
 template <int D>
 struct Problem {
@@ -48,9 +44,7 @@ double internal_energy(const Problem<D>& p, const CoordinateArrays<D>& x,
   return energy;
 }
 
-template <class Dimension>
-class ShtcForce : public revsph::testing::DimensionTest<Dimension> {};
-TYPED_TEST_SUITE(ShtcForce, revsph::testing::Dimensions);
+REVSPH_DIMENSION_TEST_SUITE(ShtcForce);
 
 TYPED_TEST(ShtcForce, IsMinusTheEnergyRateAlongTheDistortionFlow) {
   constexpr int D = TypeParam::value;
@@ -118,3 +112,4 @@ TYPED_TEST(ShtcForce, IsMinusTheEnergyRateAlongTheDistortionFlow) {
 }
 
 } // namespace
+} // namespace revsph::shtc

@@ -65,9 +65,7 @@ void expect_same_bits(const CoordinateArrays<D>& expected, const CoordinateArray
   }
 }
 
-template <class Dimension>
-class ShtcMirroredWalls : public revsph::testing::DimensionTest<Dimension> {};
-TYPED_TEST_SUITE(ShtcMirroredWalls, revsph::testing::Dimensions);
+REVSPH_DIMENSION_TEST_SUITE(ShtcMirroredWalls);
 
 TYPED_TEST(ShtcMirroredWalls, ShowTwiceTheWallVelocityMinusAUniformFlow) {
   constexpr int D = TypeParam::value;

@@ -19,9 +19,7 @@ using revsph::shtc::ElasticMaterial;
 using revsph::shtc::ShearEnergy;
 using revsph::shtc::Tensor;
 
-template <class Dimension>
-class ShtcRelaxation : public revsph::testing::DimensionTest<Dimension> {};
-TYPED_TEST_SUITE(ShtcRelaxation, revsph::testing::Dimensions);
+REVSPH_DIMENSION_TEST_SUITE(ShtcRelaxation);
 
 TYPED_TEST(ShtcRelaxation, SmallStrainDecaysWithTheViscousRate) {
   constexpr int D = TypeParam::value;

@@ -37,9 +37,7 @@ std::vector<double> all_pairs_lambda(const revsph::WendlandQuintic<D>& kernel,
   return lambda;
 }
 
-template <class Dimension>
-class ShtcTensilePenalty : public revsph::testing::DimensionTest<Dimension> {};
-TYPED_TEST_SUITE(ShtcTensilePenalty, revsph::testing::Dimensions);
+REVSPH_DIMENSION_TEST_SUITE(ShtcTensilePenalty);
 
 TYPED_TEST(ShtcTensilePenalty, AccelerationIsMinusTheEnergyGradient) {
   constexpr int D = TypeParam::value;

@@ -77,9 +77,7 @@ void expect_same_bits(const std::vector<GradientMatrix<D>>& expected,
   }
 }
 
-template <class Dimension>
-class ShtcVelocityGradient : public revsph::testing::DimensionTest<Dimension> {};
-TYPED_TEST_SUITE(ShtcVelocityGradient, revsph::testing::Dimensions);
+REVSPH_DIMENSION_TEST_SUITE(ShtcVelocityGradient);
 
 TYPED_TEST(ShtcVelocityGradient, IsExactForALinearField) {
   constexpr int D = TypeParam::value;

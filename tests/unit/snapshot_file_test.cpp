@@ -73,6 +73,18 @@ SnapshotMetadata toy_metadata(const StateSnapshot& state) {
   return metadata;
 }
 
+// EXPECT_EQ(actual.*member, expected.*member) for each member in order ("member i" in the
+// message, i counted from 0).
+template <class T, class... Types>
+void expect_equal_members(const T& actual, const T& expected, Types T::*... members) {
+  int index = 0;
+  auto expect_equal = [&](auto member) {
+    EXPECT_EQ(actual.*member, expected.*member) << "member " << index;
+    ++index;
+  };
+  (expect_equal(members), ...);
+}
+
 TEST(SnapshotFile, RoundTripsStateAndMetadataExactly) {
   TempDirectory directory("revsph-snapshot-test");
   const StateSnapshot state = toy_state();
@@ -104,20 +116,10 @@ TEST(SnapshotFile, RoundTripsStateAndMetadataExactly) {
     EXPECT_EQ(b.bits, a.bits);
   }
   EXPECT_EQ(revsph::state_hash(read.state), metadata.state_hash);
-  const SnapshotMetadata& m = read.metadata;
-  EXPECT_EQ(m.model, metadata.model);
-  EXPECT_EQ(m.dimension, metadata.dimension);
-  EXPECT_EQ(m.arithmetic, metadata.arithmetic);
-  EXPECT_EQ(m.case_name, metadata.case_name);
-  EXPECT_EQ(m.case_source, metadata.case_source);
-  EXPECT_EQ(m.case_text, metadata.case_text);
-  EXPECT_EQ(m.overrides, metadata.overrides);
-  EXPECT_EQ(m.step, metadata.step);
-  EXPECT_EQ(m.time, metadata.time);
-  EXPECT_EQ(m.dt, metadata.dt);
-  EXPECT_EQ(m.reference_energy, metadata.reference_energy);
-  EXPECT_EQ(m.code_version, metadata.code_version);
-  EXPECT_EQ(m.build_flags, metadata.build_flags);
+  using M = SnapshotMetadata;
+  expect_equal_members(read.metadata, metadata, &M::model, &M::dimension, &M::arithmetic,
+                       &M::case_name, &M::case_source, &M::case_text, &M::overrides, &M::step,
+                       &M::time, &M::dt, &M::reference_energy, &M::code_version, &M::build_flags);
 }
 
 TEST(SnapshotFile, RefusesMissingForeignAndTruncatedFiles) {

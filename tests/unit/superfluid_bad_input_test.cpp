@@ -57,13 +57,6 @@ std::vector<Defect> defects() {
   };
 }
 
-class SuperfluidBadInput : public ::testing::TestWithParam<Defect> {};
-
-TEST_P(SuperfluidBadInput, RunExitsWithOneLineAndWritesNothing) {
-  revsph::testing::expect_case_defect_rejected(GetParam());
-}
-
-INSTANTIATE_TEST_SUITE_P(Defects, SuperfluidBadInput, ::testing::ValuesIn(defects()),
-                         revsph::testing::case_defect_name);
+REVSPH_CASE_DEFECT_TESTS(SuperfluidBadInput, defects());
 
 } // namespace

@@ -70,13 +70,6 @@ std::vector<Defect> defects() {
   };
 }
 
-class TwoFluidBadInput : public ::testing::TestWithParam<Defect> {};
-
-TEST_P(TwoFluidBadInput, RunExitsWithOneLineAndWritesNothing) {
-  revsph::testing::expect_case_defect_rejected(GetParam());
-}
-
-INSTANTIATE_TEST_SUITE_P(Defects, TwoFluidBadInput, ::testing::ValuesIn(defects()),
-                         revsph::testing::case_defect_name);
+REVSPH_CASE_DEFECT_TESTS(TwoFluidBadInput, defects());
 
 } // namespace

@@ -40,25 +40,14 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from entropic_expansion import (  # noqa: E402
-    read_gas,
-    slice_temperatures,
-    snapshot_attribute,
-    temperature_fields,
-)
+    draw_slice_temperatures, read_gas, snapshot_attribute, temperature_fields)
 from revsph_runs import (  # noqa: E402
-    REPO,
-    case_of,
-    figure_parser,
-    figure_script_main,
-    read_csv,
-    save_figure,
-    snapshots,
-    write_csv,
-)
+    REPO, case_of, figure_parser, figure_script_main, label_axes, read_csv, save_figure, snapshots,
+    write_csv)
 
 NAME = "expansion-nonadiabatic"
 RUNS = {NAME: ["run", "expansion", "--set", "physics.viscosity=0.001", "--set",
-               "physics.heat_conductivity=0.1", "--set", "dissipation.splitting=midpoint"]}
+               "physics.heat_conductivity=0.1", "--set", "step.splitting=midpoint"]}
 
 
 def segments(runs):
@@ -116,10 +105,7 @@ def make_figures(runs, out, report):
                 label=f"dt = {snapshot_attribute(paths[0], 'dt'):.3g} s, "
                 f"{case.get('dissipation', {}).get('splitting', 'strang')}")
     ax.axhline(6e-5, color="grey", ls="--", lw=1, label="paper: 0.006 % at t = 15")
-    ax.set_xlabel("t (s)")
-    ax.set_ylabel("|E - E0| / E0")
-    ax.legend(fontsize=7)
-    ax.grid(True, alpha=0.3)
+    label_axes(ax, "t (s)", "|E - E0| / E0")
 
     # Fig. 11 (right): the mass-mean temperature, and the entropy gained
     rows = []
@@ -136,26 +122,15 @@ def make_figures(runs, out, report):
     ax.axhline(t0, color="grey", ls="--", lw=1, label="T0")
     ax.axhline(t0 * 2.0 ** (1.0 - gamma), color="k", ls=":", lw=1,
                label="T0 2^-(gamma-1): adiabatic, uniform fill")
-    ax.set_xlabel("t (s)")
-    ax.set_ylabel("T (K)")
-    ax.legend(fontsize=7)
-    ax.grid(True, alpha=0.3)
+    label_axes(ax, "t (s)", "T (K)")
     ax = fig.add_subplot(3, 2, 5)
     ax.plot(diagnostics["time"], (diagnostics["entropy"] - entropy0) / joule, "-",
             label="sum S - sum S(0)")
     ax.axhline(1.0, color="k", ls=":", lw=1, label="M c_V (gamma - 1) ln 2")
-    ax.set_xlabel("t (s)")
-    ax.set_ylabel("entropy gained / M c_V (gamma-1) ln 2")
-    ax.legend(fontsize=7)
-    ax.grid(True, alpha=0.3)
-    ax = fig.add_subplot(3, 2, 6)
+    label_axes(ax, "t (s)", "entropy gained / M c_V (gamma-1) ln 2")
     last = read_gas(paths[-1])
-    ax.plot(*slice_temperatures(last), ".-", label=f"t = {last['time']:.2f} s")
-    ax.axhline(t0, color="grey", ls="--", lw=1, label="T0")
-    ax.set_xlabel("x (m)")
-    ax.set_ylabel("mass-mean T of the slice (K)")
-    ax.legend(fontsize=7)
-    ax.grid(True, alpha=0.3)
+    draw_slice_temperatures(fig.add_subplot(3, 2, 6), last, y=t0, color="grey", ls="--", lw=1,
+                            label="T0")
     save_figure(fig, out / "entropic_expansion_dissipative.png")
 
     end = rows[-1]
@@ -185,8 +160,7 @@ def make_figures(runs, out, report):
 
 
 def main():
-    parser = figure_parser(__doc__)
-    parser.set_defaults(runs="out/entropic", out=str(REPO / "docs" / "figures"))
+    parser = figure_parser(__doc__, "out/entropic", REPO / "docs" / "figures")
     args = parser.parse_args()
     return figure_script_main(args, RUNS, [([NAME], make_figures)],
                               "entropic_expansion_dissipative.md")
