@@ -96,6 +96,15 @@ void require_palindrome(std::span<const Substep<Model>> sequence) {
   }
 }
 
+// Velocity Verlet, kick(h/2) drift(h) kick(h/2): the palindrome of a model whose sub-steps are
+// its members kick and drift.
+template <class Model>
+std::span<const Substep<Model>> kick_drift_kick() {
+  static constexpr Substep<Model> sequence[] = {
+      {"kick", 0.5, &Model::kick}, {"drift", 1.0, &Model::drift}, {"kick", 0.5, &Model::kick}};
+  return sequence;
+}
+
 // One full step: the sub-steps in sequence.
 template <class Model>
 void apply_step(Model& model, std::span<const Substep<Model>> sequence, double dt) {

@@ -80,7 +80,7 @@ std::array<SummedQuantity, D + 1> dissipation_quantities(const Parameters<D>& pa
 
 template <int D>
 Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state)
-    : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
+    : Parts(std::move(parameters), std::move(info), std::move(state)),
       kernel_(parameters_.support_radius),
       layout_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
               carrier_sets(state_.gas, state_.dummy, state_.thermal)),

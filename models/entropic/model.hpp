@@ -10,15 +10,9 @@
 // §2, §4). Density, entropy density and volume are recomputed from the positions every step
 // (the paper's symplectic form, §2.4).
 
-#include "core/energy.hpp"
 #include "core/fixed_targets.hpp"
-#include "core/kernel_wendland.hpp"
-#include "core/pair_sum.hpp"
+#include "core/model_api.hpp"
 #include "core/pair_system.hpp"
-#include "core/particle_view.hpp"
-#include "core/simulation.hpp"
-#include "core/slot_layout.hpp"
-#include "core/step_composition.hpp"
 #include "models/entropic/parameters.hpp"
 #include "models/entropic/state.hpp"
 
@@ -41,7 +35,12 @@ double wall_temperature_sum_magnitude(double hottest_wall, double initial_gas_te
 }
 
 template <int D>
-class Model {
+class Model : public ModelParts<Parameters<D>, State<D>> {
+  using Parts = ModelParts<Parameters<D>, State<D>>;
+  using Parts::info_;
+  using Parts::parameters_;
+  using Parts::state_;
+
 public:
   // `state` holds positions, momenta, entropies, masses and wall positions with their scales.
   Model(Parameters<D> parameters, SimulationInfo info, State<D> state);
@@ -51,9 +50,6 @@ public:
   // step.splitting (core/step_splitting.hpp).
   static std::span<const IrreversibleOperator<Model>> irreversible_operators();
 
-  State<D>& state() { return state_; }
-  const SimulationInfo& info() const { return info_; }
-  const Parameters<D>& parameters() const { return parameters_; }
   // Kinetic, internal (sum_a V_a eps(rho_a, s_a), eq. 20), wall (eq. 7 of paper 1) and
   // gravitational energy.
   EnergyBudget energy();
@@ -131,9 +127,6 @@ private:
   // see the same positions).
   void update_impulses(double dt);
 
-  Parameters<D> parameters_;
-  SimulationInfo info_;
-  State<D> state_;
   WendlandQuintic<D> kernel_;
 
   bool constants_valid_ = false;

@@ -19,7 +19,7 @@ namespace {} // namespace
 template <int D>
 Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state,
                 std::optional<std::size_t> probe_particle)
-    : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
+    : Parts(std::move(parameters), std::move(info), std::move(state)),
       probe_particle_(probe_particle), kernel_(parameters_.support_radius()),
       sum_scales_(sum_scales(parameters_.density_scale, parameters_.material.rest_density,
                              parameters_.material.sound_speed, parameters_.penalty_speed,

@@ -16,14 +16,7 @@
 // velocity; state.hpp), together the carriers. The neighbour loops run over the carriers in cell order (slots); the state and every
 // output stay in canonical order.
 
-#include "core/carrier_field.hpp"
-#include "core/energy.hpp"
-#include "core/kernel_wendland.hpp"
-#include "core/pair_sum.hpp"
-#include "core/particle_view.hpp"
-#include "core/simulation.hpp"
-#include "core/slot_layout.hpp"
-#include "core/step_composition.hpp"
+#include "core/model_api.hpp"
 #include "models/shtc/kernel_sums.hpp"
 #include "models/shtc/parameters.hpp"
 #include "models/shtc/state.hpp"
@@ -38,7 +31,12 @@
 namespace revsph::shtc {
 
 template <int D>
-class Model {
+class Model : public ModelParts<Parameters<D>, State<D>> {
+  using Parts = ModelParts<Parameters<D>, State<D>>;
+  using Parts::info_;
+  using Parts::parameters_;
+  using Parts::state_;
+
 public:
   // `state` holds positions, velocities and distortions with their scales; masses and the
   // integration constants are set by initialise_constants, or come with a restored snapshot.
@@ -54,9 +52,6 @@ public:
   // The relaxation (eqs. 51-53), placed by step.splitting.
   static std::span<const IrreversibleOperator<Model>> irreversible_operators();
 
-  State<D>& state() { return state_; }
-  const SimulationInfo& info() const { return info_; }
-  const Parameters<D>& parameters() const { return parameters_; }
   // Kinetic, volumetric (eq. 29), shear (eq. 31 or 35) and penalty (eq. 39) energy, eq. (24);
   // with relaxation also the energy it has removed ("dissipated"), so that the total is conserved.
   EnergyBudget energy();
@@ -149,9 +144,6 @@ private:
   std::array<CarrierValues, 2> carrier_values();
   std::array<ParticleEnergies, 2> particle_energies(const std::array<CarrierValues, 2>& values);
 
-  Parameters<D> parameters_;
-  SimulationInfo info_;
-  State<D> state_;
   std::optional<std::size_t> probe_particle_;
   WendlandQuintic<D> kernel_;
 

@@ -39,7 +39,7 @@ std::array<SummedQuantity, D + 1> dissipation_quantities(const fixedpoint::Scale
 
 template <int D, class Arith>
 Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, Raw> state)
-    : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
+    : Parts(std::move(parameters), std::move(info), std::move(state)),
       kernel_(parameters_.support_radius),
       layout_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
               carrier_sets(state_.fluid, state_.dummy, state_.wall)),

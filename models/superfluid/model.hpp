@@ -12,14 +12,7 @@
 // (v, v_s, v', v_s') -> -(...). dissipate (viscosity, heat conduction: dissipation_terms.hpp)
 // is the irreversible part, a no-op without it; it gives both copies the same increments.
 
-#include "core/carrier_field.hpp"
-#include "core/energy.hpp"
-#include "core/kernel_wendland.hpp"
-#include "core/pair_sum.hpp"
-#include "core/particle_view.hpp"
-#include "core/simulation.hpp"
-#include "core/slot_layout.hpp"
-#include "core/step_composition.hpp"
+#include "core/model_api.hpp"
 #include "models/superfluid/pair_terms.hpp"
 #include "models/superfluid/parameters.hpp"
 #include "models/superfluid/state.hpp"
@@ -31,7 +24,12 @@
 namespace revsph::superfluid {
 
 template <int D, class Arith>
-class Model {
+class Model : public ModelParts<Parameters<D>, State<D, typename Arith::Raw>> {
+  using Parts = ModelParts<Parameters<D>, State<D, typename Arith::Raw>>;
+  using Parts::info_;
+  using Parts::parameters_;
+  using Parts::state_;
+
 public:
   using Raw = typename Arith::Raw;
 
@@ -44,9 +42,6 @@ public:
   // Viscosity and heat conduction, placed by step.splitting (strang: after the half drifts).
   static std::span<const IrreversibleOperator<Model>> irreversible_operators();
 
-  State<D, Raw>& state() { return state_; }
-  const SimulationInfo& info() const { return info_; }
-  const Parameters<D>& parameters() const { return parameters_; }
   // Eq. (15) summed over the fluid, on the mean of the two copies.
   EnergyBudget energy();
   void derived_views(const ViewSink& sink);
@@ -118,9 +113,6 @@ private:
   };
   MeanState mean_state() const;
 
-  Parameters<D> parameters_;
-  SimulationInfo info_;
-  State<D, Raw> state_;
   WendlandQuintic<D> kernel_;
 
   bool constants_valid_ = false;

@@ -12,7 +12,7 @@ namespace revsph::two_fluid {
 
 template <int D, class Arith>
 Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, Raw> state)
-    : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
+    : Parts(std::move(parameters), std::move(info), std::move(state)),
       kernel_(parameters_.support_radius),
       layout_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
               carrier_sets(state_.superfluid, state_.normal, state_.wall)),
@@ -31,12 +31,7 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
 
 template <int D, class Arith>
 std::span<const Substep<Model<D, Arith>>> Model<D, Arith>::palindrome() {
-  static constexpr Substep<Model> sequence[] = {
-      {"kick", 0.5, &Model::kick},
-      {"drift", 1.0, &Model::drift},
-      {"kick", 0.5, &Model::kick},
-  };
-  return sequence;
+  return kick_drift_kick<Model>();
 }
 
 template <int D, class Arith>

@@ -7,14 +7,7 @@
 // default half updates at both ends of the palindrome); the energy it takes is counted (energy
 // accounts).
 
-#include "core/carrier_field.hpp"
-#include "core/energy.hpp"
-#include "core/kernel_wendland.hpp"
-#include "core/pair_sum.hpp"
-#include "core/particle_view.hpp"
-#include "core/simulation.hpp"
-#include "core/slot_layout.hpp"
-#include "core/step_composition.hpp"
+#include "core/model_api.hpp"
 #include "models/two_fluid/dissipation_terms.hpp"
 #include "models/two_fluid/pair_terms.hpp"
 #include "models/two_fluid/parameters.hpp"
@@ -26,7 +19,12 @@
 namespace revsph::two_fluid {
 
 template <int D, class Arith>
-class Model {
+class Model : public ModelParts<Parameters<D>, State<D, typename Arith::Raw>> {
+  using Parts = ModelParts<Parameters<D>, State<D, typename Arith::Raw>>;
+  using Parts::info_;
+  using Parts::parameters_;
+  using Parts::state_;
+
 public:
   using Raw = typename Arith::Raw;
 
@@ -35,9 +33,6 @@ public:
   static std::span<const Substep<Model>> palindrome();
   static std::span<const IrreversibleOperator<Model>> irreversible_operators();
 
-  State<D, Raw>& state() { return state_; }
-  const SimulationInfo& info() const { return info_; }
-  const Parameters<D>& parameters() const { return parameters_; }
   // Kinetic sum |p|^2 / 2m, internal sum m e(rho) over every particle (walls included: their
   // density moves with the fluid), gravitational sum m g (y - y_ref); then the accounts, so that
   // the total stays constant: + dissipated, - the walls' work, - the work of the
@@ -153,9 +148,6 @@ private:
     return work;
   }
 
-  Parameters<D> parameters_;
-  SimulationInfo info_;
-  State<D, Raw> state_;
   WendlandQuintic<D> kernel_;
   SlotLayout<D> layout_;
 

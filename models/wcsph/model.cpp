@@ -12,7 +12,7 @@ namespace revsph::wcsph {
 
 template <int D, class Arith>
 Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, Raw> state)
-    : parameters_(std::move(parameters)), info_(std::move(info)), state_(std::move(state)),
+    : Parts(std::move(parameters), std::move(info), std::move(state)),
       kernel_(parameters_.support_radius),
       layout_(parameters_.domain, parameters_.support_radius * parameters_.cell_size_factor,
               carrier_sets(state_.fluid, state_.dummy)),
@@ -51,12 +51,7 @@ void Model<D, Arith>::initialise_density_constants(std::span<const double> targe
 
 template <int D, class Arith>
 std::span<const Substep<Model<D, Arith>>> Model<D, Arith>::palindrome() {
-  static constexpr Substep<Model> sequence[] = {
-      {"kick", 0.5, &Model::kick},
-      {"drift", 1.0, &Model::drift},
-      {"kick", 0.5, &Model::kick},
-  };
-  return sequence;
+  return kick_drift_kick<Model>();
 }
 
 template <int D, class Arith>

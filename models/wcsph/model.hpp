@@ -5,15 +5,8 @@
 // conservative wall eq. 7, dummy-particle walls and the anti-clump force of App. A). The active
 // Shepard filter of App. A is the one irreversible option (a step hook, step_hooks()).
 
-#include "core/carrier_field.hpp"
-#include "core/energy.hpp"
 #include "core/fixed_targets.hpp"
-#include "core/kernel_wendland.hpp"
-#include "core/pair_sum.hpp"
-#include "core/particle_view.hpp"
-#include "core/simulation.hpp"
-#include "core/slot_layout.hpp"
-#include "core/step_composition.hpp"
+#include "core/model_api.hpp"
 #include "models/wcsph/parameters.hpp"
 #include "models/wcsph/state.hpp"
 
@@ -26,7 +19,12 @@
 namespace revsph::wcsph {
 
 template <int D, class Arith>
-class Model {
+class Model : public ModelParts<Parameters<D>, State<D, typename Arith::Raw>> {
+  using Parts = ModelParts<Parameters<D>, State<D, typename Arith::Raw>>;
+  using Parts::info_;
+  using Parts::parameters_;
+  using Parts::state_;
+
 public:
   using Raw = typename Arith::Raw;
 
@@ -41,9 +39,6 @@ public:
 
   static std::span<const Substep<Model>> palindrome();
 
-  State<D, Raw>& state() { return state_; }
-  const SimulationInfo& info() const { return info_; }
-  const Parameters<D>& parameters() const { return parameters_; }
   EnergyBudget energy();
   // Density, pressure, acceleration, each energy term per fluid particle (and the filtered
   // velocity with a Shepard filter); density and pressure of the dummy particles.
@@ -96,9 +91,6 @@ private:
   std::array<std::vector<double>, D> real_velocity() const;
   std::array<std::vector<double>, D> filtered_velocity();
 
-  Parameters<D> parameters_;
-  SimulationInfo info_;
-  State<D, Raw> state_;
   WendlandQuintic<D> kernel_;
   std::optional<WendlandQuintic<D>> anti_clump_kernel_;
 

@@ -8,10 +8,7 @@
 // e = K rho^(gamma - 1) / (gamma - 1). Everything else (snapshots, hashes, the time reversal, the
 // verifier) comes from the core. tests/system/minimal_model_test.cpp builds and reverses it.
 
-#include "core/carrier_field.hpp"
-#include "core/kernel_wendland.hpp"
-#include "core/pair_sum.hpp"
-#include "core/simulation.hpp"
+#include "core/model_api.hpp"
 #include "core/summation_density.hpp"
 #include "core/units.hpp"
 #include "core/verlet.hpp"
@@ -78,28 +75,25 @@ struct Settings {
 };
 
 template <int D>
-class Model {
+class Model : public ModelParts<Settings, State<D>> {
+  using Parts = ModelParts<Settings, State<D>>;
+  using Parts::parameters_;
+  using Parts::state_;
+
 public:
   Model(const Box<D>& domain, Settings settings, SimulationInfo info, State<D> state)
-      : settings_(settings), info_(std::move(info)), state_(std::move(state)),
-        kernel_(settings.support_radius),
+      : Parts(settings, std::move(info), std::move(state)), kernel_(settings.support_radius),
         layout_(domain, settings.support_radius, carrier_sets(state_.gas)),
         density_sums_(SummedQuantity{"density", settings.density_scale}),
         force_sums_(components_of<D>("acceleration", settings.acceleration_scale)) {}
 
-  static std::span<const Substep<Model>> palindrome() {
-    static constexpr Substep<Model> steps[] = {
-        {"kick", 0.5, &Model::kick}, {"drift", 1.0, &Model::drift}, {"kick", 0.5, &Model::kick}};
-    return steps;
-  }
-  State<D>& state() { return state_; }
-  const SimulationInfo& info() const { return info_; }
+  static std::span<const Substep<Model>> palindrome() { return kick_drift_kick<Model>(); }
   void invalidate_derived() { forces_valid_ = false; }
 
   EnergyBudget energy() {
     update_forces();
     double kinetic = 0.0, internal = 0.0, trap = 0.0;
-    const double omega_squared = settings_.trap_frequency * settings_.trap_frequency;
+    const double omega_squared = parameters_.trap_frequency * parameters_.trap_frequency;
     const auto slots = layout_.slots_of(state_.gas);
     for (std::size_t i = 0; i < slots.size(); ++i) {
       const double m = mass_[slots[i]];
@@ -110,8 +104,8 @@ public:
         trap += 0.5 * m * omega_squared * x * x;
       }
       const double rho = density_sums_.value(0, slots[i]);
-      internal +=
-          m * settings_.stiffness * std::pow(rho, settings_.gamma - 1.0) / (settings_.gamma - 1.0);
+      internal += m * parameters_.stiffness * std::pow(rho, parameters_.gamma - 1.0) /
+                  (parameters_.gamma - 1.0);
     }
     return EnergyBudget{{{"kinetic", kinetic}, {"internal", internal}, {"trap", trap}}};
   }
@@ -136,7 +130,7 @@ private:
     }
     const CarrierField<FixedArithmetic> mass{&state_.gas.mass};
     const CarrierField<FixedArithmetic> constant{&state_.gas.density_constant};
-    layout_.build(CarrierField<FixedArithmetic>{&state_.gas.position}, settings_.support_radius,
+    layout_.build(CarrierField<FixedArithmetic>{&state_.gas.position}, parameters_.support_radius,
                   Gathered{[&](std::size_t c) { return mass.real(0, c); }, &mass_},
                   Gathered{[&](std::size_t c) { return constant.raw(0, c); }, &constant_});
     pressure_over_rho_sq_.resize(layout_.slot_count());
@@ -144,15 +138,18 @@ private:
         layout_, SummationDensityTerm<D, FixedArithmetic>{kernel_, mass_, constant_}, density_sums_,
         {}, [&](std::uint32_t s) {
           const double rho = density_sums_.value(0, s);
-          pressure_over_rho_sq_[s] = settings_.stiffness * std::pow(rho, settings_.gamma - 2.0);
+          pressure_over_rho_sq_[s] = parameters_.stiffness * std::pow(rho, parameters_.gamma - 2.0);
         });
-    const double omega_squared = settings_.trap_frequency * settings_.trap_frequency;
+    const double omega_squared = parameters_.trap_frequency * parameters_.trap_frequency;
     sum_pairs<FixedArithmetic>(
         layout_,
         PressureForce<D>{kernel_, mass_, pressure_over_rho_sq_, layout_.position(), omega_squared},
         force_sums_);
     forces_valid_ = true;
   }
+
+public:
+  // The sub-steps (public: core's kick_drift_kick names them).
   // v += dt a(x): exact in integers, and undone bit for bit after the time reversal.
   void kick(double dt) {
     update_forces();
@@ -169,9 +166,7 @@ private:
     forces_valid_ = false;
   }
 
-  Settings settings_;
-  SimulationInfo info_;
-  State<D> state_;
+private:
   WendlandQuintic<D> kernel_;
   SlotLayout<D> layout_;
   bool forces_valid_ = false;
