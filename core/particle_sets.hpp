@@ -24,6 +24,8 @@
 
 #include <concepts>
 #include <cstddef>
+#include <initializer_list>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -108,7 +110,8 @@ void require_complete(State& state) {
                                " belongs to no particle set (declare_state was not called)");
       }
       if (!field.has_scale()) {
-        throw std::logic_error("state field " + what + " has no fixed-point scale");
+        throw std::logic_error("state field " + what + " (stored as " + field.info().quantity() +
+                               ") has no fixed-point scale");
       }
       if (field.count() != count) {
         throw std::logic_error("state field " + what + " holds " + std::to_string(field.count()) +
@@ -116,6 +119,36 @@ void require_complete(State& state) {
       }
     });
   });
+}
+
+// The fixed-point scale of each quantity a model stores ("position", "velocity", "mass", ...),
+// chosen once at setup: set_scales gives every field the scale of its quantity
+// (VariableInfo::quantity), so a scale is stated once whatever the number of sets and copies.
+struct QuantityScale {
+  std::string quantity;
+  fixedpoint::Scale scale;
+};
+
+// Fields whose quantity `scales` does not list are left for the setup to scale later (shtc's
+// masses follow from the kernel sums); require_complete names any left without a scale.
+template <class State>
+void set_scales(State& state, std::span<const QuantityScale> scales) {
+  for_each_field(state, [&](auto& field) {
+    if (field.has_scale()) {
+      return;
+    }
+    const std::string& quantity = field.info().quantity();
+    for (const QuantityScale& q : scales) {
+      if (q.quantity == quantity) {
+        field.set_scale(q.scale);
+        return;
+      }
+    }
+  });
+}
+template <class State>
+void set_scales(State& state, std::initializer_list<QuantityScale> scales) {
+  set_scales(state, std::span<const QuantityScale>(scales.begin(), scales.size()));
 }
 
 struct SetSize {

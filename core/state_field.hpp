@@ -22,8 +22,10 @@ namespace revsph {
 enum class Parity { even, odd };
 
 // Declared with designated initialisers: {.name = "velocity", .unit = "m/s", .parity =
-// Parity::odd, .components = D}. The set's name is stamped by declare_state, the scale by the
-// setup (set_scale); a field without one is an error before the first step (require_complete).
+// Parity::odd, .components = D}. The set's name is stamped by declare_state; the scale is the
+// setup's scale of the field's quantity (set_scales, core/particle_sets.hpp): the quantity is the
+// field's name unless it names another (.scaled_as = "velocity" for a copy of a velocity). A field
+// without a scale is an error before the first step (require_complete).
 struct VariableInfo {
   std::string particle_set; // "fluid", "wall", … (a model may have several species)
   std::string name;         // "velocity"
@@ -31,7 +33,10 @@ struct VariableInfo {
   Parity parity = Parity::even;
   int components = 1; // 1 scalar, D vector, D*D matrix
   fixedpoint::Scale scale;
-  bool evolved = true; // false: fixed at setup (masses, wall positions, integration constants)
+  bool evolved = true;   // false: fixed at setup (masses, wall positions, integration constants)
+  std::string scaled_as; // the quantity whose scale it is stored in; empty: its own name
+
+  const std::string& quantity() const { return scaled_as.empty() ? name : scaled_as; }
 };
 
 // Values of one variable for all particles of its set, component-major: component c of particle i

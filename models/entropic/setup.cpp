@@ -213,12 +213,16 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   }
 
   State<D> state;
-  state.gas.position.set_scale(parameters.position_scale);
-  state.gas.momentum.set_scale(parameters.momentum_scale);
-  state.gas.entropy.set_scale(parameters.entropy_scale);
-  state.gas.mass.set_scale(fixedpoint::Scale::covering(largest_mass, mass_fraction_bits));
-  state.gas.entropy_flux.set_scale(parameters.entropy_flux_scale);
-  state.wall.position.set_scale(parameters.position_scale);
+  const double hottest_wall =
+      thermal_temperatures.empty()
+          ? 1.0
+          : *std::max_element(thermal_temperatures.begin(), thermal_temperatures.end());
+  set_scales(state, {{"position", parameters.position_scale},
+                     {"momentum", parameters.momentum_scale},
+                     {"entropy", parameters.entropy_scale},
+                     {"mass", fixedpoint::Scale::covering(largest_mass, mass_fraction_bits)},
+                     {"entropy_flux", parameters.entropy_flux_scale},
+                     {"temperature", fixedpoint::Scale::covering(hottest_wall, 52)}});
   fill_vector_field<FixedArithmetic, D>(case_file, "particles", gas_positions, state.gas.position);
   state.gas.momentum.resize(gas_positions.size());     // at rest
   state.gas.entropy_flux.resize(gas_positions.size()); // w = 0
@@ -227,22 +231,11 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   fill_scalar_field<FixedArithmetic>(case_file, "initial.density", gas_masses, state.gas.mass);
   fill_vector_field<FixedArithmetic, D>(case_file, "particles", wall_positions,
                                         state.wall.position);
-  state.dummy.position.set_scale(parameters.position_scale);
-  state.dummy.entropy.set_scale(parameters.entropy_scale);
-  state.dummy.mass.set_scale(state.gas.mass.info().scale);
   fill_vector_field<FixedArithmetic, D>(case_file, "particles", dummy_positions,
                                         state.dummy.position);
   fill_scalar_field<FixedArithmetic>(case_file, "fixed_point.entropy_exponent", dummy_entropies,
                                      state.dummy.entropy);
   fill_scalar_field<FixedArithmetic>(case_file, "initial.density", dummy_masses, state.dummy.mass);
-  state.thermal.position.set_scale(parameters.position_scale);
-  state.thermal.entropy.set_scale(parameters.entropy_scale);
-  state.thermal.mass.set_scale(state.gas.mass.info().scale);
-  state.thermal.temperature.set_scale(fixedpoint::Scale::covering(
-      thermal_temperatures.empty()
-          ? 1.0
-          : *std::max_element(thermal_temperatures.begin(), thermal_temperatures.end()),
-      52));
   fill_vector_field<FixedArithmetic, D>(case_file, "particles", thermal_positions,
                                         state.thermal.position);
   fill_scalar_field<FixedArithmetic>(case_file, "fixed_point.entropy_exponent", thermal_entropies,

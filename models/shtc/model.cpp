@@ -119,8 +119,6 @@ void Model<D>::initialise_constants() {
   lambda_constant_.assign(n, 0);
   const auto carried = carried_by_set();
   for (CarrierFields<D>* set : carried) {
-    set->density_constant.set_scale(parameters_.density_scale);
-    set->lambda_constant.set_scale(parameters_.density_scale);
     std::fill(set->density_constant.all().begin(), set->density_constant.all().end(), 0);
     std::fill(set->lambda_constant.all().begin(), set->lambda_constant.all().end(), 0);
   }

@@ -45,11 +45,7 @@ Vec<D> initial_velocity(const Parameters<D>& p, const Vec<D>& x) {
 // A = I for every particle: the material starts undistorted.
 template <int D>
 void set_undistorted(const CaseFile& case_file, const DistortionScales& scales,
-                     const fixedpoint::Scale& dissipated_scale, CarrierFields<D>& set,
-                     std::size_t count) {
-  set.log_det.set_scale(scales.log_det);
-  set.dissipated_energy.set_scale(dissipated_scale);
-  set.unimodular.set_scale(scales.unimodular);
+                     CarrierFields<D>& set, std::size_t count) {
   std::apply([&](auto&... fields) { (fields.resize(count), ...); }, set.fields());
   ExactDistortion<D> identity;
   if (!try_make_distortion<D>(Matrix<D>::Identity(), scales, identity)) {
@@ -136,27 +132,29 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   }
 
   State<D> state;
-  state.material.position.set_scale(parameters.position_scale);
-  state.material.velocity.set_scale(parameters.velocity_scale);
-  state.boundary.position.set_scale(parameters.position_scale);
+  // The masses' scale follows from the kernel sums (Model::initialise_constants).
+  set_scales(state, {{"position", parameters.position_scale},
+                     {"velocity", parameters.velocity_scale},
+                     {"drive_time", parameters.drive_time_scale},
+                     {"dissipated", parameters.dissipated_scale},
+                     {"log_det", parameters.distortion_scales.log_det},
+                     {"unimodular", parameters.distortion_scales.unimodular},
+                     {"density", parameters.density_scale}});
   fill_vector_field<FixedArithmetic, D>(case_file, "particles", material_positions,
                                         state.material.position);
   fill_vector_field<FixedArithmetic, D>(case_file, "particles", velocities,
                                         state.material.velocity);
   fill_vector_field<FixedArithmetic, D>(case_file, "particles", boundary_positions,
                                         state.boundary.position);
-  state.boundary.wall_velocity.set_scale(parameters.velocity_scale);
   fill_vector_field<FixedArithmetic, D>(case_file, "particles", boundary_velocities,
                                         state.boundary.wall_velocity);
   const bool moving_walls = any_wall_moves(state);
-  state.boundary.drive_time.set_scale(parameters.drive_time_scale);
   state.boundary.drive_time.resize(boundary_positions.size());
-  state.boundary.wall_work.set_scale(parameters.dissipated_scale);
   state.boundary.wall_work.resize(boundary_positions.size());
-  set_undistorted<D>(case_file, parameters.distortion_scales, parameters.dissipated_scale,
-                     state.material.carried, material_positions.size());
-  set_undistorted<D>(case_file, parameters.distortion_scales, parameters.dissipated_scale,
-                     state.boundary.carried, boundary_positions.size());
+  set_undistorted<D>(case_file, parameters.distortion_scales, state.material.carried,
+                     material_positions.size());
+  set_undistorted<D>(case_file, parameters.distortion_scales, state.boundary.carried,
+                     boundary_positions.size());
 
   SimulationInfo info = simulation_info(case_file, "shtc", D, Arithmetic::fixed, parameters.dt);
   info.splitting = parameters.splitting;

@@ -25,15 +25,21 @@ template <int D>
 struct CarrierFields {
   // The distortion A = exp(l / d) U (distortion.hpp): l = log det A and the unimodular U
   // (row-major, D * D components).
-  Field log_det{{.name = "distortion_log_det", .unit = "1"}};
-  Field unimodular{{.name = "distortion_unimodular", .unit = "1", .components = D * D}};
+  Field log_det{{.name = "distortion_log_det", .unit = "1", .scaled_as = "log_det"}};
+  Field unimodular{{.name = "distortion_unimodular",
+                    .unit = "1",
+                    .components = D * D,
+                    .scaled_as = "unimodular"}};
   // Energy per mass removed by the relaxation so far (eqs. 51-53; zero for an elastic solid): with
   // it the energy budget closes in a dissipative case.
-  Field dissipated_energy{{.name = "dissipated_specific_energy", .unit = "J/kg"}};
+  Field dissipated_energy{
+      {.name = "dissipated_specific_energy", .unit = "J/kg", .scaled_as = "dissipated"}};
   // Constants of the setup: masses and the integration constants C_rho (eq. 7), C_lambda (eq. 40).
   Field mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
-  Field density_constant{{.name = "density_constant", .unit = "kg/m^3", .evolved = false}};
-  Field lambda_constant{{.name = "lambda_constant", .unit = "kg/m^3", .evolved = false}};
+  Field density_constant{
+      {.name = "density_constant", .unit = "kg/m^3", .evolved = false, .scaled_as = "density"}};
+  Field lambda_constant{
+      {.name = "lambda_constant", .unit = "kg/m^3", .evolved = false, .scaled_as = "density"}};
 
   auto fields() {
     return std::tie(log_det, unimodular, dissipated_energy, mass, density_constant,
@@ -63,12 +69,16 @@ struct Boundary {
   // so a reversed run sees the walls move backwards and ramp down at the same instants
   // (models/shtc/README.md). Every boundary particle keeps its own copy of the clock (a set's
   // fields share one length); the drift advances them all alike.
-  Field wall_velocity{{.name = "wall_velocity", .unit = "m/s", .components = D, .evolved = false}};
+  Field wall_velocity{{.name = "wall_velocity",
+                       .unit = "m/s",
+                       .components = D,
+                       .evolved = false,
+                       .scaled_as = "velocity"}};
   Field drive_time{{.name = "drive_time", .unit = "s", .parity = Parity::odd}};
   // Work per mass each moving wall particle has done on the rest (J/kg), accumulated in the
   // distortion sub-step (model.hpp): with it the energy budget of a driven case closes. Even: a
   // reversed step subtracts bit for bit what the forward step added.
-  Field wall_work{{.name = "wall_work", .unit = "J/kg"}};
+  Field wall_work{{.name = "wall_work", .unit = "J/kg", .scaled_as = "dissipated"}};
 
   auto fields() {
     return std::tuple_cat(std::tie(position), carried.fields(),

@@ -127,24 +127,11 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   auto& fluid = state.fluid;
   const fixedpoint::Scale mass_scale =
       fixedpoint::Scale::covering(largest_mass, mass_fraction_bits);
-  fluid.position.set_scale(parameters.position_scale);
-  for (StateField<Raw>* field : {&fluid.velocity, &fluid.superflow_velocity, &fluid.velocity_copy,
-                                 &fluid.superflow_velocity_copy}) {
-    field->set_scale(parameters.velocity_scale);
-  }
-  fluid.entropy.set_scale(parameters.entropy_scale);
-  fluid.entropy_copy.set_scale(parameters.entropy_scale);
-  fluid.mass.set_scale(mass_scale);
-  fluid.density_constant.set_scale(parameters.density_scale);
-  state.dummy.position.set_scale(parameters.position_scale);
-  state.dummy.mass.set_scale(mass_scale);
-  state.dummy.density_constant.set_scale(parameters.density_scale);
-  state.wall.position.set_scale(parameters.position_scale);
-  state.wall.velocity.set_scale(parameters.velocity_scale);
-  state.wall.superflow_velocity.set_scale(parameters.velocity_scale);
-  state.wall.superflow_velocity_copy.set_scale(parameters.velocity_scale);
-  state.wall.mass.set_scale(mass_scale);
-  state.wall.density_constant.set_scale(parameters.density_scale);
+  set_scales(state, {{"position", parameters.position_scale},
+                     {"velocity", parameters.velocity_scale},
+                     {"entropy", parameters.entropy_scale},
+                     {"mass", mass_scale},
+                     {"density", parameters.density_scale}});
 
   fill_vector_field<Arith, D>(case_file, "particles", fluid_positions, fluid.position);
   // Both copies start equal, raw for raw.

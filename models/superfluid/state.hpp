@@ -23,19 +23,29 @@ struct Fluid {
   // Copy 1: coflow velocity v, superflow velocity v_s (both odd), specific entropy s (even).
   StateField<Raw> velocity{
       {.name = "velocity", .unit = "m/s", .parity = Parity::odd, .components = D}};
-  StateField<Raw> superflow_velocity{
-      {.name = "superflow_velocity", .unit = "m/s", .parity = Parity::odd, .components = D}};
+  StateField<Raw> superflow_velocity{{.name = "superflow_velocity",
+                                      .unit = "m/s",
+                                      .parity = Parity::odd,
+                                      .components = D,
+                                      .scaled_as = "velocity"}};
   StateField<Raw> entropy{{.name = "entropy", .unit = "J/(kg K)"}};
   // Copy 2.
-  StateField<Raw> velocity_copy{
-      {.name = "velocity_copy", .unit = "m/s", .parity = Parity::odd, .components = D}};
-  StateField<Raw> superflow_velocity_copy{
-      {.name = "superflow_velocity_copy", .unit = "m/s", .parity = Parity::odd, .components = D}};
-  StateField<Raw> entropy_copy{{.name = "entropy_copy", .unit = "J/(kg K)"}};
+  StateField<Raw> velocity_copy{{.name = "velocity_copy",
+                                 .unit = "m/s",
+                                 .parity = Parity::odd,
+                                 .components = D,
+                                 .scaled_as = "velocity"}};
+  StateField<Raw> superflow_velocity_copy{{.name = "superflow_velocity_copy",
+                                           .unit = "m/s",
+                                           .parity = Parity::odd,
+                                           .components = D,
+                                           .scaled_as = "velocity"}};
+  StateField<Raw> entropy_copy{
+      {.name = "entropy_copy", .unit = "J/(kg K)", .scaled_as = "entropy"}};
   // Constants: mass (per unit depth in 2D), C_a of eq. (24).
   StateField<Raw> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
   StateField<Raw> density_constant{
-      {.name = "density_constant", .unit = "kg/m^3", .evolved = false}};
+      {.name = "density_constant", .unit = "kg/m^3", .evolved = false, .scaled_as = "density"}};
   auto fields() {
     return std::tie(position, velocity, superflow_velocity, entropy, velocity_copy,
                     superflow_velocity_copy, entropy_copy, mass, density_constant);
@@ -50,7 +60,7 @@ struct Dummy {
   StateField<Raw> position{{.name = "position", .unit = "m", .components = D, .evolved = false}};
   StateField<Raw> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
   StateField<Raw> density_constant{
-      {.name = "density_constant", .unit = "kg/m^3", .evolved = false}};
+      {.name = "density_constant", .unit = "kg/m^3", .evolved = false, .scaled_as = "density"}};
   auto fields() { return std::tie(position, mass, density_constant); }
 };
 
@@ -70,13 +80,19 @@ struct Wall {
                             .parity = Parity::odd,
                             .components = D,
                             .evolved = false}};
-  StateField<Raw> superflow_velocity{
-      {.name = "superflow_velocity", .unit = "m/s", .parity = Parity::odd, .components = D}};
-  StateField<Raw> superflow_velocity_copy{
-      {.name = "superflow_velocity_copy", .unit = "m/s", .parity = Parity::odd, .components = D}};
+  StateField<Raw> superflow_velocity{{.name = "superflow_velocity",
+                                      .unit = "m/s",
+                                      .parity = Parity::odd,
+                                      .components = D,
+                                      .scaled_as = "velocity"}};
+  StateField<Raw> superflow_velocity_copy{{.name = "superflow_velocity_copy",
+                                           .unit = "m/s",
+                                           .parity = Parity::odd,
+                                           .components = D,
+                                           .scaled_as = "velocity"}};
   StateField<Raw> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
   StateField<Raw> density_constant{
-      {.name = "density_constant", .unit = "kg/m^3", .evolved = false}};
+      {.name = "density_constant", .unit = "kg/m^3", .evolved = false, .scaled_as = "density"}};
   auto fields() {
     return std::tie(position, velocity, superflow_velocity, superflow_velocity_copy, mass,
                     density_constant);

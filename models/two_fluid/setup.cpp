@@ -200,13 +200,15 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
       fixedpoint::Scale::covering(std::max(std::abs(parameters.spin), 1.0), 50);
 
   State<D, Raw> state;
+  set_scales(state,
+             {{"position", parameters.position_scale},
+              {"momentum", parameters.momentum_scale},
+              {"velocity", fixedpoint::Scale::covering(std::max(parameters.sound_speed, 1.0), 50)},
+              {"mass", mass_scale},
+              {"temperature", temperature_scale},
+              {"spin", spin_scale}});
   std::mt19937_64 velocity_generator(parameters.seed);
   auto fill_moving = [&](auto& set, const KindParticles<D>& kind) {
-    set.position.set_scale(parameters.position_scale);
-    set.momentum.set_scale(parameters.momentum_scale);
-    set.mass.set_scale(mass_scale);
-    set.temperature.set_scale(temperature_scale);
-    set.spin.set_scale(spin_scale);
     fill_vector_field<Arith, D>(case_file, "particles", kind.position, set.position);
     fill_vector_field<Arith, D>(
         case_file, "initial.random_velocity",
@@ -220,12 +222,6 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   };
   fill_moving(state.superfluid, superfluid);
   fill_moving(state.normal, normal);
-  state.wall.position.set_scale(parameters.position_scale);
-  state.wall.velocity.set_scale(
-      fixedpoint::Scale::covering(std::max(parameters.sound_speed, 1.0), 50));
-  state.wall.mass.set_scale(mass_scale);
-  state.wall.temperature.set_scale(temperature_scale);
-  state.wall.spin.set_scale(spin_scale);
   fill_vector_field<Arith, D>(case_file, "particles", wall.position, state.wall.position);
   fill_vector_field<Arith, D>(case_file, "particles", wall.velocity, state.wall.velocity);
   fill_scalar_field<Arith>(case_file, "physics.normal_density", wall.mass, state.wall.mass);

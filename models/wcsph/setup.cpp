@@ -194,14 +194,10 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   State<D, Raw> state;
   const fixedpoint::Scale mass_scale =
       fixedpoint::Scale::covering(largest_mass, mass_fraction_bits);
-  state.fluid.position.set_scale(parameters.position_scale);
-  state.fluid.velocity.set_scale(parameters.velocity_scale);
-  state.fluid.mass.set_scale(mass_scale);
-  state.fluid.density_constant.set_scale(parameters.density_scale);
-  state.wall.position.set_scale(parameters.position_scale);
-  state.dummy.position.set_scale(parameters.position_scale);
-  state.dummy.mass.set_scale(mass_scale);
-  state.dummy.density_constant.set_scale(parameters.density_scale);
+  set_scales(state, {{"position", parameters.position_scale},
+                     {"velocity", parameters.velocity_scale},
+                     {"mass", mass_scale},
+                     {"density", parameters.density_scale}});
   fill_vector_field<Arith, D>(case_file, "particles", fluid_positions, state.fluid.position);
   fill_vector_field<Arith, D>(case_file, "initial.field", initial.velocity, state.fluid.velocity);
   fill_scalar_field<Arith>(case_file, "physics.rest_density", fluid_masses, state.fluid.mass);

@@ -1,6 +1,7 @@
 #pragma once
 // The state of a WCSPH simulation, declared once (core/particle_sets.hpp): three particle sets,
-// every field with its unit, parity under time reversal and (set at setup) fixed-point scale.
+// every field with its unit, parity under time reversal and the quantity whose fixed-point scale
+// it is stored in (chosen at setup: set_scales).
 
 #include "core/particle_sets.hpp"
 #include "core/state_field.hpp"
@@ -20,7 +21,7 @@ struct Fluid {
       {.name = "velocity", .unit = "m/s", .parity = Parity::odd, .components = D}};
   StateField<Raw> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
   StateField<Raw> density_constant{
-      {.name = "density_constant", .unit = "kg/m^3", .evolved = false}};
+      {.name = "density_constant", .unit = "kg/m^3", .evolved = false, .scaled_as = "density"}};
   auto fields() { return std::tie(position, velocity, mass, density_constant); }
 };
 
@@ -40,7 +41,7 @@ struct Dummy {
   StateField<Raw> position{{.name = "position", .unit = "m", .components = D, .evolved = false}};
   StateField<Raw> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
   StateField<Raw> density_constant{
-      {.name = "density_constant", .unit = "kg/m^3", .evolved = false}};
+      {.name = "density_constant", .unit = "kg/m^3", .evolved = false, .scaled_as = "density"}};
   auto fields() { return std::tie(position, mass, density_constant); }
 };
 

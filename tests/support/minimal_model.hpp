@@ -27,7 +27,7 @@ struct Gas {
       {.name = "velocity", .unit = "m/s", .parity = Parity::odd, .components = D}};
   StateField<std::int64_t> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
   StateField<std::int64_t> density_constant{
-      {.name = "density_constant", .unit = "kg/m^3", .evolved = false}};
+      {.name = "density_constant", .unit = "kg/m^3", .evolved = false, .scaled_as = "density"}};
   auto fields() { return std::tie(position, velocity, mass, density_constant); }
 };
 

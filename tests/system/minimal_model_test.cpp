@@ -24,13 +24,14 @@ constexpr int side = 16; // particles per side of the square blob
 std::unique_ptr<Simulation> minimal_blob() {
   minimal::State<2> state;
   resize_set(state.gas, side * side);
-  state.gas.position.set_scale(fixedpoint::Scale(-50));
-  state.gas.velocity.set_scale(fixedpoint::Scale(-50));
-  state.gas.mass.set_scale(fixedpoint::Scale(-70));
   minimal::Settings settings;
   settings.support_radius = 3.0 * dr;
-  // The density constant is added to the density sum as it is: it shares the density's scale.
-  state.gas.density_constant.set_scale(settings.density_scale);
+  // One scale per quantity (core/particle_sets.hpp); the density constant is stored as a density
+  // (it is added to the density sum as it is).
+  set_scales(state, {{"position", fixedpoint::Scale(-50)},
+                     {"velocity", fixedpoint::Scale(-50)},
+                     {"mass", fixedpoint::Scale(-70)},
+                     {"density", settings.density_scale}});
   for (int i = 0; i < side * side; ++i) {
     const auto a = static_cast<std::size_t>(i);
     EXPECT_TRUE(fixedpoint::try_to_fixed((i % side - side / 2 + 0.5) * dr,
