@@ -1,5 +1,6 @@
 #include "core/case_values.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -12,6 +13,19 @@ void require_positive_finite(const CaseFile& case_file, const char* key, const c
     reason << what << " is " << value << ": it must be positive and finite";
     case_file.fail(key, reason.str());
   }
+}
+
+fixedpoint::Scale mass_scale(const CaseFile& case_file, const char* density_key,
+                             std::initializer_list<std::span<const double>> masses) {
+  double largest = 0.0;
+  for (const std::span<const double> set : masses) {
+    for (const double m : set) {
+      largest = std::max(largest, m);
+    }
+  }
+  require_positive_finite(case_file, density_key,
+                          "the particle mass (density times lattice cell volume)", largest);
+  return fixedpoint::Scale::covering(largest, mass_fraction_bits);
 }
 
 fixedpoint::Scale scale_or(const CaseFile& case_file, const char* key, double magnitude,

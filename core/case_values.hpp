@@ -4,6 +4,8 @@
 #include "core/case_file.hpp"
 #include "fixedpoint/scale.hpp"
 
+#include <initializer_list>
+#include <span>
 #include <string>
 
 namespace revsph {
@@ -24,6 +26,12 @@ constexpr int position_fraction_bits = 52;
 // Masses are constants of the set-up: this many fraction bits below the largest keep their
 // double view exact.
 constexpr int mass_fraction_bits = 52;
+
+// The scale of a model's particle masses: covering the largest of `masses` (one list per set)
+// with mass_fraction_bits. Fails `density_key` unless that mass is positive and finite (a density
+// times the lattice cell volume can overflow or underflow even when both are valid).
+fixedpoint::Scale mass_scale(const CaseFile& case_file, const char* density_key,
+                             std::initializer_list<std::span<const double>> masses);
 
 // The positions' scale: fixed_point.position_exponent, or by default the one that covers the
 // domain's largest coordinate with 52 fraction bits. Either way its unit must resolve dr to

@@ -21,6 +21,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace revsph {
@@ -45,18 +46,15 @@ constexpr Substep<Model> strang_site() {
 
 // How the placement reads in the irreversible terms ("dissipation: ..., half steps at ...").
 inline std::string placement_text(Splitting splitting, bool at_marked_sites) {
-  switch (splitting) {
-  case Splitting::strang:
-    return at_marked_sites ? "half steps inside the step, at the sites the model marks"
-                           : "half steps at the step's ends";
-  case Splitting::midpoint:
-    return "one update in the middle of the step";
-  case Splitting::after_centre:
-    return "one update after the step's central sub-step (first order)";
-  case Splitting::lie:
-    return "one update after each step (first order)";
+  if (splitting == Splitting::strang && at_marked_sites) {
+    return "half steps inside the step, at the sites the model marks";
   }
-  return {};
+  // In the order of the enum.
+  static constexpr std::string_view texts[] = {
+      "half steps at the step's ends", "one update in the middle of the step",
+      "one update after the step's central sub-step (first order)",
+      "one update after each step (first order)"};
+  return std::string(texts[static_cast<int>(splitting)]);
 }
 
 namespace splitting_detail {

@@ -197,20 +197,8 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   } else {
     apply_initial_temperature<D>(case_file, parameters, gas_positions, gas_masses, gas_entropies);
   }
-  double largest_mass = *std::max_element(gas_masses.begin(), gas_masses.end());
-  for (const double m : dummy_masses) {
-    largest_mass = std::max(largest_mass, m);
-  }
-  for (const double m : thermal_masses) {
-    largest_mass = std::max(largest_mass, m);
-  }
-  // initial.density * lattice cell volume can overflow or underflow even when both are valid.
-  if (!(largest_mass > 0.0) || !std::isfinite(largest_mass)) {
-    std::ostringstream reason;
-    reason << "the particle mass initial.density * (lattice cell volume) is " << largest_mass
-           << ": it must be positive and finite";
-    case_file.fail("initial.density", reason.str());
-  }
+  const fixedpoint::Scale masses =
+      mass_scale(case_file, "initial.density", {gas_masses, dummy_masses, thermal_masses});
 
   State<D> state;
   const double hottest_wall =
@@ -220,7 +208,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   set_scales(state, {{"position", parameters.position_scale},
                      {"momentum", parameters.momentum_scale},
                      {"entropy", parameters.entropy_scale},
-                     {"mass", fixedpoint::Scale::covering(largest_mass, mass_fraction_bits)},
+                     {"mass", masses},
                      {"entropy_flux", parameters.entropy_flux_scale},
                      {"temperature", fixedpoint::Scale::covering(hottest_wall, 52)}});
   fill_vector_field<FixedArithmetic, D>(case_file, "particles", gas_positions, state.gas.position);

@@ -110,27 +110,16 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   if (fluid_positions.empty()) {
     case_file.fail("particles", "the case has no fluid particles");
   }
-  double largest_mass = 0.0;
-  for (const auto* masses : {&fluid_masses, &dummy_masses, &wall_masses}) {
-    for (const double m : *masses) {
-      largest_mass = std::max(largest_mass, m);
-    }
-  }
-  if (!(largest_mass > 0.0) || !std::isfinite(largest_mass)) {
-    case_file.fail("physics.rest_density",
-                   "the particle mass rest_density * (lattice cell volume) must be positive and "
-                   "finite");
-  }
+  const fixedpoint::Scale masses =
+      mass_scale(case_file, "physics.rest_density", {fluid_masses, dummy_masses, wall_masses});
   const InitialCopy<D> initial = initial_copy<D>(case_file, parameters, fluid_positions);
 
   State<D, Raw> state;
   auto& fluid = state.fluid;
-  const fixedpoint::Scale mass_scale =
-      fixedpoint::Scale::covering(largest_mass, mass_fraction_bits);
   set_scales(state, {{"position", parameters.position_scale},
                      {"velocity", parameters.velocity_scale},
                      {"entropy", parameters.entropy_scale},
-                     {"mass", mass_scale},
+                     {"mass", masses},
                      {"density", parameters.density_scale}});
 
   fill_vector_field<Arith, D>(case_file, "particles", fluid_positions, fluid.position);

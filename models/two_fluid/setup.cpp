@@ -184,16 +184,8 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   if (superfluid.position.empty() && normal.position.empty()) {
     case_file.fail("particles", "the case has no superfluid or normal particles");
   }
-  double largest_mass = 0.0;
-  for (const auto* kind : {&superfluid, &normal, &wall}) {
-    for (const double m : kind->mass) {
-      largest_mass = std::max(largest_mass, m);
-    }
-  }
-  require_positive_finite(case_file, "physics.superfluid_density",
-                          "the particle mass (density times lattice cell volume)", largest_mass);
-  const fixedpoint::Scale mass_scale =
-      fixedpoint::Scale::covering(largest_mass, mass_fraction_bits);
+  const fixedpoint::Scale masses = mass_scale(case_file, "physics.superfluid_density",
+                                              {superfluid.mass, normal.mass, wall.mass});
   const fixedpoint::Scale temperature_scale =
       fixedpoint::Scale::covering(parameters.temperature, 52);
   const fixedpoint::Scale spin_scale =
@@ -204,7 +196,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
              {{"position", parameters.position_scale},
               {"momentum", parameters.momentum_scale},
               {"velocity", fixedpoint::Scale::covering(std::max(parameters.sound_speed, 1.0), 50)},
-              {"mass", mass_scale},
+              {"mass", masses},
               {"temperature", temperature_scale},
               {"spin", spin_scale}});
   std::mt19937_64 velocity_generator(parameters.seed);

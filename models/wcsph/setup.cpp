@@ -166,20 +166,8 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   if (fluid_positions.empty()) {
     case_file.fail("particles", "the case has no fluid particles");
   }
-  double largest_mass = 0.0;
-  for (const double m : fluid_masses) {
-    largest_mass = std::max(largest_mass, m);
-  }
-  for (const double m : dummy_masses) {
-    largest_mass = std::max(largest_mass, m);
-  }
-  // rest_density * lattice cell volume can overflow or underflow even when both are valid.
-  if (!(largest_mass > 0.0) || !std::isfinite(largest_mass)) {
-    std::ostringstream reason;
-    reason << "the particle mass rest_density * (lattice cell volume) is " << largest_mass
-           << ": it must be positive and finite";
-    case_file.fail("physics.rest_density", reason.str());
-  }
+  const fixedpoint::Scale masses =
+      mass_scale(case_file, "physics.rest_density", {fluid_masses, dummy_masses});
   std::vector<std::pair<std::string, std::string>> setup_report;
   if (parameters.isc_enabled) {
     const std::vector<Vec<D>> no_positions;
@@ -192,11 +180,9 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   InitialFields<D> initial = initial_fields<D>(parameters, fluid_positions, dummy_positions);
 
   State<D, Raw> state;
-  const fixedpoint::Scale mass_scale =
-      fixedpoint::Scale::covering(largest_mass, mass_fraction_bits);
   set_scales(state, {{"position", parameters.position_scale},
                      {"velocity", parameters.velocity_scale},
-                     {"mass", mass_scale},
+                     {"mass", masses},
                      {"density", parameters.density_scale}});
   fill_vector_field<Arith, D>(case_file, "particles", fluid_positions, state.fluid.position);
   fill_vector_field<Arith, D>(case_file, "initial.field", initial.velocity, state.fluid.velocity);
