@@ -1,6 +1,7 @@
 #include "models/shtc/model.hpp"
 
 #include "core/case_values.hpp"
+#include "core/particle_update.hpp"
 #include "core/verlet.hpp"
 #include "models/shtc/elastic_energy.hpp"
 #include "models/shtc/forces.hpp"
@@ -264,22 +265,18 @@ void Model<D>::update_distortion(double dt) {
 
 template <int D>
 void Model<D>::relax_all(double dt) {
-  FaultRecorder faults;
-  for (CarrierFields<D>* set : carried_by_set()) {
-    const std::size_t count = set->log_det.count();
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < count; ++i) {
-      ExactDistortion<D> distortion = distortion_of(*set, i);
-      if (!relax(distortion, set->dissipated_energy.at(0, i), dt)) {
-        faults.record(i, set->log_det.info().particle_set.c_str(), "distortion",
-                      "overflow or non-finite value in the relaxation");
-        continue;
-      }
-      store_distortion(*set, i, distortion);
-    }
-  }
-  faults.throw_if_any();
   force_valid_ = false;
+  for (CarrierFields<D>* set : carried_by_set()) {
+    update_each_particle(set->log_det, "overflow or non-finite value in the relaxation",
+                         [&](std::size_t i) {
+                           ExactDistortion<D> distortion = distortion_of(*set, i);
+                           if (!relax(distortion, set->dissipated_energy.at(0, i), dt)) {
+                             return false;
+                           }
+                           store_distortion(*set, i, distortion);
+                           return true;
+                         });
+  }
 }
 
 template <int D>
