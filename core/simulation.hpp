@@ -123,15 +123,6 @@ concept HasIrreversibleOperators = requires {
 };
 
 template <class M>
-std::span<const IrreversibleOperator<M>> irreversible_operators_of() {
-  if constexpr (HasIrreversibleOperators<M>) {
-    return M::irreversible_operators();
-  } else {
-    return {};
-  }
-}
-
-template <class M>
 std::span<const StepHook<M>> step_hooks_of() {
   if constexpr (HasStepHooks<M>) {
     return M::step_hooks();
@@ -293,7 +284,11 @@ private:
   void place_irreversible_operators() {
     std::vector<IrreversibleOperator<M>> acting;
     const bool marked = marked_strang_sites<M>(M::palindrome()) != 0;
-    for (const IrreversibleOperator<M>& op : irreversible_operators_of<M>()) {
+    std::span<const IrreversibleOperator<M>> operators;
+    if constexpr (HasIrreversibleOperators<M>) {
+      operators = M::irreversible_operators();
+    }
+    for (const IrreversibleOperator<M>& op : operators) {
       if (const std::string what = op.acts(model_); !what.empty()) {
         acting.push_back(op);
         info_.irreversible_terms.push_back(std::string(op.name) + ": " + what + ", " +

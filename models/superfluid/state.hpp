@@ -12,34 +12,34 @@
 #include "core/state_field.hpp"
 #include "core/units.hpp"
 
+#include <string>
 #include <tuple>
+#include <utility>
 
 namespace revsph::superfluid {
+
+// An odd velocity of D components stored in the velocity's scale: v, v_s and their copies, on the
+// fluid and on the wall.
+template <int D>
+VariableInfo odd_velocity(std::string name) {
+  return {.name = std::move(name),
+          .unit = "m/s",
+          .parity = Parity::odd,
+          .components = D,
+          .scaled_as = "velocity"};
+}
 
 template <int D, class Raw>
 struct Fluid {
   static constexpr SetInfo set{.name = "fluid", .motion = Motion::moving};
   StateField<Raw> position{{.name = "position", .unit = "m", .components = D}};
   // Copy 1: coflow velocity v, superflow velocity v_s (both odd), specific entropy s (even).
-  StateField<Raw> velocity{
-      {.name = "velocity", .unit = "m/s", .parity = Parity::odd, .components = D}};
-  StateField<Raw> superflow_velocity{{.name = "superflow_velocity",
-                                      .unit = "m/s",
-                                      .parity = Parity::odd,
-                                      .components = D,
-                                      .scaled_as = "velocity"}};
+  StateField<Raw> velocity{odd_velocity<D>("velocity")};
+  StateField<Raw> superflow_velocity{odd_velocity<D>("superflow_velocity")};
   StateField<Raw> entropy{{.name = "entropy", .unit = "J/(kg K)"}};
   // Copy 2.
-  StateField<Raw> velocity_copy{{.name = "velocity_copy",
-                                 .unit = "m/s",
-                                 .parity = Parity::odd,
-                                 .components = D,
-                                 .scaled_as = "velocity"}};
-  StateField<Raw> superflow_velocity_copy{{.name = "superflow_velocity_copy",
-                                           .unit = "m/s",
-                                           .parity = Parity::odd,
-                                           .components = D,
-                                           .scaled_as = "velocity"}};
+  StateField<Raw> velocity_copy{odd_velocity<D>("velocity_copy")};
+  StateField<Raw> superflow_velocity_copy{odd_velocity<D>("superflow_velocity_copy")};
   StateField<Raw> entropy_copy{
       {.name = "entropy_copy", .unit = "J/(kg K)", .scaled_as = "entropy"}};
   // Constants: mass (per unit depth in 2D), C_a of eq. (24).
@@ -80,16 +80,8 @@ struct Wall {
                             .parity = Parity::odd,
                             .components = D,
                             .evolved = false}};
-  StateField<Raw> superflow_velocity{{.name = "superflow_velocity",
-                                      .unit = "m/s",
-                                      .parity = Parity::odd,
-                                      .components = D,
-                                      .scaled_as = "velocity"}};
-  StateField<Raw> superflow_velocity_copy{{.name = "superflow_velocity_copy",
-                                           .unit = "m/s",
-                                           .parity = Parity::odd,
-                                           .components = D,
-                                           .scaled_as = "velocity"}};
+  StateField<Raw> superflow_velocity{odd_velocity<D>("superflow_velocity")};
+  StateField<Raw> superflow_velocity_copy{odd_velocity<D>("superflow_velocity_copy")};
   StateField<Raw> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
   StateField<Raw> density_constant{
       {.name = "density_constant", .unit = "kg/m^3", .evolved = false, .scaled_as = "density"}};
