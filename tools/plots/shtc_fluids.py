@@ -61,6 +61,9 @@ COUETTE = {
                              "discretisation.time_step_factor=0.05"],
     "taylor-couette-mirrored": ["run", "taylor-couette-coarse", "--set",
                                 "walls.no_slip=\"mirrored\""],
+    # The relaxation between the halves of the distortion update, matched rate (relaxation.hpp).
+    "taylor-couette-midpoint": ["run", "taylor-couette-coarse", "--set",
+                                "step.splitting=\"midpoint\""],
 }
 CAVITY = {
     "cavity-re100": ["run", "cavity-re100"],
@@ -85,6 +88,8 @@ def run_variant(case):
         variant = material["relaxation_splitting"]
     elif case.get("step", {}).get("splitting", "after_centre") == "strang":
         variant = "step_ends"
+    elif case.get("step", {}).get("splitting", "after_centre") != "after_centre":
+        variant = case["step"]["splitting"]
     else:
         variant = material.get("relaxation_rate", "paper")
     variant += " splitting"
