@@ -16,8 +16,8 @@ rayleigh-benard-s6.5 and -s6.5-conduction: the authors' RaBe.jl support, seeded 
 conduction profile; rayleigh-benard-hydrostatic: the authors' start (initial.hydrostatic, the
 conduction profile) at their low background pressure (about 1 at the top) with walls twice
 the support thick, 3 dr, to t = 30 (about 45 minutes on one thread);
-rayleigh-benard-hydrostatic-s6.5: the same at the authors' 6.5 dr (about 7 hours on one thread,
-chained with revsph run --from as RUN-2, RUN-3, ...)).
+rayleigh-benard-hydrostatic-s6.5: the same at the authors' 6.5 dr (2.5 hours on one thread;
+a longer run continues with revsph run --from as RUN-2, RUN-3, ...)).
 Writes into --out (default docs/figures):
   entropic_cavity.png  the Nusselt numbers of the hot and the cold wall over time against the
                        benchmark, and the temperature field with the velocities at the end.
