@@ -12,7 +12,6 @@
 #include <cmath>
 #include <numbers>
 #include <span>
-#include <sstream>
 #include <stdexcept>
 
 namespace revsph::entropic {

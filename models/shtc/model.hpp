@@ -9,8 +9,8 @@
 // sequence is a palindrome: the step is bitwise reversible (design note §2, §4). The distortion
 // update replaces the paper's Cayley form (same second order; tests compare them).
 // A fluid's relaxation (eqs. 51-53, irreversible) is an operator the core places by the case's
-// step.splitting: by default right after the distortion update (the paper's eq. 52), or as half
-// steps at both ends ("strang"), ...; a solid has none (relaxation.hpp).
+// step.splitting (core/step_splitting.hpp): by default right after the distortion update (the
+// paper's eq. 52); a solid has none (relaxation.hpp).
 //
 // Particles: "material" (moving) then "boundary" (in place, at rest or pretending a wall
 // velocity; state.hpp), together the carriers. The neighbour loops run over the carriers in cell order (slots); the state and every

@@ -10,7 +10,8 @@
 // Each is a shear (its increment does not depend on the group it changes), so each is undone by
 // subtracting the same increment, and the palindrome is bitwise reversible under
 // (v, v_s, v', v_s') -> -(...). dissipate (viscosity, heat conduction: dissipation_terms.hpp)
-// is the irreversible part, a no-op without it; it gives both copies the same increments.
+// is the irreversible part, placed by the core (step.splitting; the brackets: "strang", at the
+// sites the palindrome marks) and left out without it; it gives both copies the same increments.
 
 #include "core/model_api.hpp"
 #include "models/superfluid/pair_terms.hpp"
