@@ -132,12 +132,14 @@ def rayleigh_benard_walls(support, thickness, courant):
             "--set", f"particles[3].min=[{lo!r}, 0.0]", "--set", f"particles[4].max=[{hi!r}, 1.0]"]
 
 
-def wider_kernel_rayleigh_benard(support, conduction_start=False):
+def wider_kernel_rayleigh_benard(support, conduction_start=False, t_end=30.0):
     """rayleigh-benard with the authors' RaBe.jl kernel (support 6.5 dr): heater and cooler rows
     and the side walls ceil(support) layers thick, dt = 0.65 dr / c0; conduction_start: the
     authors' start from the conduction profile (T from 1.05 at the bottom to 0.95 at the top)
-    instead of uniform T with a seeded roll."""
-    command = rayleigh_benard_walls(support, 1, 0.65)
+    instead of uniform T with a seeded roll. Run to t_end (30, as the hydrostatic start: about
+    2 hours on one thread at 6.5 dr; the case's 100 would take 6)."""
+    command = rayleigh_benard_walls(support, 1, 0.65) + ["--set", f"run.t_end={t_end!r}",
+                                                         "--set", "output.snapshot_every=4000"]
     if conduction_start:
         command += ["--set", "initial.temperature_gradient=[0.0, -0.1]"]
     return command
