@@ -22,8 +22,10 @@
 #include "core/case_values.hpp"
 #include "fixedpoint/scale.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -114,6 +116,26 @@ public:
     return position_scale_or(case_file, max_abs_coordinate, dr);
   }
 };
+
+// The check that a value lies between `low` and `high`, each end closed or open. nullopt is an
+// infinite end: a number may be that infinity only if the end is closed ("(0, inf]": a time that
+// may be infinite). NaN never passes. Fails with `message` and the value.
+template <class T>
+KeyCheck<T> within(std::optional<T> low, bool low_closed, std::optional<T> high, bool high_closed,
+                   std::string message) {
+  return [=](const T& value) {
+    bool ok = !low || (low_closed ? value >= *low : value > *low);
+    ok = ok && (!high || (high_closed ? value <= *high : value < *high));
+    if constexpr (std::is_floating_point_v<T>) {
+      ok = ok && !std::isnan(value) &&
+           (value != -std::numeric_limits<T>::infinity() || (!low && low_closed)) &&
+           (value != std::numeric_limits<T>::infinity() || (!high && high_closed));
+      return ok ? std::string() : message + " (got " + format_number(value) + ")";
+    } else {
+      return ok ? std::string() : message + " (got " + std::to_string(value) + ")";
+    }
+  };
+}
 
 // positive_or_why (core/case_file.hpp) checks a positive number.
 // A finite number >= 0 (a rate, a power, an amplitude); `zero_means` says in the error what 0

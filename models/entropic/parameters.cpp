@@ -1,5 +1,7 @@
 #include "models/entropic/parameters.hpp"
 
+#include "models/entropic/case_keys.hpp" // generated from keys.toml
+
 #include "core/case_key.hpp"
 #include "core/case_values.hpp"
 #include "core/particle_blocks.hpp"
@@ -49,160 +51,6 @@ void check_constants(const CaseFile& case_file, const Law& law) {
 }
 
 // "must be >= 0 and finite (got 1.000e+00)".
-std::string non_negative_finite(const double& value) {
-  return value >= 0.0 && std::isfinite(value)
-             ? std::string()
-             : "must be >= 0 and finite (got " + format_scientific(value, 3) + ")";
-}
-
-enum class GasLawName { ideal_gas, stiffened_gas };
-
-// Every key of an entropic case file beyond common_case_keys(), including those the core's
-// readers and setup.cpp read, in the reference's order.
-struct Keys : KeySet {
-  Keys() : KeySet("entropic") {}
-  const std::string dimension =
-      declare({"dimension", KeyType::integer, "-", "required", "1, 2 or 3"});
-  const Choice<GasLawName> equation_of_state = choice<GasLawName>(
-      "physics.equation_of_state", "required",
-      "the gas law of App. C: the ideal gas (eqs. 88-89, sigma = 0 at p = rho^gamma) or the "
-      "stiffened gas (eqs. 90-92, sigma = 0 at rho0, p0)",
-      {{"ideal_gas", GasLawName::ideal_gas}, {"stiffened_gas", GasLawName::stiffened_gas}});
-  const Key<double> gamma =
-      number("physics.gamma", "1", "required", "adiabatic index c_P / c_V; > 1");
-  const Key<double> heat_capacity = number("physics.heat_capacity", "J/(kg K)", "required",
-                                           "specific heat at constant volume c_V; > 0");
-  const Key<double> rest_density =
-      number("physics.rest_density", "kg/m^3", "required for the stiffened gas",
-             "reference density rho0 of the stiffened gas; > 0 (not for the ideal gas)");
-  const Key<double> reference_pressure =
-      number("physics.reference_pressure", "Pa", "required for the stiffened gas",
-             "pressure p0 of the stiffened gas at rho0 and sigma = 0 (not for the ideal gas)");
-  const Key<double> sound_speed =
-      number("physics.sound_speed", "m/s", "required for the stiffened gas",
-             "sound speed c0 of the stiffened gas at rho0 and sigma = 0; > 0 (not for the ideal "
-             "gas)");
-  const Choice<ParticleVolume> volume = choice<ParticleVolume>(
-      "physics.particle_volume", "\"mass\"",
-      "the particle volume of §3.2: mass V = m / rho (eq. 23), entropic V = S / s (eq. 24; "
-      "needs S > 0), direct V = 1 / sum W (eq. 25), implicit (eq. 26: W V = 1 "
-      "over the gas, dummy particles at their lattice volume) or mixed (eq. 28)",
-      {{"mass", ParticleVolume::mass},
-       {"entropic", ParticleVolume::entropic},
-       {"direct", ParticleVolume::direct},
-       {"implicit", ParticleVolume::implicit},
-       {"mixed", ParticleVolume::mixed}});
-  const Key<double> viscosity =
-      number("physics.viscosity", "Pa s", "0",
-             "shear viscosity mu of the viscous dissipation, paper 4 eq. (60); >= 0 (0: off)",
-             non_negative_finite);
-  const Key<double> heat_conductivity =
-      number("physics.heat_conductivity", "W/(m K^3)", "0",
-             "lambda_F of the Fourier heat conduction lambda(T) = lambda_F T^2, paper 4 eq. (51); "
-             ">= 0 (0: off)",
-             non_negative_finite);
-  const Choice<HeatConduction> conduction = choice<HeatConduction>(
-      "physics.heat_conduction", "\"two_pass\"",
-      "the discretisation of the heat conduction: \"two_pass\", the paper's q = lambda "
-      "G(1/T) and its divergence (eqs. 54-56); \"pairwise\", one pass, Q_ab = 2 lambda_F "
-      "V_a V_b (W'/r) (T_a - T_b), which makes entropy pair by pair and holds a wall's "
-      "temperature at its surface",
-      {{"two_pass", HeatConduction::two_pass}, {"pairwise", HeatConduction::pairwise}});
-  const Choice<bool> no_slip_walls = choice<bool>(
-      "physics.wall_slip", "\"free\"",
-      "\"no_slip\": the viscosity of eq. (60) also acts between the gas and the dummy and "
-      "thermal particles, which are at rest; \"free\": it does not",
-      {{"free", false}, {"no_slip", true}});
-  const std::string thermal_temperature = declare(
-      {"particles[].temperature", KeyType::number, "K", "required for kind = \"thermal\"",
-       "the temperature a thermal wall (heater, cooler) is held at; > 0. Its particles conduct "
-       "heat to the gas (eqs. 51-56) and take part in the kernel sums like dummies"});
-  const Key<bool> particles_move =
-      boolean("physics.particles_move", "true",
-              "false holds every gas particle at its place (kick and drift do nothing): a heat "
-              "conducting solid, as the hyperbolic heat conduction of paper 4 §5.5 needs");
-  const Key<double> flux_energy_coefficient =
-      number("hyperbolic_heat.energy_coefficient", "1", "0",
-             "c_w of the entropy-flux energy c_w sum V |w|^2 of paper 4 §5.5 (Fig. 13: 0.05); > 0 "
-             "switches on the hyperbolic heat conduction, eqs. (68)-(69); 0: off",
-             non_negative_finite);
-  const Key<double> relaxation_time =
-      number("hyperbolic_heat.relaxation_time", "s", "none: no relaxation",
-             "relaxation time tau of eq. (69), w' = -2 c_w V w / tau (irreversible); > 0. Without "
-             "it the exchange of eq. (68) is bitwise reversible",
-             [](const double& tau) {
-               return tau > 0.0 ? std::string()
-                                : "must be > 0 (leave it out for no relaxation; got " +
-                                      format_scientific(tau, 3) + ")";
-             });
-  const Choice<Splitting> splitting = KeySet::splitting("strang");
-  const Key<double> gravity = KeySet::gravity();
-  const Choice<bool> boussinesq = choice<bool>(
-      "physics.buoyancy", "\"density\"",
-      "how gravity acts: \"density\", m g downwards on every gas particle (the buoyancy "
-      "comes from the gas's density); \"boussinesq\", the body force m g (T - T0) / T0 "
-      "upwards instead (a diagnostic: no potential, the energy budget does not close)",
-      {{"density", false}, {"boussinesq", true}});
-  const Key<double> gravity_reference_height = KeySet::gravity_reference_height();
-  const Key<double> initial_density =
-      number("initial.density", "kg/m^3", "required",
-             "density rho of the gas at rest: particle masses are rho times the lattice cell "
-             "volume; > 0",
-             positive_or_why);
-  const Key<double> initial_pressure =
-      number("initial.pressure", "Pa", "required",
-             "pressure p of the gas at rest: with rho it gives every particle's entropy "
-             "S = m sigma(rho, p); > 0",
-             positive_or_why);
-  const std::string temperature_gradient =
-      declare({"initial.temperature_gradient", KeyType::numbers, "K/m", "0 on every axis",
-               "dT/dx of the initial state: T = T0 + gradient . (x - centre of the gas) at the "
-               "initial density, T0 the temperature of (density, pressure); sets each gas "
-               "particle's entropy"});
-  const Key<bool> hydrostatic = boolean(
-      "initial.hydrostatic", "false",
-      "start in hydrostatic equilibrium under physics.gravity, as the authors' RaBe.jl "
-      "does: initial.density and initial.pressure hold at the gas's centre height, the "
-      "temperature follows initial.temperature_gradient (vertical only), and gas, dummy and "
-      "thermal particles get the density and entropy of their own height (masses rho(y) "
-      "dr^D); false: uniform density and pressure");
-  const Key<double> temperature_perturbation =
-      number("initial.temperature_perturbation", "K", "0",
-             "amplitude A of one convection roll added to the initial temperature, A cos(pi xi_1) "
-             "sin(pi xi_D), xi the position scaled to [0, 1] across the gas (first and last "
-             "axis): a seed that breaks the lattice's symmetry (Rayleigh-Benard)",
-             must<double>([](double a) { return std::isfinite(a); }, "must be finite"));
-  const int discretisation =
-      (declare(particle_discretisation_case_keys(
-           "kernel support radius h in units of dr (the paper's h, §3.4: h = 3 dr)",
-           "time step as a fraction of h / c: dt = courant_number * h / c, c the sound speed of "
-           "the initial state")),
-       declare(wall_case_keys("paper 1 eq. 7")), declare(domain_case_keys()),
-       declare(particle_block_case_keys({"gas", "wall", "dummy", "thermal"})), 0);
-  // Default scales: positions keep 52 fraction bits below the domain size, so the double view of
-  // a position is exact; momenta resolve m c * 2^-50 and entropies max(|m sigma0|, m c_V) * 2^-48
-  // for the particle mass m = rho dr^D; kernel sums resolve rho * 2^-48.
-  const PositionScaleKey position_exponent = position_scale();
-  const ScaleKey momentum_exponent =
-      scale("momentum", "m c", 50,
-            "momenta (and the pair impulses of a kick) are stored as integers times 2^exponent",
-            "(m = rho dr^D, c the initial sound speed)");
-  const ScaleKey entropy_exponent =
-      scale("entropy", "max(|m sigma|, m c_V)", 48,
-            "particle entropies are stored as integers times 2^exponent",
-            "(m = rho dr^D, sigma the initial specific entropy)");
-  const ScaleKey density_exponent =
-      scale("density", "the initial density", 48,
-            "scale of the density sums rho_a = sum_b m_b W_ab (eq. 32a)");
-  const ScaleKey entropy_flux_exponent = scale("entropy_flux", "sqrt(rho c_V T0 / c_w)", 48,
-                                               "the entropy-flux variable w of the hyperbolic heat "
-                                               "conduction is stored as integers times 2^exponent");
-};
-
-const Keys& keys() {
-  static const Keys declared;
-  return declared;
-}
 
 GasLaw read_gas_law(const CaseFile& case_file) {
   const Keys& k = keys();
@@ -289,20 +137,9 @@ double Parameters<D>::initial_sound_speed() const {
 template <int D>
 Parameters<D> read_parameters(const CaseFile& case_file) {
   const Keys& k = keys();
-  Parameters<D> p;
+  Parameters<D> p = k.read_fields<Parameters<D>>(case_file);
   p.gas_law = read_gas_law(case_file);
-  p.volume = k.volume.read(case_file);
-  p.gravity = k.gravity.read(case_file);
-  p.gravity_reference_height = k.gravity_reference_height.read(case_file);
-  p.boussinesq = k.boussinesq.read(case_file);
-  p.viscosity = k.viscosity.read(case_file);
-  p.heat_conductivity = k.heat_conductivity.read(case_file);
-  p.conduction = k.conduction.read(case_file);
-  p.no_slip_walls = k.no_slip_walls.read(case_file);
-  p.splitting = k.splitting.read(case_file);
 
-  p.particles_move = k.particles_move.read(case_file);
-  p.flux_energy_coefficient = k.flux_energy_coefficient.read(case_file);
   p.relaxation_time = k.relaxation_time.read_or(case_file, std::numeric_limits<double>::infinity());
   if (p.hyperbolic() && p.particles_move) {
     case_file.fail(k.flux_energy_coefficient.path(),
@@ -316,8 +153,6 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
                    "or \"direct\"");
   }
 
-  p.initial_density = k.initial_density.read(case_file);
-  p.initial_pressure = k.initial_pressure.read(case_file);
   if (!specific_entropy_for_pressure(p.gas_law, p.initial_density, p.initial_pressure)) {
     if (const auto* law = std::get_if<StiffenedGas>(&p.gas_law)) {
       case_file.fail(k.initial_pressure.path(),
@@ -351,9 +186,6 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
     }
   }
 
-  p.initial_temperature_perturbation = k.temperature_perturbation.read(case_file);
-
-  p.initial_hydrostatic = k.hydrostatic.read(case_file);
   if (p.initial_hydrostatic) {
     for (std::size_t axis = 0; axis + 1 < static_cast<std::size_t>(D); ++axis) {
       if (p.initial_temperature_gradient[axis] != 0.0) {
@@ -400,10 +232,6 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
                             p.heat_conductivity * t0 * t0 / p.support_radius);
   }
   return p;
-}
-
-const KeyTable& case_keys() {
-  return keys().table();
 }
 
 template struct Parameters<1>;

@@ -20,6 +20,8 @@
 namespace revsph::entropic {
 
 using GasLaw = std::variant<IdealGas, StiffenedGas>;
+// The names of physics.equation_of_state's values.
+enum class GasLawName { ideal_gas, stiffened_gas };
 
 // The particle volumes of §3.2 and §4 (eqs. 23-28).
 enum class ParticleVolume { mass, entropic, direct, implicit, mixed };

@@ -15,6 +15,10 @@
 
 namespace revsph::shtc {
 
+// The values of material.relaxation_rate: the paper's rate, or the one matched to the splitting
+// (relaxation.hpp).
+enum class RelaxationRate { paper, matched };
+
 // The initial velocity field.
 enum class InitialField {
   rest,

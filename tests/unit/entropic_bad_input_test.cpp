@@ -41,7 +41,7 @@ std::vector<Defect> defects() {
       {"hyperbolic_heat_on_moving_particles", "hyperbolic_heat.energy_coefficient=0.05",
        "hyperbolic_heat.energy_coefficient", "set physics.particles_move = false"},
       {"negative_flux_energy", "hyperbolic_heat.energy_coefficient=-1",
-       "hyperbolic_heat.energy_coefficient", "must be >= 0 and finite (got -1"},
+       "hyperbolic_heat.energy_coefficient", "must be a finite number >= 0 (got -1"},
       {"zero_relaxation_time", "hyperbolic_heat.relaxation_time=0",
        "hyperbolic_heat.relaxation_time", "must be > 0"},
       {"temperature_on_a_gas_block", "particles[0].temperature=1.0", "particles[0].temperature",
