@@ -198,10 +198,7 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
 
   const ParticleDiscretisation discretisation =
       read_particle_discretisation(case_file, sound_speed);
-  p.dr = discretisation.dr;
-  p.support_radius = discretisation.support_radius;
-  p.dt = discretisation.dt;
-  p.cell_size_factor = discretisation.cell_size_factor;
+  static_cast<ParticleDiscretisation&>(p) = discretisation;
   p.wall = read_wall_settings(case_file, discretisation);
 
   p.domain = read_domain<D>(case_file);

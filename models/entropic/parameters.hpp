@@ -32,7 +32,7 @@ enum class ParticleVolume { mass, entropic, direct, implicit, mixed };
 enum class HeatConduction { two_pass, pairwise };
 
 template <int D>
-struct Parameters {
+struct Parameters : ParticleDiscretisation { // dr, support_radius, dt, cell_size_factor
   // [physics]
   GasLaw gas_law = IdealGas{}; // App. C: ideal gas (88-89) or stiffened gas (90-92)
   ParticleVolume volume = ParticleVolume::mass;
@@ -79,10 +79,6 @@ struct Parameters {
   // density and pressure holding at the gas's centre height (the authors' RaBe.jl start).
   bool initial_hydrostatic = false;
   // [discretisation]
-  double dr = 0.0;               // particle spacing (m)
-  double support_radius = 0.0;   // kernel support radius h (m; the paper's h, §3.4)
-  double dt = 0.0;               // time step (s)
-  double cell_size_factor = 1.0; // neighbour-search cell size / search radius, >= 1
   // [wall]: the conservative wall of paper 1 eq. (7)
   WallSettings wall;
   Box<D> domain;

@@ -134,10 +134,7 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.helium = read_helium(case_file);
   const ParticleDiscretisation discretisation =
       read_particle_discretisation(case_file, p.helium.first_sound_speed);
-  p.dr = discretisation.dr;
-  p.support_radius = discretisation.support_radius;
-  p.dt = discretisation.dt;
-  p.cell_size_factor = discretisation.cell_size_factor;
+  static_cast<ParticleDiscretisation&>(p) = discretisation;
   p.initial = read_initial(case_file, D);
   p.domain = read_domain<D>(case_file);
   p.superleak = read_superleak<D>(case_file, p.domain);

@@ -5,6 +5,7 @@
 #include "core/case_file.hpp"
 #include "core/case_keys.hpp"
 #include "core/geometry.hpp"
+#include "core/particle_discretisation.hpp"
 #include "core/step_splitting.hpp"
 #include "fixedpoint/scale.hpp"
 #include "models/superfluid/helium.hpp"
@@ -57,7 +58,7 @@ struct Heater {
 };
 
 template <int D>
-struct Parameters {
+struct Parameters : ParticleDiscretisation { // dr, support_radius, dt, cell_size_factor
   Helium helium;
   double gravity = 0.0;                  // g (m/s^2) along minus the last axis (eq. 29)
   double gravity_reference_height = 0.0; // height of zero gravitational energy (m)
@@ -68,10 +69,6 @@ struct Parameters {
   bool dummy_no_slip = false;     // viscosity against the dummies (physics.dummy_slip)
   bool absorbing_walls = false;   // physics.cooler = "absorbing"
   // [discretisation]
-  double dr = 0.0;
-  double support_radius = 0.0; // the kernel's support: Table I's h (the authors' code)
-  double dt = 0.0;
-  double cell_size_factor = 1.0;
   InitialFields initial;
   // The fountain's jet (sec. III.C): the diagnostics report the fluid volume above this height
   // (NaN: not reported); its growth rate over the capillary's width is the jet speed.

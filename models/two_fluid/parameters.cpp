@@ -88,13 +88,10 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
                           p.contact.limiter);
   const ParticleDiscretisation discretisation =
       read_particle_discretisation(case_file, p.sound_speed);
-  p.dr = discretisation.dr;
-  p.support_radius = discretisation.support_radius;
-  p.dt = discretisation.dt;
+  static_cast<ParticleDiscretisation&>(p) = discretisation;
   if (!case_file.has("discretisation.dt")) {
     limit_time_step(case_file, p);
   }
-  p.cell_size_factor = discretisation.cell_size_factor;
   // The friction is an explicit exchange: over a half step it must relax the relative velocity
   // by a small fraction, not overshoot it (C_L / rho is largest at t = 0, where L = L0).
   if (p.mutual_friction.active()) {

@@ -6,6 +6,7 @@
 #include "core/case_file.hpp"
 #include "core/case_keys.hpp"
 #include "core/geometry.hpp"
+#include "core/particle_discretisation.hpp"
 #include "core/step_splitting.hpp"
 #include "fixedpoint/scale.hpp"
 #include "models/two_fluid/helium_ii.hpp"
@@ -67,7 +68,7 @@ struct RigidWalls {
 };
 
 template <int D>
-struct Parameters {
+struct Parameters : ParticleDiscretisation { // dr, support_radius, dt, cell_size_factor
   double superfluid_density = 0.0; // rho_s: the superfluid particles' Tait reference and mass
   double normal_density = 0.0;     // rho_n: the normal (and wall) particles'
   // physics.phases = "interpenetrating": every particle, walls included, carries the mixture's
@@ -100,10 +101,6 @@ struct Parameters {
   double random_velocity = 0.0; // each velocity component uniform in [-value, value] at start
   std::uint64_t seed = 1;
   // [discretisation]
-  double dr = 0.0;
-  double support_radius = 0.0;
-  double dt = 0.0;
-  double cell_size_factor = 1.0;
   Box<D> domain;
   // [fixed_point]
   fixedpoint::Scale position_scale;

@@ -15,17 +15,13 @@ namespace revsph::wcsph {
 enum class InitialField { rest, gresho_vortex };
 
 template <int D>
-struct Parameters {
+struct Parameters : ParticleDiscretisation { // dr, support_radius, dt, cell_size_factor
   // [physics]
   double rest_density = 0.0;             // rho0 (kg/m^3)
   double sound_speed = 0.0;              // c (m/s)
   double gravity = 0.0;                  // g (m/s^2), along -axis D-1
   double gravity_reference_height = 0.0; // height of zero gravitational potential (m)
   // [discretisation]
-  double dr = 0.0;               // particle spacing (m)
-  double support_radius = 0.0;   // kernel support radius h (m)
-  double dt = 0.0;               // time step (s)
-  double cell_size_factor = 1.0; // neighbour-search cell size / search radius, >= 1
   // [wall], eq. (7)
   WallSettings wall;
   // [physics] anti_clump_pressure: p0 of the anti-clump force of App. A (0: off)
