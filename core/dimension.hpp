@@ -48,4 +48,16 @@ auto with_arithmetic(Arithmetic arithmetic, Create&& create) {
   return create.template operator()<FloatArithmetic>();
 }
 
+// Both, for a model templated on the dimension and the arithmetic:
+//   with_dimension_and_arithmetic<2, 3>(case_file, options.arithmetic,
+//                                       [&]<int D, class Arith>() { return create<D, Arith>(...); });
+template <int... Dimensions, class Create>
+auto with_dimension_and_arithmetic(const CaseFile& case_file, Arithmetic arithmetic,
+                                   Create&& create) {
+  return with_dimension<Dimensions...>(case_file, [&]<int D>() {
+    return with_arithmetic(arithmetic,
+                           [&]<class Arith>() { return create.template operator()<D, Arith>(); });
+  });
+}
+
 } // namespace revsph

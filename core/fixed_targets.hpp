@@ -3,6 +3,7 @@
 // radius: the Lennard-Jones-like wall particles of paper 1 eq. (7), say. They take no part in
 // the layout's pair list; the pair loops (core/pair_sum.hpp) see them as CrossPairs.
 
+#include "core/carrier_field.hpp"
 #include "core/cell_list.hpp"
 #include "core/fault.hpp"
 #include "core/neighbour_list.hpp"
@@ -28,6 +29,16 @@ public:
     } catch (const PointOutsideDomain& outside) {
       throw SimulationFault({set_name_, outside.index(), "position", outside.what()}, -1);
     }
+  }
+
+  // The same from a state field of D components (a wall set's positions, read as reals).
+  template <class Arith, class Field>
+  void place_field(const Field& position) {
+    CoordinateArrays<D> reals;
+    for (int k = 0; k < D; ++k) {
+      reals[k] = CarrierField<Arith>{&position}.reals(k);
+    }
+    place(std::move(reals));
   }
 
   // Lists, for every slot of `layout`, the targets closer than `radius`, in ascending order.

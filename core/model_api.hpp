@@ -1,11 +1,13 @@
 #pragma once
 // The pieces a model's class is written with, in one include: the Model concept and its parts
 // (simulation.hpp, model_parts.hpp), the step (step_composition.hpp, step_splitting.hpp), the
-// state's fields and the slot layout (carrier_field.hpp, slot_layout.hpp), the kernel and the
+// state's fields, the ones many models share and the slot layout (carrier_field.hpp,
+// common_fields.hpp, slot_layout.hpp), the kernel and the
 // pair loop (kernel_wendland.hpp, pair_sum.hpp), energies and output views (energy.hpp,
 // particle_view.hpp). docs/adding-a-model.md walks through them.
 
 #include "core/carrier_field.hpp"
+#include "core/common_fields.hpp"
 #include "core/energy.hpp"
 #include "core/kernel_wendland.hpp"
 #include "core/model_parts.hpp"

@@ -91,14 +91,19 @@ concept HasTimedDiagnostics = requires(M& model, double time) {
 };
 
 // Optional: energy the model exchanged with the outside since the run began (a heater's input,
-// heat through a cooler's walls), kept outside the particles' state. A snapshot carries these
-// accounts so that a run continued from it (`revsph run --from`) keeps its energy budget; the
-// restore throws std::invalid_argument on a name the model does not keep.
+// heat through a cooler's walls), kept outside the particles' state in members of its own. The
+// model names them once, `static auto energy_accounts() { return std::array{EnergyAccount<Model>{
+// "heater_input", &Model::heater_energy_}, ...}; }`; a snapshot carries them so that a run
+// continued from it (`revsph run --from`) keeps its energy budget, and a name the model does not
+// keep is refused (std::invalid_argument).
 template <class M>
-concept HasEnergyAccounts = requires(M& model, const M& const_model,
-                                     const std::vector<EnergyTerm>& accounts) {
-  { const_model.energy_accounts() } -> std::same_as<std::vector<EnergyTerm>>;
-  model.restore_energy_accounts(accounts);
+struct EnergyAccount {
+  const char* name;
+  double M::*value;
+};
+template <class M>
+concept HasEnergyAccounts = requires {
+  { *std::begin(M::energy_accounts()) } -> std::convertible_to<EnergyAccount<M>>;
 };
 
 // Optional: a model whose terms depend on the time (a decay law, a ramp) is told the time at the
@@ -250,18 +255,29 @@ public:
   }
 
   std::vector<EnergyTerm> energy_accounts() const override {
+    std::vector<EnergyTerm> terms;
     if constexpr (HasEnergyAccounts<M>) {
-      return model_.energy_accounts();
-    } else {
-      return {};
+      for (const EnergyAccount<M>& account : M::energy_accounts()) {
+        terms.push_back({account.name, model_.*account.value});
+      }
     }
+    return terms;
   }
   void restore_energy_accounts(const std::vector<EnergyTerm>& accounts) override {
-    if constexpr (HasEnergyAccounts<M>) {
-      model_.restore_energy_accounts(accounts);
-    } else if (!accounts.empty()) {
-      throw std::invalid_argument("energy account '" + accounts.front().name +
-                                  "' given, but model " + info_.model + " keeps none");
+    for (const EnergyTerm& given : accounts) {
+      bool kept = false;
+      if constexpr (HasEnergyAccounts<M>) {
+        for (const EnergyAccount<M>& account : M::energy_accounts()) {
+          if (given.name == account.name) {
+            model_.*account.value = given.value;
+            kept = true;
+          }
+        }
+      }
+      if (!kept) {
+        throw std::invalid_argument("unknown energy account '" + given.name + "' (model " +
+                                    info_.model + ")");
+      }
     }
   }
 

@@ -150,11 +150,7 @@ void Model<D>::update_constants() {
   if (constants_valid_) {
     return;
   }
-  CoordinateArrays<D> wall_position;
-  for (int k = 0; k < D; ++k) {
-    wall_position[k] = CarrierField<FixedArithmetic>{&state_.wall.position}.reals(k);
-  }
-  walls_.place(std::move(wall_position));
+  walls_.template place_field<FixedArithmetic>(state_.wall.position);
   mass_ = CarrierField<FixedArithmetic>{&state_.gas.mass, &state_.dummy.mass, &state_.thermal.mass}
               .reals();
   constants_valid_ = true;

@@ -7,6 +7,7 @@
 // The particle entropy S is even under time reversal and constant in the reversible part; only
 // dissipation changes it (§5).
 
+#include "core/common_fields.hpp"
 #include "core/particle_sets.hpp"
 #include "core/state_field.hpp"
 #include "core/units.hpp"
@@ -28,11 +29,11 @@ inline constexpr const char* momentum_unit = D == 1 ? "kg/(m s)" : (D == 2 ? "kg
 template <int D>
 struct Gas {
   static constexpr SetInfo set{.name = "gas", .motion = Motion::moving};
-  Field position{{.name = "position", .unit = "m", .components = D}};
+  Field position{position_field<D>()};
   Field momentum{
       {.name = "momentum", .unit = momentum_unit<D>, .parity = Parity::odd, .components = D}};
   Field entropy{{.name = "entropy", .unit = entropy_unit<D>}};
-  Field mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
+  Field mass{mass_field<D>()};
   // w: its energy c_w V |w|^2 (Fig. 13) makes its unit the square root of a pressure.
   Field entropy_flux{
       {.name = "entropy_flux", .unit = "Pa^(1/2)", .parity = Parity::odd, .components = D}};
@@ -43,7 +44,7 @@ struct Gas {
 template <int D>
 struct Wall {
   static constexpr SetInfo set{.name = "wall", .motion = Motion::fixed};
-  Field position{{.name = "position", .unit = "m", .components = D, .evolved = false}};
+  Field position{position_field<D>(false)};
   auto fields() { return std::tie(position); }
 };
 
@@ -54,9 +55,9 @@ struct Wall {
 template <int D>
 struct Dummy {
   static constexpr SetInfo set{.name = "dummy", .motion = Motion::fixed};
-  Field position{{.name = "position", .unit = "m", .components = D, .evolved = false}};
+  Field position{position_field<D>(false)};
   Field entropy{{.name = "entropy", .unit = entropy_unit<D>, .evolved = false}};
-  Field mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
+  Field mass{mass_field<D>()};
   auto fields() { return std::tie(position, entropy, mass); }
 };
 
@@ -67,9 +68,9 @@ struct Dummy {
 template <int D>
 struct Thermal {
   static constexpr SetInfo set{.name = "thermal", .motion = Motion::fixed};
-  Field position{{.name = "position", .unit = "m", .components = D, .evolved = false}};
+  Field position{position_field<D>(false)};
   Field entropy{{.name = "entropy", .unit = entropy_unit<D>, .evolved = false}};
-  Field mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
+  Field mass{mass_field<D>()};
   Field temperature{{.name = "temperature", .unit = "K", .evolved = false}};
   auto fields() { return std::tie(position, entropy, mass, temperature); }
 };

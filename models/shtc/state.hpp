@@ -8,6 +8,7 @@
 // gradient their moving neighbours give them, so the energy of eq. (24) summed over both sets is
 // conserved and the step stays reversible (the paper resets velocities instead, which dissipates).
 
+#include "core/common_fields.hpp"
 #include "core/particle_sets.hpp"
 #include "core/state_field.hpp"
 #include "core/units.hpp"
@@ -35,9 +36,8 @@ struct CarrierFields {
   Field dissipated_energy{
       {.name = "dissipated_specific_energy", .unit = "J/kg", .scaled_as = "dissipated"}};
   // Constants of the setup: masses and the integration constants C_rho (eq. 7), C_lambda (eq. 40).
-  Field mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
-  Field density_constant{
-      {.name = "density_constant", .unit = "kg/m^3", .evolved = false, .scaled_as = "density"}};
+  Field mass{mass_field<D>()};
+  Field density_constant{density_constant_field()};
   Field lambda_constant{
       {.name = "lambda_constant", .unit = "kg/m^3", .evolved = false, .scaled_as = "density"}};
 
@@ -50,7 +50,7 @@ struct CarrierFields {
 template <int D>
 struct Material {
   static constexpr SetInfo set{.name = "material", .motion = Motion::moving};
-  Field position{{.name = "position", .unit = "m", .components = D}};
+  Field position{position_field<D>()};
   Field velocity{{.name = "velocity", .unit = "m/s", .parity = Parity::odd, .components = D}};
   CarrierFields<D> carried;
 
@@ -60,7 +60,7 @@ struct Material {
 template <int D>
 struct Boundary {
   static constexpr SetInfo set{.name = "boundary", .motion = Motion::fixed};
-  Field position{{.name = "position", .unit = "m", .components = D, .evolved = false}};
+  Field position{position_field<D>(false)};
   CarrierFields<D> carried;
   // Moving walls (the rotating ring of Taylor-Couette, the cavity's lid, §4.3-4.4) stay in place
   // and "pretend" a velocity in L (eq. 10), as the paper's lid does: the wall velocity at full

@@ -18,6 +18,7 @@
 #include "models/superfluid/parameters.hpp"
 #include "models/superfluid/state.hpp"
 
+#include <array>
 #include <span>
 #include <string>
 #include <vector>
@@ -53,8 +54,10 @@ public:
   std::vector<EnergyTerm> diagnostics(double time);
   // The wall exchange and the heater's input so far, carried by snapshots into restarted runs
   // (core/simulation.hpp, HasEnergyAccounts).
-  std::vector<EnergyTerm> energy_accounts() const;
-  void restore_energy_accounts(const std::vector<EnergyTerm>& accounts);
+  static auto energy_accounts() {
+    return std::array{EnergyAccount<Model>{"wall_exchange", &Model::exchanged_energy_},
+                      EnergyAccount<Model>{"heater_input", &Model::heater_energy_}};
+  }
   void invalidate_derived() {
     density_valid_ = false;
     constants_valid_ = false;

@@ -89,24 +89,6 @@ EnergyBudget Model<D, Arith>::energy() {
 }
 
 template <int D, class Arith>
-std::vector<EnergyTerm> Model<D, Arith>::energy_accounts() const {
-  return {{"wall_exchange", exchanged_energy_}, {"heater_input", heater_energy_}};
-}
-
-template <int D, class Arith>
-void Model<D, Arith>::restore_energy_accounts(const std::vector<EnergyTerm>& accounts) {
-  for (const EnergyTerm& account : accounts) {
-    if (account.name == "wall_exchange") {
-      exchanged_energy_ = account.value;
-    } else if (account.name == "heater_input") {
-      heater_energy_ = account.value;
-    } else {
-      throw std::invalid_argument("unknown energy account '" + account.name + "'");
-    }
-  }
-}
-
-template <int D, class Arith>
 std::vector<EnergyTerm> Model<D, Arith>::diagnostics(double time) {
   const auto& f = state_.fluid;
   const auto& v_scale = f.velocity.info().scale;

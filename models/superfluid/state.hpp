@@ -8,6 +8,7 @@
 // the positions drifting with their mean velocity. Both copies approximate the same solution to
 // second order; the outputs report their mean and their difference.
 
+#include "core/common_fields.hpp"
 #include "core/particle_sets.hpp"
 #include "core/state_field.hpp"
 #include "core/units.hpp"
@@ -32,7 +33,7 @@ VariableInfo odd_velocity(std::string name) {
 template <int D, class Raw>
 struct Fluid {
   static constexpr SetInfo set{.name = "fluid", .motion = Motion::moving};
-  StateField<Raw> position{{.name = "position", .unit = "m", .components = D}};
+  StateField<Raw> position{position_field<D>()};
   // Copy 1: coflow velocity v, superflow velocity v_s (both odd), specific entropy s (even).
   StateField<Raw> velocity{odd_velocity<D>("velocity")};
   StateField<Raw> superflow_velocity{odd_velocity<D>("superflow_velocity")};
@@ -43,9 +44,8 @@ struct Fluid {
   StateField<Raw> entropy_copy{
       {.name = "entropy_copy", .unit = "J/(kg K)", .scaled_as = "entropy"}};
   // Constants: mass (per unit depth in 2D), C_a of eq. (24).
-  StateField<Raw> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
-  StateField<Raw> density_constant{
-      {.name = "density_constant", .unit = "kg/m^3", .evolved = false, .scaled_as = "density"}};
+  StateField<Raw> mass{mass_field<D>()};
+  StateField<Raw> density_constant{density_constant_field()};
   auto fields() {
     return std::tie(position, velocity, superflow_velocity, entropy, velocity_copy,
                     superflow_velocity_copy, entropy_copy, mass, density_constant);
@@ -55,14 +55,7 @@ struct Fluid {
 // Adiabatic walls (sec. III.C): static dummy particles that take part in the density and the
 // pressure force only.
 template <int D, class Raw>
-struct Dummy {
-  static constexpr SetInfo set{.name = "dummy", .motion = Motion::fixed};
-  StateField<Raw> position{{.name = "position", .unit = "m", .components = D, .evolved = false}};
-  StateField<Raw> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
-  StateField<Raw> density_constant{
-      {.name = "density_constant", .unit = "kg/m^3", .evolved = false, .scaled_as = "density"}};
-  auto fields() { return std::tie(position, mass, density_constant); }
-};
+using Dummy = DummyParticles<D, Raw>; // core/common_fields.hpp
 
 // No-slip walls (sec. III.A-C): static particles in the density and the pressure force like
 // dummies, that also drag the normal fluid toward their own velocity (zero, or a lid's) through
@@ -74,17 +67,12 @@ struct Dummy {
 template <int D, class Raw>
 struct Wall {
   static constexpr SetInfo set{.name = "wall", .motion = Motion::fixed};
-  StateField<Raw> position{{.name = "position", .unit = "m", .components = D, .evolved = false}};
-  StateField<Raw> velocity{{.name = "velocity",
-                            .unit = "m/s",
-                            .parity = Parity::odd,
-                            .components = D,
-                            .evolved = false}};
+  StateField<Raw> position{position_field<D>(false)};
+  StateField<Raw> velocity{prescribed_velocity_field<D>()};
   StateField<Raw> superflow_velocity{odd_velocity<D>("superflow_velocity")};
   StateField<Raw> superflow_velocity_copy{odd_velocity<D>("superflow_velocity_copy")};
-  StateField<Raw> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
-  StateField<Raw> density_constant{
-      {.name = "density_constant", .unit = "kg/m^3", .evolved = false, .scaled_as = "density"}};
+  StateField<Raw> mass{mass_field<D>()};
+  StateField<Raw> density_constant{density_constant_field()};
   auto fields() {
     return std::tie(position, velocity, superflow_velocity, superflow_velocity_copy, mass,
                     density_constant);

@@ -13,6 +13,7 @@
 #include "models/two_fluid/parameters.hpp"
 #include "models/two_fluid/state.hpp"
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -38,8 +39,12 @@ public:
   // the total stays constant: + dissipated, - the walls' work, - the work of the
   // thermomechanical and spin forces (no gradient of this energy).
   EnergyBudget energy();
-  std::vector<EnergyTerm> energy_accounts() const;
-  void restore_energy_accounts(const std::vector<EnergyTerm>& accounts);
+  // The accounts, carried by snapshots into restarted runs (core/simulation.hpp).
+  static auto energy_accounts() {
+    return std::array{EnergyAccount<Model>{"dissipated", &Model::dissipated_},
+                      EnergyAccount<Model>{"wall_work", &Model::wall_work_},
+                      EnergyAccount<Model>{"force_work", &Model::force_work_}};
+  }
   void set_time(double time) { time_ = time; }
   void derived_views(const ViewSink& sink);
   void invalidate_derived() {

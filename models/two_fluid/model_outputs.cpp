@@ -39,26 +39,6 @@ EnergyBudget Model<D, Arith>::energy() {
 }
 
 template <int D, class Arith>
-std::vector<EnergyTerm> Model<D, Arith>::energy_accounts() const {
-  return {{"dissipated", dissipated_}, {"wall_work", wall_work_}, {"force_work", force_work_}};
-}
-
-template <int D, class Arith>
-void Model<D, Arith>::restore_energy_accounts(const std::vector<EnergyTerm>& accounts) {
-  for (const EnergyTerm& account : accounts) {
-    if (account.name == "dissipated") {
-      dissipated_ = account.value;
-    } else if (account.name == "wall_work") {
-      wall_work_ = account.value;
-    } else if (account.name == "force_work") {
-      force_work_ = account.value;
-    } else {
-      throw std::invalid_argument("unknown energy account '" + account.name + "'");
-    }
-  }
-}
-
-template <int D, class Arith>
 void Model<D, Arith>::derived_views(const ViewSink& sink) {
   update_density();
   const ImpulseInputs& in = inputs_;

@@ -245,10 +245,9 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
 } // namespace
 
 std::unique_ptr<Simulation> create(const CaseFile& case_file, const SimulationOptions& options) {
-  return with_dimension<2, 3>(case_file, [&]<int D>() {
-    return with_arithmetic(options.arithmetic,
-                           [&]<class Arith>() { return create_in<D, Arith>(case_file, options); });
-  });
+  return with_dimension_and_arithmetic<2, 3>(
+      case_file, options.arithmetic,
+      [&]<int D, class Arith>() { return create_in<D, Arith>(case_file, options); });
 }
 
 } // namespace revsph::two_fluid

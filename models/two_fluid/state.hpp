@@ -3,6 +3,7 @@
 // superfluid and the normal particles move; the walls are frozen normal particles. A particle
 // keeps its kind (sec. IV.4), so the kind is the particle set.
 
+#include "core/common_fields.hpp"
 #include "core/particle_sets.hpp"
 #include "core/state_field.hpp"
 #include "core/units.hpp"
@@ -22,12 +23,12 @@ inline constexpr int spin_components = D == 2 ? 1 : 3;
 template <int D, class Raw, const char* Name>
 struct MovingKind {
   static constexpr SetInfo set{.name = Name, .motion = Motion::moving};
-  StateField<Raw> position{{.name = "position", .unit = "m", .components = D}};
+  StateField<Raw> position{position_field<D>()};
   StateField<Raw> momentum{{.name = "momentum",
                             .unit = D == 2 ? "kg/s" : "kg m/s",
                             .parity = Parity::odd,
                             .components = D}};
-  StateField<Raw> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
+  StateField<Raw> mass{mass_field<D>()};
   StateField<Raw> temperature{{.name = "temperature", .unit = "K", .evolved = false}};
   StateField<Raw> spin{
       {.name = "spin", .unit = "1/s", .components = spin_components<D>, .evolved = false}};
@@ -45,13 +46,9 @@ inline constexpr char normal_name[] = "normal";
 template <int D, class Raw>
 struct Wall {
   static constexpr SetInfo set{.name = "wall", .motion = Motion::fixed};
-  StateField<Raw> position{{.name = "position", .unit = "m", .components = D, .evolved = false}};
-  StateField<Raw> velocity{{.name = "velocity",
-                            .unit = "m/s",
-                            .parity = Parity::odd,
-                            .components = D,
-                            .evolved = false}};
-  StateField<Raw> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
+  StateField<Raw> position{position_field<D>(false)};
+  StateField<Raw> velocity{prescribed_velocity_field<D>()};
+  StateField<Raw> mass{mass_field<D>()};
   StateField<Raw> temperature{{.name = "temperature", .unit = "K", .evolved = false}};
   StateField<Raw> spin{
       {.name = "spin", .unit = "1/s", .components = spin_components<D>, .evolved = false}};

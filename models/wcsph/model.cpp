@@ -76,11 +76,7 @@ void Model<D, Arith>::update_constants() {
   if (constants_valid_) {
     return;
   }
-  CoordinateArrays<D> wall_position;
-  for (int k = 0; k < D; ++k) {
-    wall_position[k] = CarrierField<Arith>{&state_.wall.position}.reals(k);
-  }
-  walls_.place(std::move(wall_position));
+  walls_.template place_field<Arith>(state_.wall.position);
   constants_valid_ = true;
 }
 

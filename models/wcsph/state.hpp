@@ -3,6 +3,7 @@
 // every field with its unit, parity under time reversal and the quantity whose fixed-point scale
 // it is stored in (chosen at setup: set_scales).
 
+#include "core/common_fields.hpp"
 #include "core/particle_sets.hpp"
 #include "core/state_field.hpp"
 #include "core/units.hpp"
@@ -16,12 +17,11 @@ namespace revsph::wcsph {
 template <int D, class Raw>
 struct Fluid {
   static constexpr SetInfo set{.name = "fluid", .motion = Motion::moving};
-  StateField<Raw> position{{.name = "position", .unit = "m", .components = D}};
+  StateField<Raw> position{position_field<D>()};
   StateField<Raw> velocity{
       {.name = "velocity", .unit = "m/s", .parity = Parity::odd, .components = D}};
-  StateField<Raw> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
-  StateField<Raw> density_constant{
-      {.name = "density_constant", .unit = "kg/m^3", .evolved = false, .scaled_as = "density"}};
+  StateField<Raw> mass{mass_field<D>()};
+  StateField<Raw> density_constant{density_constant_field()};
   auto fields() { return std::tie(position, velocity, mass, density_constant); }
 };
 
@@ -29,21 +29,14 @@ struct Fluid {
 template <int D, class Raw>
 struct Wall {
   static constexpr SetInfo set{.name = "wall", .motion = Motion::fixed};
-  StateField<Raw> position{{.name = "position", .unit = "m", .components = D, .evolved = false}};
+  StateField<Raw> position{position_field<D>(false)};
   auto fields() { return std::tie(position); }
 };
 
 // Dummy particles (App. A): fixed walls that take part in the density and the pressure force like
 // fluid particles, with their own masses and integration constants.
 template <int D, class Raw>
-struct Dummy {
-  static constexpr SetInfo set{.name = "dummy", .motion = Motion::fixed};
-  StateField<Raw> position{{.name = "position", .unit = "m", .components = D, .evolved = false}};
-  StateField<Raw> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
-  StateField<Raw> density_constant{
-      {.name = "density_constant", .unit = "kg/m^3", .evolved = false, .scaled_as = "density"}};
-  auto fields() { return std::tie(position, mass, density_constant); }
-};
+using Dummy = DummyParticles<D, Raw>; // core/common_fields.hpp
 
 template <int D, class Raw>
 struct State {

@@ -22,12 +22,11 @@ namespace revsph::minimal {
 template <int D>
 struct Gas {
   static constexpr SetInfo set{.name = "gas", .motion = Motion::moving};
-  StateField<std::int64_t> position{{.name = "position", .unit = "m", .components = D}};
+  StateField<std::int64_t> position{position_field<D>()};
   StateField<std::int64_t> velocity{
       {.name = "velocity", .unit = "m/s", .parity = Parity::odd, .components = D}};
-  StateField<std::int64_t> mass{{.name = "mass", .unit = mass_unit<D>, .evolved = false}};
-  StateField<std::int64_t> density_constant{
-      {.name = "density_constant", .unit = "kg/m^3", .evolved = false, .scaled_as = "density"}};
+  StateField<std::int64_t> mass{mass_field<D>()};
+  StateField<std::int64_t> density_constant{density_constant_field()};
   auto fields() { return std::tie(position, velocity, mass, density_constant); }
 };
 

@@ -141,11 +141,30 @@ def member(key, index):
     return f"const Key<{value_type}> {name} = {function}({', '.join(arguments)});"
 
 
+def is_literal(default, kind):
+    """Whether a default's text is a value (read() can use it) rather than a description."""
+    if kind == "number":
+        try:
+            float(default)
+            return True
+        except ValueError:
+            return False
+    if kind == "integer":
+        return re.fullmatch(r"-?[0-9]+", default) is not None
+    if kind == "boolean":
+        return default in ("true", "false")
+    return kind == "string" and len(default) >= 2 and default[0] == default[-1] == '"'
+
+
 def field_reader(keys):
     """read_fields: every key with a `field` read into that member of the parameters."""
     lines = []
     for key in keys:
         if "field" in key:
+            if key["type"] in VALUE_TYPES and key["default"] != "required" and \
+                    not is_literal(key["default"], key["type"]):
+                raise KeyFileError(f"{key['path']}: a field needs a literal default or "
+                                   "\"required\" (this one is computed: read it by hand)")
             field = key["name"] if key["field"] is True else key["field"]
             lines.append(f"    p.{field} = {key['name']}.read(case_file);")
     if not lines:
