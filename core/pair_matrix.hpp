@@ -24,26 +24,19 @@ template <int D, class Entry>
 void fill_pair_matrix(const SlotLayout<D>& layout, const Entry& f, PairMatrix& matrix) {
   const std::size_t n = layout.carrier_count();
   const std::span<const std::uint32_t> carrier = layout.carrier_of_slot();
-  const CoordinateView<D> x = layout.position();
   std::vector<Eigen::Triplet<double, int>> entries;
   entries.reserve(n + 2 * layout.pairs().pair_count());
   const double diagonal = f(0.0);
   for (std::size_t c = 0; c < n; ++c) {
     entries.emplace_back(static_cast<int>(c), static_cast<int>(c), diagonal);
   }
-  for (const HalfPairList::Stripe& stripe : layout.pairs().stripes()) {
-    for (std::uint32_t local = 0; local < stripe.slot_count; ++local) {
-      const std::uint32_t a = stripe.first_slot + local;
-      for (std::uint32_t k = stripe.offsets[local]; k < stripe.offsets[local + 1]; ++k) {
-        const std::uint32_t b = stripe.partners[k];
-        PairGeometry<D> pair;
-        detail::fill_geometry<D>(x, a, x, b, pair);
-        const double value = f(pair.r);
-        entries.emplace_back(static_cast<int>(carrier[a]), static_cast<int>(carrier[b]), value);
-        entries.emplace_back(static_cast<int>(carrier[b]), static_cast<int>(carrier[a]), value);
-      }
-    }
-  }
+  for_each_pair<D>(layout, [&](const PairGeometry<D>& pair) {
+    const double value = f(pair.r);
+    entries.emplace_back(static_cast<int>(carrier[pair.a]), static_cast<int>(carrier[pair.b]),
+                         value);
+    entries.emplace_back(static_cast<int>(carrier[pair.b]), static_cast<int>(carrier[pair.a]),
+                         value);
+  });
   matrix.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
   matrix.setFromTriplets(entries.begin(), entries.end()); // sorted by row, then column
 }

@@ -212,6 +212,25 @@ void sum_pairs(const SlotLayout<D>& layout, const Term& term, PairSums<Arith, Te
   sum_pairs_over<Arith>(layout, layout.pairs(), term, sums, cross, then);
 }
 
+// Every listed pair once, one after the other in slot order: visit(pair), pair.a and pair.b its
+// slots. For what is built pair by pair rather than summed (a sparse matrix's entries): each
+// pair's geometry is the same whichever way round it is listed (x_ab negated exactly, r alike),
+// so what the visitor makes of it depends on the positions alone, not on the cell size.
+template <int D, class Visit>
+void for_each_pair(const SlotLayout<D>& layout, Visit&& visit) {
+  const CoordinateView<D> x = layout.position();
+  PairGeometry<D> pair;
+  for (const HalfPairList::Stripe& stripe : layout.pairs().stripes()) {
+    for (std::uint32_t local = 0; local < stripe.slot_count; ++local) {
+      const std::uint32_t a = stripe.first_slot + local;
+      for (std::uint32_t k = stripe.offsets[local]; k < stripe.offsets[local + 1]; ++k) {
+        detail::fill_geometry<D>(x, a, x, stripe.partners[k], pair);
+        visit(std::as_const(pair));
+      }
+    }
+  }
+}
+
 // Only the one-sided terms of fixed targets: for every wanted slot a, the sum over the targets
 // listed for it of term.cross_pair, in ascending target order, plus its self terms.
 template <class Arith, int D, class Term>

@@ -1,7 +1,10 @@
 #include "models/wcsph/initial_state_correction.hpp"
 
+#include "core/arithmetic.hpp"
 #include "core/kernel_wendland.hpp"
-#include "core/neighbour_rows.hpp"
+#include "core/pair_sum.hpp"
+#include "core/slot_layout.hpp"
+#include "core/summation_density.hpp"
 
 #include <Eigen/SparseCore>
 
@@ -9,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <numeric>
 #include <optional>
 #include <random>
 #include <sstream>
@@ -180,22 +184,63 @@ void apply_jitter(CoordinateArrays<D>& points, const IscSettings& settings) {
   }
 }
 
-// Eq. (4), the sum including b = a, in ascending neighbour order (deterministic).
+// The movable particles (set 0, carriers 0 .. n-1) and the fixed ones (set 1) in one slot layout
+// of the core's pair loop, rebuilt at every Newton iteration, with their masses by slot.
 template <int D>
-void compute_density(const WendlandQuintic<D>& kernel, std::span<const double> movable_mass,
-                     std::span<const double> fixed_mass, const NeighbourRows<D>& rows,
+struct IscLayout {
+  SlotLayout<D> layout;
+  std::vector<double> slot_mass;
+
+  IscLayout(const Box<D>& domain, double support_radius, std::size_t movable, std::size_t fixed)
+      : layout(domain, support_radius, {{"movable", movable}, {"fixed", fixed}}) {}
+
+  void build(const CoordinateArrays<D>& movable, std::span<const double> movable_mass,
+             const CoordinateArrays<D>& fixed, std::span<const double> fixed_mass,
+             double support_radius) {
+    const std::size_t n = movable_mass.size();
+    layout.build(
+        [&](int axis, std::size_t c) { return c < n ? movable[axis][c] : fixed[axis][c - n]; },
+        support_radius,
+        Gathered{[&](std::size_t c) { return c < n ? movable_mass[c] : fixed_mass[c - n]; },
+                 &slot_mass});
+  }
+  std::span<const std::uint32_t> movable_slots() const { return layout.slots_of_set(0); }
+};
+
+// Eq. (4), the sum including b = a (core/summation_density.hpp), in exact integer sums at the
+// rest density's scale with 48 bits below it: the same bits for any thread count and cell size.
+template <int D>
+void compute_density(const WendlandQuintic<D>& kernel, const IscLayout<D>& isc, double rest_density,
                      std::vector<double>& density) {
-  const double self_weight = kernel.value(0.0);
-  density.resize(movable_mass.size());
-  rows.for_each_row([&](std::size_t a, const NeighbourRow<D>& row) {
-    double sum = movable_mass[a] * self_weight;
-    row.for_each_movable(
-        [&](const RowNeighbour<D>& b) { sum += movable_mass[b.index] * kernel.value(b.distance); });
-    row.for_each_fixed(
-        [&](const RowNeighbour<D>& f) { sum += fixed_mass[f.index] * kernel.value(f.distance); });
-    density[a] = sum;
-  });
+  PairSums<FixedArithmetic, 1> sums(
+      SummedQuantity{"density", fixedpoint::Scale::covering(rest_density, 48)});
+  sum_pairs<FixedArithmetic>(
+      isc.layout, SummationDensityTerm<D, FixedArithmetic>{kernel, isc.slot_mass, {}}, sums);
+  const std::span<const std::uint32_t> slots = isc.movable_slots();
+  density.resize(slots.size());
+  for (std::size_t a = 0; a < slots.size(); ++a) {
+    density[a] = sums.value(0, slots[a]);
+  }
 }
+
+// The diagonal block of the Jacobian, J[a, a] = sum_b m_b w'(r_ab) e_ab (all b, fixed particles
+// included), as a pair term: w'(r) e_ab = (w'(r) / r) x_ab, no division by r.
+template <int D>
+struct DensityGradientTerm {
+  static constexpr int width = D;
+  const WendlandQuintic<D>& kernel;
+  std::span<const double> mass; // by slot
+
+  void pair(const PairGeometry<D>& p, std::array<double, D>& to_a,
+            std::array<double, D>& to_b) const {
+    const double factor = kernel.derivative_over_r(p.r);
+    for (int k = 0; k < D; ++k) {
+      const double g = factor * p.x_ab[k];
+      to_a[k] = mass[p.b] * g;
+      to_b[k] = -mass[p.a] * g;
+    }
+  }
+};
 
 double max_relative_error(const std::vector<double>& density, double rest_density) {
   double largest = 0.0;
@@ -216,15 +261,23 @@ struct Jacobian {
   Eigen::VectorXd inverse_mass;
 };
 
+// J in compressed rows, each row's columns ascending. The diagonal blocks are exact sums (scale:
+// rho0 / h with 40 bits below, 2^23 times that above); the off-diagonal entries come from the
+// layout's pairs of two movable particles, each pair once, so the matrix is a function of the
+// positions alone.
 template <int D>
-Jacobian assemble_jacobian(const WendlandQuintic<D>& kernel, std::span<const double> movable_mass,
-                           std::span<const double> fixed_mass, const NeighbourRows<D>& rows) {
+Jacobian assemble_jacobian(const WendlandQuintic<D>& kernel, const IscLayout<D>& isc,
+                           std::span<const double> movable_mass, double rest_density) {
   const std::size_t n = movable_mass.size();
-  const std::size_t entries = D * (n + rows.movable_pair_count());
+  const std::size_t pairs = isc.layout.pairs().pair_count();
   if (D * n > static_cast<std::size_t>(std::numeric_limits<int>::max()) ||
-      entries > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+      D * (n + 2 * pairs) > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
     throw std::length_error("initial state correction: too many particles for one linear system");
   }
+  PairSums<FixedArithmetic, D> diagonal(components_of<D>(
+      "density gradient", fixedpoint::Scale::covering(rest_density / kernel.support_radius(), 40)));
+  sum_pairs<FixedArithmetic>(isc.layout, DensityGradientTerm<D>{kernel, isc.slot_mass}, diagonal);
+
   Jacobian jacobian{RowMatrix(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(D * n)),
                     Eigen::VectorXd(static_cast<Eigen::Index>(D * n))};
   for (std::size_t c = 0; c < n; ++c) {
@@ -232,58 +285,73 @@ Jacobian assemble_jacobian(const WendlandQuintic<D>& kernel, std::span<const dou
       jacobian.inverse_mass[static_cast<Eigen::Index>(D * c + k)] = 1.0 / movable_mass[c];
     }
   }
-  // Filled in place (rows are independent, so in parallel) rather than through triplets.
-  RowMatrix& matrix = jacobian.matrix;
-  matrix.resizeNonZeros(static_cast<Eigen::Index>(entries));
-  int* const starts = matrix.outerIndexPtr();
-  starts[0] = 0;
-  for (std::size_t a = 0; a < n; ++a) {
-    starts[a + 1] = starts[a] + static_cast<int>(D * (1 + rows.movable_neighbour_count(a)));
-  }
-  int* const columns = matrix.innerIndexPtr();
-  double* const values = matrix.valuePtr();
-  // w'(r_ab) e_ab = (w'(r)/r) x_ab: no division by r, finite for coincident particles.
-  const auto gradient = [&](const RowNeighbour<D>& b) {
-    const double factor = kernel.derivative_over_r(b.distance);
-    Vec<D> g = b.separation;
-    for (int k = 0; k < D; ++k) {
-      g[k] *= factor;
-    }
-    return g;
+  const std::span<const std::uint32_t> carrier = isc.layout.carrier_of_slot();
+  const auto movable_pair = [&](const PairGeometry<D>& pair) {
+    return carrier[pair.a] < n && carrier[pair.b] < n;
   };
-  rows.for_each_row([&](std::size_t a, const NeighbourRow<D>& row) {
-    Vec<D> diagonal{};
-    int slot = starts[a];
-    int diagonal_slot = -1;
-    // Rows list their neighbours ascending, so the row's columns come out ascending if the
-    // diagonal block is placed before the first neighbour above a.
-    row.for_each_movable([&](const RowNeighbour<D>& b) {
-      if (diagonal_slot < 0 && b.index > a) {
-        diagonal_slot = slot;
-        slot += D;
-      }
-      const Vec<D> g = gradient(b);
-      for (int k = 0; k < D; ++k) {
-        diagonal[k] += movable_mass[b.index] * g[k];
-        columns[slot + k] = static_cast<int>(D * b.index + k);
-        values[slot + k] = -movable_mass[b.index] * g[k];
-      }
-      slot += D;
-    });
-    if (diagonal_slot < 0) {
-      diagonal_slot = slot;
-    }
-    row.for_each_fixed([&](const RowNeighbour<D>& f) {
-      const Vec<D> g = gradient(f);
-      for (int k = 0; k < D; ++k) {
-        diagonal[k] += fixed_mass[f.index] * g[k];
-      }
-    });
-    for (int k = 0; k < D; ++k) {
-      columns[diagonal_slot + k] = static_cast<int>(D * a + k);
-      values[diagonal_slot + k] = diagonal[k];
+  // Row lengths: the diagonal block and one block per movable neighbour.
+  std::vector<int> row_start(n + 1, 0);
+  for_each_pair<D>(isc.layout, [&](const PairGeometry<D>& pair) {
+    if (movable_pair(pair)) {
+      row_start[carrier[pair.a] + 1] += D;
+      row_start[carrier[pair.b] + 1] += D;
     }
   });
+  for (std::size_t a = 0; a < n; ++a) {
+    row_start[a + 1] += row_start[a] + D;
+  }
+  RowMatrix& matrix = jacobian.matrix;
+  matrix.resizeNonZeros(row_start[n]);
+  std::copy(row_start.begin(), row_start.end(), matrix.outerIndexPtr());
+  int* const columns = matrix.innerIndexPtr();
+  double* const values = matrix.valuePtr();
+  const std::span<const std::uint32_t> slots = isc.movable_slots();
+  std::vector<int> next(n);
+  for (std::size_t a = 0; a < n; ++a) {
+    for (int k = 0; k < D; ++k) {
+      columns[row_start[a] + k] = static_cast<int>(D * a + k);
+      values[row_start[a] + k] = diagonal.value(k, slots[a]);
+    }
+    next[a] = row_start[a] + D;
+  }
+  // J[a, c] = -m_c w'(r_ac) e_ac and J[c, a] = -m_a w'(r_ca) e_ca = m_a w'(r_ac) e_ac.
+  for_each_pair<D>(isc.layout, [&](const PairGeometry<D>& pair) {
+    if (!movable_pair(pair)) {
+      return;
+    }
+    const std::size_t a = carrier[pair.a];
+    const std::size_t c = carrier[pair.b];
+    const double factor = kernel.derivative_over_r(pair.r);
+    for (int k = 0; k < D; ++k) {
+      const double g = factor * pair.x_ab[k];
+      columns[next[a] + k] = static_cast<int>(D * c + k);
+      values[next[a] + k] = -movable_mass[c] * g;
+      columns[next[c] + k] = static_cast<int>(D * a + k);
+      values[next[c] + k] = movable_mass[a] * g;
+    }
+    next[a] += D;
+    next[c] += D;
+  });
+  // Each row's blocks in ascending column order (the pairs came in slot order).
+#pragma omp parallel for schedule(static)
+  for (std::size_t a = 0; a < n; ++a) {
+    const int blocks = (row_start[a + 1] - row_start[a]) / D;
+    std::vector<int> order(static_cast<std::size_t>(blocks));
+    std::iota(order.begin(), order.end(), 0);
+    const int first = row_start[a];
+    std::sort(order.begin(), order.end(),
+              [&](int x, int y) { return columns[first + D * x] < columns[first + D * y]; });
+    std::vector<int> sorted_columns(static_cast<std::size_t>(D * blocks));
+    std::vector<double> sorted_values(sorted_columns.size());
+    for (int i = 0; i < blocks; ++i) {
+      for (int k = 0; k < D; ++k) {
+        sorted_columns[D * i + k] = columns[first + D * order[i] + k];
+        sorted_values[D * i + k] = values[first + D * order[i] + k];
+      }
+    }
+    std::copy(sorted_columns.begin(), sorted_columns.end(), columns + first);
+    std::copy(sorted_values.begin(), sorted_values.end(), values + first);
+  }
   return jacobian;
 }
 
@@ -374,13 +442,13 @@ IscReport correct_initial_state(CoordinateArrays<D>& movable, std::span<const do
   require_inside<D>(position, domain, "movable", "would be moved by the initial jitter to");
 
   const WendlandQuintic<D> kernel(support_radius);
-  NeighbourRows<D> rows(domain, support_radius, n, view_of<D>(fixed));
+  IscLayout<D> isc(domain, support_radius, n, fixed_mass.size());
   std::vector<double> density;
   IscReport report;
   for (;;) {
     // Step 4 of the paper.
-    rows.update(view_of<D>(position));
-    compute_density<D>(kernel, movable_mass, fixed_mass, rows, density);
+    isc.build(position, movable_mass, fixed, fixed_mass, support_radius);
+    compute_density<D>(kernel, isc, rest_density, density);
     report.residuals.push_back(max_relative_error(density, rest_density));
     if (report.residuals.back() <= settings.tolerance) {
       report.converged = true;
@@ -393,7 +461,7 @@ IscReport correct_initial_state(CoordinateArrays<D>& movable, std::span<const do
       report.stopped_early = "the density is not finite";
       break;
     }
-    const Jacobian jacobian = assemble_jacobian<D>(kernel, movable_mass, fixed_mass, rows);
+    const Jacobian jacobian = assemble_jacobian<D>(kernel, isc, movable_mass, rest_density);
     if (const std::optional<std::size_t> stuck = first_zero_row(jacobian.matrix)) {
       report.stopped_early = "movable particle " + std::to_string(*stuck) +
                              " has no neighbour closer than the support radius, so no "

@@ -5,6 +5,7 @@
 #include "models/wcsph/initial_state_correction.hpp"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -139,6 +140,20 @@ TEST(InitialStateCorrection, SameSeedSameBitsOtherSeedOtherPositions) {
   correct(third, other);
   EXPECT_EQ(first.positions, second.positions);
   EXPECT_NE(first.positions, third.positions);
+}
+
+// The densities and the Jacobian's diagonal are exact integer sums and the off-diagonal entries
+// are made pair by pair: the corrected positions do not depend on the thread count.
+TEST(InitialStateCorrection, SameBitsOnOneAndTwoThreads) {
+  Patch one_thread, two_threads;
+  const IscSettings settings = fig1_settings(one_thread.dr);
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  correct(one_thread, settings);
+  omp_set_num_threads(2);
+  correct(two_threads, settings);
+  omp_set_num_threads(threads);
+  EXPECT_EQ(one_thread.positions, two_threads.positions);
 }
 
 TEST(InitialStateCorrection, FixedParticlesCountButDoNotMove) {

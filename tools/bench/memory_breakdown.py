@@ -33,7 +33,6 @@ COMPONENTS = [
     ("derived_views", "derived views (outside a snapshot)"),
     ("HalfPairList::", "pair list"),
     ("find_neighbours", "neighbour list (initial state correction)"),
-    ("NeighbourRows", "neighbour list (initial state correction)"),
     ("SlotLayout", "slot layout: gathered copies of the state"),
     ("sum_pairs_over", "pair sums: per-slot accumulators"),
     ("update_derived", "derived per-slot fields (density, pressure, ...)"),
