@@ -238,22 +238,4 @@ concept EquationOfState = requires(const Eos& eos, double x) {
   { constants_error(eos) } -> std::same_as<std::optional<std::string>>;
 };
 
-// Single quantities, for callers that need one (each costs a full state()).
-template <EquationOfState Eos>
-double pressure(const Eos& eos, double density, double specific_entropy) {
-  return state(eos, density, specific_entropy).pressure;
-}
-template <EquationOfState Eos>
-double specific_energy(const Eos& eos, double density, double specific_entropy) {
-  return state(eos, density, specific_entropy).specific_energy;
-}
-template <EquationOfState Eos>
-double chemical_potential(const Eos& eos, double density, double specific_entropy) {
-  return state(eos, density, specific_entropy).chemical_potential;
-}
-template <EquationOfState Eos>
-double sound_speed_squared(const Eos& eos, double density, double specific_entropy) {
-  return state(eos, density, specific_entropy).sound_speed_squared;
-}
-
 } // namespace revsph::entropic

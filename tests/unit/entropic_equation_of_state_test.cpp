@@ -134,8 +134,8 @@ void expect_sound_speed_is_isentropic_derivative(const Eos& eos) {
     const double rho = point.density;
     const double sigma = point.specific_entropy;
     const double d_rho = relative_step * rho;
-    const double numeric = (revsph::entropic::pressure(eos, rho + d_rho, sigma) -
-                            revsph::entropic::pressure(eos, rho - d_rho, sigma)) /
+    const double numeric = (revsph::entropic::state(eos, rho + d_rho, sigma).pressure -
+                            revsph::entropic::state(eos, rho - d_rho, sigma).pressure) /
                            (2.0 * d_rho);
     const ThermodynamicState state = revsph::entropic::state(eos, rho, sigma);
     EXPECT_GT(state.sound_speed_squared, 0.0);
@@ -170,7 +170,7 @@ TEST(EntropicEquationOfState, StiffenedGasReferenceState) {
     EXPECT_NEAR(std::sqrt(state.sound_speed_squared), eos.sound_speed, 1e-14 * eos.sound_speed);
     // And the one-parameter family through it: p(rho0, s) = p0 + rho0 c0^2 / gamma (e^sigma/c_V - 1).
     const double sigma = 0.3 * eos.heat_capacity;
-    EXPECT_NEAR(revsph::entropic::pressure(eos, eos.rest_density, sigma),
+    EXPECT_NEAR(revsph::entropic::state(eos, eos.rest_density, sigma).pressure,
                 eos.reference_pressure + eos.rest_density * eos.sound_speed * eos.sound_speed /
                                              eos.gamma * std::expm1(0.3),
                 1e-13 * eos.rest_density * eos.sound_speed * eos.sound_speed);
@@ -195,7 +195,7 @@ TEST(EntropicEquationOfState, PrintedStiffenedGasChemicalPotentialIsWrongAwayFro
     for (const double sigma : {-1.0, 0.5, 2.0}) {
       const double s = rho * sigma;
       const double numeric = finite_differences(eos, rho, s).by_density;
-      const double corrected = revsph::entropic::chemical_potential(eos, rho, sigma);
+      const double corrected = revsph::entropic::state(eos, rho, sigma).chemical_potential;
       const double printed = printed_chemical_potential(eos, rho, s);
       const double scale = std::fabs(numeric) + std::fabs(stiffening(eos)) / rho;
       EXPECT_NEAR(corrected, numeric, tolerance * scale)
@@ -239,7 +239,8 @@ TEST(EntropicEquationOfState, IdealGasAdiabaticLawAndPressureFromEnergy) {
 template <class Eos>
 void expect_inverse_recovers_entropy(const Eos& eos) {
   for (const Point& point : points(rest_density(eos), eos.heat_capacity)) {
-    const double u = revsph::entropic::specific_energy(eos, point.density, point.specific_entropy);
+    const double u =
+        revsph::entropic::state(eos, point.density, point.specific_entropy).specific_energy;
     const std::optional<double> sigma =
         revsph::entropic::specific_entropy_for_energy(eos, point.density, u);
     ASSERT_TRUE(sigma.has_value()) << "rho = " << point.density << ", u = " << u;
