@@ -210,27 +210,24 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
                      {"mass", masses},
                      {"entropy_flux", parameters.entropy_flux_scale},
                      {"temperature", fixedpoint::Scale::covering(hottest_wall, 52)}});
-  fill_vector_field<FixedArithmetic, D>(case_file, "particles", gas_positions, state.gas.position);
-  state.gas.momentum.resize(gas_positions.size());     // at rest
-  state.gas.entropy_flux.resize(gas_positions.size()); // w = 0
-  fill_scalar_field<FixedArithmetic>(case_file, "fixed_point.entropy_exponent", gas_entropies,
-                                     state.gas.entropy);
-  fill_scalar_field<FixedArithmetic>(case_file, "initial.density", gas_masses, state.gas.mass);
-  fill_vector_field<FixedArithmetic, D>(case_file, "particles", wall_positions,
-                                        state.wall.position);
-  fill_vector_field<FixedArithmetic, D>(case_file, "particles", dummy_positions,
-                                        state.dummy.position);
-  fill_scalar_field<FixedArithmetic>(case_file, "fixed_point.entropy_exponent", dummy_entropies,
-                                     state.dummy.entropy);
-  fill_scalar_field<FixedArithmetic>(case_file, "initial.density", dummy_masses, state.dummy.mass);
-  fill_vector_field<FixedArithmetic, D>(case_file, "particles", thermal_positions,
-                                        state.thermal.position);
-  fill_scalar_field<FixedArithmetic>(case_file, "fixed_point.entropy_exponent", thermal_entropies,
-                                     state.thermal.entropy);
-  fill_scalar_field<FixedArithmetic>(case_file, "initial.density", thermal_masses,
-                                     state.thermal.mass);
-  fill_scalar_field<FixedArithmetic>(case_file, "particles", thermal_temperatures,
-                                     state.thermal.temperature);
+  // The gas at rest, its entropy flux w = 0.
+  fill_set<FixedArithmetic, D>(case_file, state.gas, gas_positions.size(),
+                               {{"position", "particles", gas_positions},
+                                {"momentum", "particles", 0.0},
+                                {"entropy_flux", "particles", 0.0},
+                                {"entropy", "fixed_point.entropy_exponent", gas_entropies},
+                                {"mass", "initial.density", gas_masses}});
+  fill_set<FixedArithmetic, D>(case_file, state.wall, wall_positions.size(),
+                               {{"position", "particles", wall_positions}});
+  fill_set<FixedArithmetic, D>(case_file, state.dummy, dummy_positions.size(),
+                               {{"position", "particles", dummy_positions},
+                                {"entropy", "fixed_point.entropy_exponent", dummy_entropies},
+                                {"mass", "initial.density", dummy_masses}});
+  fill_set<FixedArithmetic, D>(case_file, state.thermal, thermal_positions.size(),
+                               {{"position", "particles", thermal_positions},
+                                {"entropy", "fixed_point.entropy_exponent", thermal_entropies},
+                                {"mass", "initial.density", thermal_masses},
+                                {"temperature", "particles", thermal_temperatures}});
 
   SimulationInfo info = simulation_info(case_file, "entropic", D, Arithmetic::fixed, parameters.dt);
   info.splitting = parameters.splitting;

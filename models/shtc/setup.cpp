@@ -140,17 +140,15 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
                      {"log_det", parameters.distortion_scales.log_det},
                      {"unimodular", parameters.distortion_scales.unimodular},
                      {"density", parameters.density_scale}});
-  fill_vector_field<FixedArithmetic, D>(case_file, "particles", material_positions,
-                                        state.material.position);
-  fill_vector_field<FixedArithmetic, D>(case_file, "particles", velocities,
-                                        state.material.velocity);
-  fill_vector_field<FixedArithmetic, D>(case_file, "particles", boundary_positions,
-                                        state.boundary.position);
-  fill_vector_field<FixedArithmetic, D>(case_file, "particles", boundary_velocities,
-                                        state.boundary.wall_velocity);
+  fill_set<FixedArithmetic, D>(
+      case_file, state.material, material_positions.size(),
+      {{"position", "particles", material_positions}, {"velocity", "particles", velocities}});
+  fill_set<FixedArithmetic, D>(case_file, state.boundary, boundary_positions.size(),
+                               {{"position", "particles", boundary_positions},
+                                {"wall_velocity", "particles", boundary_velocities},
+                                {"drive_time", "particles", 0.0},
+                                {"wall_work", "particles", 0.0}});
   const bool moving_walls = any_wall_moves(state);
-  state.boundary.drive_time.resize(boundary_positions.size());
-  state.boundary.wall_work.resize(boundary_positions.size());
   set_undistorted<D>(case_file, parameters.distortion_scales, state.material.carried,
                      material_positions.size());
   set_undistorted<D>(case_file, parameters.distortion_scales, state.boundary.carried,

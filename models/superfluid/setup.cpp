@@ -122,32 +122,31 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
                      {"mass", masses},
                      {"density", parameters.density_scale}});
 
-  fill_vector_field<Arith, D>(case_file, "particles", fluid_positions, fluid.position);
-  // Both copies start equal, raw for raw.
-  for (StateField<Raw>* field : {&fluid.velocity, &fluid.velocity_copy}) {
-    fill_vector_field<Arith, D>(case_file, "initial.random_velocity", initial.velocity, *field);
-  }
-  for (StateField<Raw>* field : {&fluid.superflow_velocity, &fluid.superflow_velocity_copy}) {
-    fill_vector_field<Arith, D>(case_file, "initial.random_counterflow", initial.superflow_velocity,
-                                *field);
-  }
-  for (StateField<Raw>* field : {&fluid.entropy, &fluid.entropy_copy}) {
-    fill_scalar_field<Arith>(case_file, "physics.reference_entropy", initial.entropy, *field);
-  }
-  fill_scalar_field<Arith>(case_file, "physics.rest_density", fluid_masses, fluid.mass);
-  fluid.density_constant.resize(fluid_positions.size());
-  fill_vector_field<Arith, D>(case_file, "particles", dummy_positions, state.dummy.position);
-  fill_scalar_field<Arith>(case_file, "physics.rest_density", dummy_masses, state.dummy.mass);
-  state.dummy.density_constant.resize(dummy_positions.size());
-  fill_vector_field<Arith, D>(case_file, "particles", wall_positions, state.wall.position);
-  fill_vector_field<Arith, D>(case_file, "particles", wall_velocities, state.wall.velocity);
+  // Both copies start equal, raw for raw; the density constants at zero
+  // (initialise_density_constants sets them).
+  fill_set<Arith, D>(
+      case_file, fluid, fluid_positions.size(),
+      {{"position", "particles", fluid_positions},
+       {"velocity", "initial.random_velocity", initial.velocity},
+       {"velocity_copy", "initial.random_velocity", initial.velocity},
+       {"superflow_velocity", "initial.random_counterflow", initial.superflow_velocity},
+       {"superflow_velocity_copy", "initial.random_counterflow", initial.superflow_velocity},
+       {"entropy", "physics.reference_entropy", initial.entropy},
+       {"entropy_copy", "physics.reference_entropy", initial.entropy},
+       {"mass", "physics.rest_density", fluid_masses},
+       {"density_constant", "particles", 0.0}});
+  fill_set<Arith, D>(case_file, state.dummy, dummy_positions.size(),
+                     {{"position", "particles", dummy_positions},
+                      {"mass", "physics.rest_density", dummy_masses},
+                      {"density_constant", "particles", 0.0}});
   // No counterflow at the start: v_s = v.
-  for (StateField<Raw>* field :
-       {&state.wall.superflow_velocity, &state.wall.superflow_velocity_copy}) {
-    fill_vector_field<Arith, D>(case_file, "particles", wall_velocities, *field);
-  }
-  fill_scalar_field<Arith>(case_file, "physics.rest_density", wall_masses, state.wall.mass);
-  state.wall.density_constant.resize(wall_positions.size());
+  fill_set<Arith, D>(case_file, state.wall, wall_positions.size(),
+                     {{"position", "particles", wall_positions},
+                      {"velocity", "particles", wall_velocities},
+                      {"superflow_velocity", "particles", wall_velocities},
+                      {"superflow_velocity_copy", "particles", wall_velocities},
+                      {"mass", "physics.rest_density", wall_masses},
+                      {"density_constant", "particles", 0.0}});
 
   SimulationInfo info =
       simulation_info(case_file, "superfluid", D, options.arithmetic, parameters.dt);

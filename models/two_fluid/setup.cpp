@@ -201,26 +201,23 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
               {"spin", spin_scale}});
   std::mt19937_64 velocity_generator(parameters.seed);
   auto fill_moving = [&](auto& set, const KindParticles<D>& kind) {
-    fill_vector_field<Arith, D>(case_file, "particles", kind.position, set.position);
-    fill_vector_field<Arith, D>(
-        case_file, "initial.random_velocity",
-        initial_momenta<D>(kind, parameters.random_velocity, velocity_generator), set.momentum);
-    fill_scalar_field<Arith>(case_file, "physics.superfluid_density", kind.mass, set.mass);
-    fill_scalar_field<Arith>(case_file, "physics.temperature",
-                             std::vector<double>(kind.position.size(), parameters.temperature),
-                             set.temperature);
-    fill_scalar_field<Arith>(case_file, "spin.coefficient",
-                             std::vector<double>(kind.position.size(), parameters.spin), set.spin);
+    fill_set<Arith, D>(case_file, set, kind.position.size(),
+                       {{"position", "particles", kind.position},
+                        {"momentum", "initial.random_velocity",
+                         initial_momenta<D>(kind, parameters.random_velocity, velocity_generator)},
+                        {"mass", "physics.superfluid_density", kind.mass},
+                        {"temperature", "physics.temperature", parameters.temperature},
+                        {"spin", "spin.coefficient", parameters.spin}});
   };
   fill_moving(state.superfluid, superfluid);
   fill_moving(state.normal, normal);
-  fill_vector_field<Arith, D>(case_file, "particles", wall.position, state.wall.position);
-  fill_vector_field<Arith, D>(case_file, "particles", wall.velocity, state.wall.velocity);
-  fill_scalar_field<Arith>(case_file, "physics.normal_density", wall.mass, state.wall.mass);
-  fill_scalar_field<Arith>(case_file, "physics.temperature",
-                           std::vector<double>(wall.position.size(), parameters.temperature),
-                           state.wall.temperature);
-  state.wall.spin.resize(wall.position.size()); // walls carry no spin (README)
+  // Walls carry no spin (README).
+  fill_set<Arith, D>(case_file, state.wall, wall.position.size(),
+                     {{"position", "particles", wall.position},
+                      {"velocity", "particles", wall.velocity},
+                      {"mass", "physics.normal_density", wall.mass},
+                      {"temperature", "physics.temperature", parameters.temperature},
+                      {"spin", "particles", 0.0}});
 
   SimulationInfo info =
       simulation_info(case_file, "two_fluid", D, options.arithmetic, parameters.dt);

@@ -184,14 +184,18 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
                      {"velocity", parameters.velocity_scale},
                      {"mass", masses},
                      {"density", parameters.density_scale}});
-  fill_vector_field<Arith, D>(case_file, "particles", fluid_positions, state.fluid.position);
-  fill_vector_field<Arith, D>(case_file, "initial.field", initial.velocity, state.fluid.velocity);
-  fill_scalar_field<Arith>(case_file, "physics.rest_density", fluid_masses, state.fluid.mass);
-  state.fluid.density_constant.resize(fluid_positions.size());
-  fill_vector_field<Arith, D>(case_file, "particles", wall_positions, state.wall.position);
-  fill_vector_field<Arith, D>(case_file, "particles", dummy_positions, state.dummy.position);
-  fill_scalar_field<Arith>(case_file, "physics.rest_density", dummy_masses, state.dummy.mass);
-  state.dummy.density_constant.resize(dummy_positions.size());
+  // The density constants start at zero: initialise_density_constants sets them.
+  fill_set<Arith, D>(case_file, state.fluid, fluid_positions.size(),
+                     {{"position", "particles", fluid_positions},
+                      {"velocity", "initial.field", initial.velocity},
+                      {"mass", "physics.rest_density", fluid_masses},
+                      {"density_constant", "particles", 0.0}});
+  fill_set<Arith, D>(case_file, state.wall, wall_positions.size(),
+                     {{"position", "particles", wall_positions}});
+  fill_set<Arith, D>(case_file, state.dummy, dummy_positions.size(),
+                     {{"position", "particles", dummy_positions},
+                      {"mass", "physics.rest_density", dummy_masses},
+                      {"density_constant", "particles", 0.0}});
   free_storage(fluid_positions);
   free_storage(wall_positions);
   free_storage(dummy_positions);
