@@ -231,12 +231,16 @@ double CaseFile::number(std::string_view key) const {
   return value;
 }
 
-double CaseFile::number_or(std::string_view key, double fallback) const {
-  constexpr KeyType type = KeyType::number;
+template <class T>
+void CaseFile::check_fallback(std::string_view key, KeyType type, const T& fallback) const {
   if (const KeyDecl* decl = declared(key, &type)) {
-    const std::optional<double> literal = literal_number(decl->default_value);
+    const std::optional<T> literal = literal_default<T>(decl->default_value);
     check_default(*decl, key, literal == fallback, literal.has_value());
   }
+}
+
+double CaseFile::number_or(std::string_view key, double fallback) const {
+  check_fallback(key, KeyType::number, fallback);
   return has(key) ? number(key) : fallback;
 }
 
@@ -268,11 +272,7 @@ std::int64_t CaseFile::integer(std::string_view key) const {
 }
 
 std::int64_t CaseFile::integer_or(std::string_view key, std::int64_t fallback) const {
-  constexpr KeyType type = KeyType::integer;
-  if (const KeyDecl* decl = declared(key, &type)) {
-    const std::optional<std::int64_t> literal = literal_integer(decl->default_value);
-    check_default(*decl, key, literal == fallback, literal.has_value());
-  }
+  check_fallback(key, KeyType::integer, fallback);
   return has(key) ? integer(key) : fallback;
 }
 
@@ -287,21 +287,12 @@ std::string CaseFile::string(std::string_view key) const {
 }
 
 std::string CaseFile::string_or(std::string_view key, std::string fallback) const {
-  constexpr KeyType type = KeyType::string;
-  if (const KeyDecl* decl = declared(key, &type)) {
-    const std::string& d = decl->default_value;
-    const bool quoted = d.size() >= 2 && d.front() == '"' && d.back() == '"';
-    check_default(*decl, key, quoted && d.substr(1, d.size() - 2) == fallback, quoted);
-  }
+  check_fallback(key, KeyType::string, fallback);
   return has(key) ? string(key) : fallback;
 }
 
 bool CaseFile::boolean_or(std::string_view key, bool fallback) const {
-  constexpr KeyType type = KeyType::boolean;
-  if (const KeyDecl* decl = declared(key, &type)) {
-    const std::string& d = decl->default_value;
-    check_default(*decl, key, d == (fallback ? "true" : "false"), d == "true" || d == "false");
-  }
+  check_fallback(key, KeyType::boolean, fallback);
   if (!has(key)) {
     return fallback;
   }

@@ -117,6 +117,9 @@ private:
   // The declaration of `key` when tables are attached (nullptr otherwise); a std::logic_error if
   // it is undeclared or declared with another type. A null `type` accepts any type.
   const KeyDecl* declared(std::string_view key, const KeyType* type) const;
+  // A reader's fallback must be the declared default when that is a literal (else a logic error).
+  template <class T>
+  void check_fallback(std::string_view key, KeyType type, const T& fallback) const;
 
   std::string source_name_;
   std::string text_;

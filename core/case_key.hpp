@@ -229,31 +229,12 @@ T read_or(const CaseFile& case_file, const std::string& path, T fallback) {
     return case_file.boolean_or(path, fallback);
   }
 }
-template <class T>
-std::optional<T> literal_default(const std::string& text) {
-  if constexpr (std::is_same_v<T, double>) {
-    return literal_number(text);
-  } else if constexpr (std::is_same_v<T, std::int64_t>) {
-    return literal_integer(text);
-  } else if constexpr (std::is_same_v<T, std::string>) {
-    if (text.size() >= 2 && text.front() == '"' && text.back() == '"') {
-      return text.substr(1, text.size() - 2);
-    }
-    return std::nullopt;
-  } else {
-    static_assert(std::is_same_v<T, bool>);
-    if (text == "true" || text == "false") {
-      return text == "true";
-    }
-    return std::nullopt;
-  }
-}
 } // namespace key_detail
 
 template <class T>
 Key<T>::Key(const KeyDecl& decl, KeyCheck<T> check)
     : path_(decl.path), required_(decl.default_value == "required"),
-      default_(key_detail::literal_default<T>(decl.default_value)), check_(std::move(check)) {}
+      default_(literal_default<T>(decl.default_value)), check_(std::move(check)) {}
 
 template <class T>
 T Key<T>::checked(const CaseFile& case_file, T value) const {
@@ -298,7 +279,7 @@ std::optional<T> Key<T>::read_optional(const CaseFile& case_file) const {
 
 template <class E>
 Choice<E>::Choice(const KeyDecl& decl, std::vector<std::pair<std::string, E>> values)
-    : path_(decl.path), default_(key_detail::literal_default<std::string>(decl.default_value)),
+    : path_(decl.path), default_(literal_default<std::string>(decl.default_value)),
       values_(std::move(values)) {}
 
 template <class E>

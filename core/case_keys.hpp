@@ -13,6 +13,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 namespace revsph {
@@ -90,5 +91,27 @@ std::vector<KeyDecl> particle_block_case_keys(const std::vector<std::string>& ki
 // ("dr") or "required".
 std::optional<double> literal_number(const std::string& text);
 std::optional<std::int64_t> literal_integer(const std::string& text);
+
+// The value of a declared default of type T (double, std::int64_t, std::string: a quoted text,
+// bool: true or false), or nullopt for a description or "required".
+template <class T>
+std::optional<T> literal_default(const std::string& text) {
+  if constexpr (std::is_same_v<T, double>) {
+    return literal_number(text);
+  } else if constexpr (std::is_same_v<T, std::int64_t>) {
+    return literal_integer(text);
+  } else if constexpr (std::is_same_v<T, std::string>) {
+    if (text.size() >= 2 && text.front() == '"' && text.back() == '"') {
+      return text.substr(1, text.size() - 2);
+    }
+    return std::nullopt;
+  } else {
+    static_assert(std::is_same_v<T, bool>);
+    if (text == "true" || text == "false") {
+      return text == "true";
+    }
+    return std::nullopt;
+  }
+}
 
 } // namespace revsph
