@@ -261,14 +261,18 @@ double CaseFile::non_negative_number_or(std::string_view key, double fallback,
   return value;
 }
 
-std::int64_t CaseFile::integer(std::string_view key) const {
-  constexpr KeyType type = KeyType::integer;
+template <class T>
+T CaseFile::typed_value(std::string_view key, KeyType type, std::string_view expected) const {
   declared(key, &type);
   const toml::node& node = require(key);
-  if (!node.is_integer()) {
-    fail(key, "expected an integer, got " + describe_type(node));
+  if (!node.is<T>()) {
+    fail(key, "expected " + std::string(expected) + ", got " + describe_type(node));
   }
-  return *node.value<std::int64_t>();
+  return *node.value<T>();
+}
+
+std::int64_t CaseFile::integer(std::string_view key) const {
+  return typed_value<std::int64_t>(key, KeyType::integer, "an integer");
 }
 
 std::int64_t CaseFile::integer_or(std::string_view key, std::int64_t fallback) const {
@@ -277,13 +281,7 @@ std::int64_t CaseFile::integer_or(std::string_view key, std::int64_t fallback) c
 }
 
 std::string CaseFile::string(std::string_view key) const {
-  constexpr KeyType type = KeyType::string;
-  declared(key, &type);
-  const toml::node& node = require(key);
-  if (!node.is_string()) {
-    fail(key, "expected a string, got " + describe_type(node));
-  }
-  return *node.value<std::string>();
+  return typed_value<std::string>(key, KeyType::string, "a string");
 }
 
 std::string CaseFile::string_or(std::string_view key, std::string fallback) const {
@@ -293,14 +291,7 @@ std::string CaseFile::string_or(std::string_view key, std::string fallback) cons
 
 bool CaseFile::boolean_or(std::string_view key, bool fallback) const {
   check_fallback(key, KeyType::boolean, fallback);
-  if (!has(key)) {
-    return fallback;
-  }
-  const toml::node& node = require(key);
-  if (!node.is_boolean()) {
-    fail(key, "expected true or false, got " + describe_type(node));
-  }
-  return *node.value<bool>();
+  return has(key) ? typed_value<bool>(key, KeyType::boolean, "true or false") : fallback;
 }
 
 std::vector<double> CaseFile::numbers(std::string_view key, std::size_t size) const {

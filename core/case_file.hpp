@@ -120,6 +120,9 @@ private:
   // A reader's fallback must be the declared default when that is a literal (else a logic error).
   template <class T>
   void check_fallback(std::string_view key, KeyType type, const T& fallback) const;
+  // The value of a present key of TOML type T, else a one-line error: "expected <expected>, ...".
+  template <class T>
+  T typed_value(std::string_view key, KeyType type, std::string_view expected) const;
 
   std::string source_name_;
   std::string text_;
