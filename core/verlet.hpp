@@ -27,7 +27,7 @@ namespace revsph {
 template <class Arith, class Rate>
 requires std::invocable<const Rate&, int, std::size_t>
 void add_rate(StateField<typename Arith::Raw>& target, const Rate& rate, double dt,
-              FaultRecorder& faults) {
+              FaultRecorder& faults, const char* fault = "overflow or non-finite value in a kick") {
   const auto& scale = target.info().scale;
   const std::size_t n = target.count();
   const int components = target.components();
@@ -37,8 +37,7 @@ void add_rate(StateField<typename Arith::Raw>& target, const Rate& rate, double 
   for (std::size_t i = 0; i < n; ++i) {
     for (int c = 0; c < components; ++c) {
       if (!Arith::try_increment(target.at(c, i), dt * rate(c, i), scale)) {
-        faults.record(i, target.info().particle_set.c_str(), target.info().name.c_str(),
-                      "overflow or non-finite value in a kick");
+        faults.record(i, target.info().particle_set.c_str(), target.info().name.c_str(), fault);
       }
     }
   }
@@ -87,21 +86,10 @@ void add_pair_totals(StateField<typename Arith::Raw>& target, const Sums& sums, 
 template <class Arith>
 void drift(StateField<typename Arith::Raw>& position,
            const StateField<typename Arith::Raw>& velocity, double dt, FaultRecorder& faults) {
-  const auto& x_scale = position.info().scale;
   const auto& v_scale = velocity.info().scale;
-  const std::size_t n = position.count();
-  const int components = position.components();
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    for (int c = 0; c < components; ++c) {
-      if (!Arith::try_increment(position.at(c, i), dt * Arith::real(velocity.at(c, i), v_scale),
-                                x_scale)) {
-        faults.record(i, position.info().particle_set.c_str(), position.info().name.c_str(),
-                      "overflow or non-finite value in a drift");
-      }
-    }
-  }
-  faults.throw_if_any();
+  add_rate<Arith>(
+      position, [&](int c, std::size_t i) { return Arith::real(velocity.at(c, i), v_scale); }, dt,
+      faults, "overflow or non-finite value in a drift");
 }
 
 // position += dt * momentum / mass, for a state that keeps momenta (two masses, say): dt (-p) / m
@@ -110,21 +98,11 @@ template <class Arith>
 void drift_by_momentum(StateField<typename Arith::Raw>& position,
                        const StateField<typename Arith::Raw>& momentum,
                        std::span<const double> mass, double dt, FaultRecorder& faults) {
-  const auto& x_scale = position.info().scale;
   const auto& p_scale = momentum.info().scale;
-  const std::size_t n = position.count();
-  const int components = position.components();
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    for (int c = 0; c < components; ++c) {
-      const double velocity = Arith::real(momentum.at(c, i), p_scale) / mass[i];
-      if (!Arith::try_increment(position.at(c, i), dt * velocity, x_scale)) {
-        faults.record(i, position.info().particle_set.c_str(), position.info().name.c_str(),
-                      "overflow or non-finite value in a drift");
-      }
-    }
-  }
-  faults.throw_if_any();
+  add_rate<Arith>(
+      position,
+      [&](int c, std::size_t i) { return Arith::real(momentum.at(c, i), p_scale) / mass[i]; }, dt,
+      faults, "overflow or non-finite value in a drift");
 }
 
 } // namespace revsph
