@@ -3,30 +3,16 @@
 //   x, volume (mass | entropic | direct | implicit | mixed), density, entropy_density
 // Plot: /usr/bin/python3 tools/plots/entropic_discontinuity.py OUT.csv OUT.png
 
+#include "csv_program.hpp"
 #include "entropic_discontinuity.hpp"
 
 #include <cmath>
-#include <exception>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 
 int main(int argc, char** argv) {
   using namespace revsph::analysis;
-  if (argc > 2) {
-    std::cerr << "usage: revsph_entropic_discontinuity [OUT.csv]\n";
-    return 2;
-  }
-  std::ofstream file;
-  if (argc == 2) {
-    file.open(argv[1]);
-    if (!file) {
-      std::cerr << "revsph_entropic_discontinuity: cannot write " << argv[1] << "\n";
-      return 2;
-    }
-  }
-  std::ostream& out = argc == 2 ? file : std::cout;
-  try {
+  return run_csv_program(argc, argv, "revsph_entropic_discontinuity", [](std::ostream& out) {
     const DiscontinuityProfiles profiles = entropic_discontinuity();
     out << "x,volume,density,entropy_density\n" << std::setprecision(17);
     for (std::size_t v = 0; v < discontinuity_volumes.size(); ++v) {
@@ -37,9 +23,5 @@ int main(int argc, char** argv) {
         }
       }
     }
-  } catch (const std::exception& error) {
-    std::cerr << "revsph_entropic_discontinuity: " << error.what() << "\n";
-    return 1;
-  }
-  return 0;
+  });
 }

@@ -4,30 +4,16 @@
 //   volume_sum (sum_a V_a over [0,1]^2: the quadrature of 1, whose error is the lattice's bias)
 // Plot: /usr/bin/python3 tools/plots/entropic_quadrature.py OUT.csv OUT.png
 
+#include "csv_program.hpp"
 #include "entropic_quadrature.hpp"
 
 #include <cmath>
 #include <cstdio>
-#include <exception>
-#include <fstream>
 #include <iostream>
 
 int main(int argc, char** argv) {
   using namespace revsph::analysis;
-  if (argc > 2) {
-    std::cerr << "usage: revsph_entropic_quadrature [OUT.csv]\n";
-    return 2;
-  }
-  std::ofstream file;
-  if (argc == 2) {
-    file.open(argv[1]);
-    if (!file) {
-      std::cerr << "revsph_entropic_quadrature: cannot write " << argv[1] << "\n";
-      return 1;
-    }
-  }
-  std::ostream& out = argc == 2 ? file : std::cout;
-  try {
+  return run_csv_program(argc, argv, "revsph_entropic_quadrature", [](std::ostream& out) {
     out << "N,dr,volume,function,quadrature,exact,relative_error,volume_sum\n";
     constexpr int counts = 10;
     for (int i = 0; i < counts; ++i) {
@@ -46,9 +32,5 @@ int main(int argc, char** argv) {
       std::cerr << "N = " << r.particles << " (+" << r.dummies << " dummies): W V = 1 in "
                 << r.solver_iterations << " CG iterations\n";
     }
-  } catch (const std::exception& e) {
-    std::cerr << "revsph_entropic_quadrature: " << e.what() << "\n";
-    return 1;
-  }
-  return out ? 0 : 1;
+  });
 }
