@@ -29,6 +29,16 @@ CoordinateView<D> view_of(const CoordinateArrays<D>& arrays) {
   return view;
 }
 
+// Particle i of structure-of-arrays coordinates (CoordinateArrays or CoordinateView) as a point.
+template <int D, class Coordinates>
+Vec<D> point_of(const Coordinates& points, std::size_t i) {
+  Vec<D> point{};
+  for (int k = 0; k < D; ++k) {
+    point[k] = points[k][i];
+  }
+  return point;
+}
+
 // |x_a - x_b|^2, summed over the axes in order (the same bits wherever it is used), for points
 // of two coordinate sets or of one.
 template <int D>

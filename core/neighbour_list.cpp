@@ -8,15 +8,6 @@ namespace revsph {
 
 namespace {
 
-template <int D>
-Vec<D> point_of(const CoordinateView<D>& points, std::size_t i) {
-  Vec<D> p{};
-  for (int k = 0; k < D; ++k) {
-    p[k] = points[k][i];
-  }
-  return p;
-}
-
 // Calls emit(b, accepted) for each candidate b of query a, in cell order; accepted says whether
 // b is a neighbour. Reporting rejected candidates too lets the callers count and store without a
 // branch on the distance test: once the fluid is disordered, about a third of the candidates

@@ -111,15 +111,6 @@ void validate(const IscSettings& settings, double support_radius, double rest_de
           "a jitter or a step limit needs a positive, finite particle spacing");
 }
 
-template <int D>
-Vec<D> point_of(const CoordinateArrays<D>& points, std::size_t i) {
-  Vec<D> point{};
-  for (int k = 0; k < D; ++k) {
-    point[k] = points[k][i];
-  }
-  return point;
-}
-
 // `when` completes "... particle 17 <when> outside the domain", e.g. "is" or "would be moved
 // by iteration 3 to".
 template <int D>

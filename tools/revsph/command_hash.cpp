@@ -25,7 +25,6 @@ int hash_command(const HashOptions& options) {
     print_error("hash of a case needs --steps N or --t-end T");
     return bad_input;
   }
-  apply_thread_count(case_options.threads);
   LoadedCase loaded = load_simulation(case_options);
   Simulation& simulation = *loaded.simulation;
   const std::int64_t steps = resolve_steps(loaded, options.steps, options.t_end, true);

@@ -45,7 +45,6 @@ void print_header(const LoadedCase& loaded, std::int64_t steps) {
 } // namespace
 
 int run_command(const RunOptions& options) {
-  apply_thread_count(options.case_options.threads);
   LoadedCase loaded = load_simulation(options.case_options);
   Simulation& simulation = *loaded.simulation;
   const std::int64_t steps = resolve_steps(loaded, options.steps, options.t_end, false);

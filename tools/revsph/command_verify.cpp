@@ -83,7 +83,6 @@ void print_irreversible_terms(const SimulationInfo& info) {
 } // namespace
 
 int verify_command(const VerifyCommandOptions& options) {
-  apply_thread_count(options.case_options.threads);
   LoadedCase loaded = load_simulation(options.case_options);
   Simulation& simulation = *loaded.simulation;
   const std::int64_t steps = resolve_steps(loaded, options.steps, options.t_end, true);

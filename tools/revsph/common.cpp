@@ -77,6 +77,7 @@ LoadedCase load_from_snapshot(const CaseOptions& options) {
 } // namespace
 
 LoadedCase load_simulation(const CaseOptions& options) {
+  apply_thread_count(options.threads); // the set-up's own loops run on them too
   if (!options.from_snapshot.empty()) {
     if (options.case_given) {
       throw CaseError(options.case_path, "--from",

@@ -42,7 +42,8 @@ struct LoadedCase {
   std::optional<Snapshot> from_snapshot; // metadata and state the run started from
 };
 
-// Loads, overrides, validates (unknown keys included) and builds; from a snapshot, rebuilds its
+// Sets the thread count (--threads), then loads, overrides, validates (unknown keys included)
+// and builds; from a snapshot, rebuilds its
 // case with its overrides (plus any new ones) and restores its exact state and step.
 // Throws CaseError or SnapshotError.
 LoadedCase load_simulation(const CaseOptions& options);
