@@ -46,6 +46,7 @@ public:
                       EnergyAccount<Model>{"force_work", &Model::force_work_}};
   }
   void set_time(double time) { time_ = time; }
+  // Density, pressure and velocity per particle; with the spin term on (eq. 40), its force.
   void derived_views(const ViewSink& sink);
   void invalidate_derived() {
     density_valid_ = false;
@@ -60,6 +61,7 @@ public:
 
 private:
   static std::string dissipation_acts(const Model& model);
+  void spin_force_views(const ViewSink& sink);
   // The thermomechanical or the spin force is on: the kick counts their work.
   bool counts_force_work() const {
     return parameters_.thermomechanical.entropy_scale > 0.0 || spin_on();

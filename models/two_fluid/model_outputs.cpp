@@ -68,6 +68,35 @@ void Model<D, Arith>::derived_views(const ViewSink& sink) {
                       std::move(velocity)});
   });
   density_and_pressure(layout_.index_of(state_.wall));
+  if (spin_on()) {
+    spin_force_views(sink);
+  }
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::spin_force_views(const ViewSink& sink) {
+  // Eq. (40)'s spin force on each fluid particle (Fig. 10): the accounted components of the
+  // impulses over a unit time with only the spin term among the non-gradient forces. Summed in
+  // floating point for the output only: the state never sees these sums.
+  const Parameters<D>& p = parameters_;
+  PairSums<FloatArithmetic, 2 * D> sums(components_of<2 * D>("spin_force", fixedpoint::Scale()));
+  sum_pairs<FloatArithmetic>(layout_,
+                             ImpulseTerm<D, true>{kernel_, inputs_, p.pressure_form,
+                                                  p.rotational_viscosity, p.gravity, 1.0,
+                                                  /*thermomechanical_on=*/false,
+                                                  /*spin_on=*/true},
+                             sums);
+  for_each_moving([&](const auto&, std::size_t set) {
+    const std::span<const std::uint32_t> slots = layout_.slots_of_set(set);
+    std::vector<double> force(D * slots.size());
+    for (int k = 0; k < D; ++k) {
+      for (std::size_t i = 0; i < slots.size(); ++i) {
+        force[k * slots.size() + i] = sums.value(D + k, slots[i]);
+      }
+    }
+    sink(ParticleView{std::string(layout_.sets()[set].name), "spin_force", D == 2 ? "N/m" : "N", D,
+                      std::move(force)});
+  });
 }
 
 template class Model<2, FixedArithmetic>;
