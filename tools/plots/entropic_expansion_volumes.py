@@ -3,7 +3,7 @@
 particle volumes, their temperature profiles along the vessel compared.
 
 Usage: /usr/bin/python3 tools/plots/entropic_expansion_volumes.py [--make-runs] [--runs DIR]
-           [--out DIR] [--revsph PATH] [--threads N] [--times T ...]
+           [--out DIR] [--revsph PATH] [--threads N] [--times T ...] [--non-adiabatic]
 
 --make-runs runs `expansion-small` refined to dr = 0.0125 (6 320 gas particles, Courant number
 0.01, t = 15) once per volume into RUNS/mass, RUNS/entropic, RUNS/direct, RUNS/mixed (default
@@ -20,6 +20,10 @@ differences by. Writes into --out (default docs/figures):
   entropic_expansion_volumes.csv  time, slice centre, mean T per volume;
   entropic_expansion_volumes.md   the largest difference from the mass volume, per volume and
                                   time, relative to the mean temperature (also printed).
+--non-adiabatic does the same for §5.3's non-adiabatic expansion (Fig. 10's "quite similar
+results" for the other volumes): the runs add the paper's viscosity 0.001 and conduction
+lambda_F = 0.1 with the midpoint splitting (as entropic_expansion_dissipative.py), into
+RUNS/VOLUME-nonadiabatic, and the files are entropic_expansion_volumes_nonadiabatic.*.
 """
 
 import sys
@@ -54,6 +58,10 @@ REFINED_CASE = ["--set", "discretisation.dr=0.0125", "--set", "particles[0].max=
 REFINED = [*REFINED_CASE, "--set", "output.snapshot_every=1000", "--t-end", "15"]
 RUNS = {v: ["run", "expansion-small", *REFINED, "--set", f"physics.particle_volume={v}"]
         for v in VOLUMES}
+# §5.3: the same with the paper's viscosity and heat conduction.
+DISSIPATION = ["--set", "physics.viscosity=0.001", "--set", "physics.heat_conductivity=0.1",
+               "--set", "step.splitting=midpoint"]
+NON_ADIABATIC = {f"{v}-nonadiabatic": [*RUNS[v], *DISSIPATION] for v in VOLUMES}
 
 
 def profile(path):
@@ -84,12 +92,12 @@ def nearest(run, time):
     return best[1]
 
 
-def make_figures(runs, out, report, times):
+def make_figures(runs, out, report, times, suffix=""):
     centres = 0.5 * (SLICES[1:] + SLICES[:-1])
     fig, axes = plt.subplots(1, len(times), figsize=(5.2 * len(times), 4.2), sharey=True)
     rows = []
     for ax, wanted in zip(np.atleast_1d(axes), times):
-        profiles = {v: profile(nearest(runs / v, wanted)) for v in VOLUMES}
+        profiles = {v: profile(nearest(runs / (v + suffix), wanted)) for v in VOLUMES}
         time = profiles["mass"][0]
         for volume in VOLUMES:
             ax.plot(centres, profiles[volume][1], ".-", label=volume)
@@ -113,8 +121,9 @@ def make_figures(runs, out, report, times):
             rows.append([time, c] + [profiles[v][1][k] for v in VOLUMES])
     np.atleast_1d(axes)[0].set_ylabel("mass-weighted mean T of the slice (K)")
     np.atleast_1d(axes)[0].legend()
-    save_figure(fig, out / "entropic_expansion_volumes.png")
-    with open(out / "entropic_expansion_volumes.csv", "w") as f:
+    name = "entropic_expansion_volumes" + suffix.replace("-", "_")
+    save_figure(fig, out / f"{name}.png")
+    with open(out / f"{name}.csv", "w") as f:
         f.write("time,x," + ",".join(f"temperature_{v}" for v in VOLUMES) + "\n")
         for row in rows:
             f.write(",".join(f"{v:.8g}" for v in row) + "\n")
@@ -124,11 +133,14 @@ def main():
     parser = figure_parser(__doc__)
     parser.set_defaults(runs="out/entropic-volumes", out=str(REPO / "docs" / "figures"))
     parser.add_argument("--times", type=float, nargs="*", default=[1.5, 7.5, 15.0])
+    parser.add_argument("--non-adiabatic", action="store_true")
     args = parser.parse_args()
+    suffix = "-nonadiabatic" if args.non_adiabatic else ""
+    runs = NON_ADIABATIC if args.non_adiabatic else RUNS
     return figure_script_main(
-        args, RUNS,
-        [(VOLUMES, lambda runs, out, report: make_figures(runs, out, report, args.times))],
-        "entropic_expansion_volumes.md")
+        args, runs,
+        [(list(runs), lambda r, out, report: make_figures(r, out, report, args.times, suffix))],
+        f"entropic_expansion_volumes{suffix.replace('-', '_')}.md")
 
 
 if __name__ == "__main__":
