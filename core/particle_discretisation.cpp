@@ -53,30 +53,4 @@ WallSettings read_wall_settings(const CaseFile& case_file, const ParticleDiscret
   return wall;
 }
 
-std::vector<KeyDecl> particle_discretisation_case_keys(const std::string& support_radius_meaning,
-                                                       const std::string& courant_meaning) {
-  using T = KeyType;
-  return {
-      {"discretisation.dr", T::number, "m", "required", "particle spacing; > 0"},
-      {"discretisation.support_radius_over_dr", T::number, "1", "required", support_radius_meaning},
-      {"discretisation.dt", T::number, "s", "required (or courant_number)",
-       "time step; give dt or courant_number, not both"},
-      {"discretisation.courant_number", T::number, "1", "none (or dt)", courant_meaning},
-      {"discretisation.cell_size_factor", T::number, "1", "1",
-       "neighbour-search cell size over the search radius, 1 to 100"},
-  };
-}
-
-std::vector<KeyDecl> wall_case_keys(const std::string& equation) {
-  using T = KeyType;
-  return {
-      {"wall.radius_over_dr", T::number, "1", "0.95",
-       "range r_wall of the wall potential (" + equation + ") in units of dr; > 0"},
-      {"wall.energy_per_mass", T::number, "J/kg", "0",
-       "strength E_wall / m of the wall potential (" + equation + "); >= 0"},
-      {"wall.epsilon", T::number, "m", "1e-6",
-       "regularisation eps of the wall potential (" + equation + "); >= 0"},
-  };
-}
-
 } // namespace revsph

@@ -86,6 +86,37 @@ class Declarations(unittest.TestCase):
                       '"m", "the origin", "c"});', header)
 
 
+class CoreGroups(unittest.TestCase):
+    def test_parameters_spliced_into_texts_and_values(self):
+        source = keygen.generate_core(tomllib.loads(
+            '[[group]]\nfunction = "wall_case_keys"\ntext_parameters = ["equation"]\n'
+            '[[group.key]]\npath = "wall.epsilon"\ntype = "number"\nunit = "m"\n'
+            'default = "1e-6"\nmeaning = "eps of ({equation}); >= 0"\n'
+            '[[group]]\nfunction = "particle_block_case_keys"\nlist_parameters = ["kinds"]\n'
+            '[[group.key]]\npath = "particles[].kind"\ntype = "string"\ndefault = "required"\n'
+            'meaning = "which set"\nvalues = "@kinds"\n'
+            '[[group]]\nfunction = "common_case_keys"\ntable = "common"\n'
+            '[[group.key]]\npath = "model"\ntype = "string"\ndefault = "required"\n'
+            'meaning = "the model"\n'))
+        self.assertIn('std::vector<KeyDecl> wall_case_keys(const std::string& equation) {', source)
+        self.assertIn('std::string("eps of (") + equation + "); >= 0"}', source)
+        self.assertIn('{"particles[].kind", KeyType::string, "-", "required", "which set", kinds}',
+                      source)
+        self.assertIn('KeyTable t("common");', source)
+        with self.assertRaises(keygen.KeyFileError):
+            keygen.generate_core(tomllib.loads(
+                '[[group]]\nfunction = "f"\n[[group.key]]\npath = "a"\ntype = "number"\n'
+                'default = "0"\nmeaning = "{nobody}"\n'))
+
+    def test_core_keys_file_generates(self):
+        with open(os.path.join(ROOT, "core", "keys.toml"), "rb") as file:
+            data = tomllib.load(file)
+        self.assertEqual([g["function"] for g in data["group"]],
+                         ["common_case_keys", "domain_case_keys", "particle_block_case_keys",
+                          "particle_discretisation_case_keys", "wall_case_keys"])
+        keygen.generate_core(data)
+
+
 class BadFiles(unittest.TestCase):
     def failure_of(self, text):
         with tempfile.TemporaryDirectory() as folder:
