@@ -22,8 +22,9 @@ differences by. Writes into --out (default docs/figures):
                                   time, relative to the mean temperature (also printed).
 --non-adiabatic does the same for §5.3's non-adiabatic expansion (Fig. 10's "quite similar
 results" for the other volumes): the runs add the paper's viscosity 0.001 and conduction
-lambda_F = 0.1 with the midpoint splitting (as entropic_expansion_dissipative.py), into
-RUNS/VOLUME-nonadiabatic, and the files are entropic_expansion_volumes_nonadiabatic.*.
+lambda_F = 0.1 with the midpoint splitting (as entropic_expansion_dissipative.py), at p0 = 100
+(below), into RUNS/VOLUME-nonadiabatic, and the files are
+entropic_expansion_volumes_nonadiabatic.*.
 """
 
 import sys
@@ -58,9 +59,11 @@ REFINED_CASE = ["--set", "discretisation.dr=0.0125", "--set", "particles[0].max=
 REFINED = [*REFINED_CASE, "--set", "output.snapshot_every=1000", "--t-end", "15"]
 RUNS = {v: ["run", "expansion-small", *REFINED, "--set", f"physics.particle_volume={v}"]
         for v in VOLUMES}
-# §5.3: the same with the paper's viscosity and heat conduction.
+# §5.3: the same with the paper's viscosity and heat conduction, at p0 = 100 (sigma0 = 1.38): at
+# p0 = 30 (sigma0 = 0.18) conduction drives a particle's entropy towards zero within 1 000 steps
+# (2.8e-4 -> 1.8e-7 by step 1 000) and the entropic volume V = S / s breaks down at step 1 018.
 DISSIPATION = ["--set", "physics.viscosity=0.001", "--set", "physics.heat_conductivity=0.1",
-               "--set", "step.splitting=midpoint"]
+               "--set", "step.splitting=midpoint", "--set", "initial.pressure=100.0"]
 NON_ADIABATIC = {f"{v}-nonadiabatic": [*RUNS[v], *DISSIPATION] for v in VOLUMES}
 
 
