@@ -34,9 +34,10 @@ public:
   // The same from a state field of D components (a wall set's positions, read as reals).
   template <class Arith, class Field>
   void place_field(const Field& position) {
+    const CarrierField<Arith> field{&position};
     CoordinateArrays<D> reals;
     for (int k = 0; k < D; ++k) {
-      reals[k] = CarrierField<Arith>{&position}.reals(k);
+      reals[k] = field.reals(k);
     }
     place(std::move(reals));
   }

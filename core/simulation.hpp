@@ -265,19 +265,12 @@ public:
   }
   void restore_energy_accounts(const std::vector<EnergyTerm>& accounts) override {
     for (const EnergyTerm& given : accounts) {
-      bool kept = false;
-      if constexpr (HasEnergyAccounts<M>) {
-        for (const EnergyAccount<M>& account : M::energy_accounts()) {
-          if (given.name == account.name) {
-            model_.*account.value = given.value;
-            kept = true;
-          }
-        }
-      }
-      if (!kept) {
+      double* kept = account_named(given.name);
+      if (kept == nullptr) {
         throw std::invalid_argument("unknown energy account '" + given.name + "' (model " +
                                     info_.model + ")");
       }
+      *kept = given.value;
     }
   }
 
@@ -297,6 +290,18 @@ public:
 private:
   // The step: the palindrome with the operators that act in this case placed by the case's
   // splitting; their terms first in the irreversible terms, each with its placement.
+  // The member keeping the energy account `name`, or nullptr.
+  double* account_named(const std::string& name) {
+    if constexpr (HasEnergyAccounts<M>) {
+      for (const EnergyAccount<M>& account : M::energy_accounts()) {
+        if (name == account.name) {
+          return &(model_.*account.value);
+        }
+      }
+    }
+    return nullptr;
+  }
+
   void place_irreversible_operators() {
     std::vector<IrreversibleOperator<M>> acting;
     const bool marked = marked_strang_sites<M>(M::palindrome()) != 0;

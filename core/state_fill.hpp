@@ -1,7 +1,7 @@
 #pragma once
-// Setting a state field from the real values a model's setup computed (positions, velocities,
-// entropies, masses), with the one-line case error naming `key` when a value does not fit the
-// field's fixed-point scale; and filling a set's fields by the names its state table declares.
+// Filling a set's fields, by the names its state table declares, from the real values a model's
+// setup computed (positions, velocities, entropies, masses), with the one-line case error naming
+// a key when a value does not fit the field's fixed-point scale.
 
 #include "core/case_file.hpp"
 #include "core/geometry.hpp"
@@ -14,7 +14,6 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
-#include <tuple>
 #include <variant>
 
 namespace revsph {
@@ -37,21 +36,6 @@ void fill_components(const CaseFile& case_file, const char* key, std::size_t cou
 }
 } // namespace detail
 
-template <class Arith, int D>
-void fill_vector_field(const CaseFile& case_file, const char* key, std::span<const Vec<D>> values,
-                       StateField<typename Arith::Raw>& field) {
-  detail::fill_components<Arith>(
-      case_file, key, values.size(), D, [&](std::size_t i, int k) { return values[i][k]; }, field);
-}
-
-// A scalar per particle (into the first component of a field that has several).
-template <class Arith>
-void fill_scalar_field(const CaseFile& case_file, const char* key, std::span<const double> values,
-                       StateField<typename Arith::Raw>& field) {
-  detail::fill_components<Arith>(
-      case_file, key, values.size(), 1, [&](std::size_t i, int) { return values[i]; }, field);
-}
-
 // What one field of a set is filled with, the field named as its state table declares it: real
 // values per particle (D-vectors for a vector field, numbers for a scalar one) or one number for
 // every particle (into the first component: 0.0 for a field that starts at zero); `key` is the
@@ -71,11 +55,11 @@ void fill_set(const CaseFile& case_file, Set& set, std::size_t count,
   using Field = StateField<typename Arith::Raw>;
   for (const FieldFill<D>& fill : fills) {
     Field* target = nullptr;
-    std::apply(
-        [&](auto&... fields) {
-          ((target = fields.info().name == fill.field ? &fields : target), ...);
-        },
-        set.fields());
+    for_each_field_of(set, [&](Field& field) {
+      if (field.info().name == fill.field) {
+        target = &field;
+      }
+    });
     const std::string where = std::string(Set::set.name) + "." + std::string(fill.field);
     if (target == nullptr) {
       throw std::logic_error("fill_set: no field " + where);
@@ -93,12 +77,16 @@ void fill_set(const CaseFile& case_file, Set& set, std::size_t count,
                                      std::to_string(count) + " particles");
             }
             if constexpr (std::is_same_v<Values, std::span<const double>>) {
-              fill_scalar_field<Arith>(case_file, fill.key, values, *target);
+              detail::fill_components<Arith>(
+                  case_file, fill.key, count, 1, [&](std::size_t i, int) { return values[i]; },
+                  *target);
             } else {
               if (target->components() != D) {
                 throw std::logic_error("fill_set: " + where + " is not a vector field");
               }
-              fill_vector_field<Arith, D>(case_file, fill.key, values, *target);
+              detail::fill_components<Arith>(
+                  case_file, fill.key, count, D, [&](std::size_t i, int k) { return values[i][k]; },
+                  *target);
             }
           }
         },

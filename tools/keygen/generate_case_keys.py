@@ -13,7 +13,7 @@ import re
 import sys
 import tomllib
 
-CORE_GROUPS = {  # core readers' key groups: (C++ function, how its arguments are given)
+CORE_GROUPS = {  # a model's `core = NAME` entry: the core function that declares that group
     "particle_discretisation": "particle_discretisation_case_keys",
     "wall": "wall_case_keys",
     "domain": "domain_case_keys",
@@ -36,10 +36,12 @@ def cpp(text):
 
 
 def bound(text, value_type):
+    """An interval end as C++: nullopt for an infinite one, a double literal for a number."""
     if text.endswith("inf"):
         return "std::nullopt"
-    return text if value_type == "double" and re.search(r"[.e]", text) else (
-        text + ".0" if value_type == "double" else text)
+    if value_type == "double" and not re.search(r"[.e]", text):
+        return text + ".0"
+    return text
 
 
 def interval_message(low_closed, low, high, high_closed):
@@ -72,12 +74,20 @@ def check_expression(key, value_type):
             f"{bound(high, value_type)}, {str(closing == ']').lower()}, {cpp(message)})")
 
 
-def declaration(key):
-    """{path, KeyType, unit, default, meaning[, values]} of a key read elsewhere."""
+def declaration(key, text_parameters=None, list_parameters=()):
+    """{path, KeyType, unit, default, meaning[, values]}: a key read elsewhere, or one of a core
+    group whose meaning and values may name the group's parameters (text_parameters not None)."""
+    meaning = cpp(key["meaning"]) if text_parameters is None else \
+        text_expression(key["meaning"], text_parameters)
     fields = [cpp(key["path"]), "KeyType::" + KEY_TYPES[key["type"]], cpp(key.get("unit", "-")),
-              cpp(key["default"]), cpp(key["meaning"])]
-    if "values" in key:
-        fields.append("{" + ", ".join(cpp(v) for v in key["values"]) + "}")
+              cpp(key["default"]), meaning]
+    values = key.get("values")
+    if isinstance(values, str):
+        if not values.startswith("@") or values[1:] not in list_parameters:
+            raise KeyFileError(f"{key['path']}: values {values!r} names no list parameter")
+        fields.append(values[1:])
+    elif values is not None:
+        fields.append("{" + ", ".join(cpp(v) for v in values) + "}")
     return "{" + ", ".join(fields) + "}"
 
 
@@ -238,19 +248,6 @@ def text_expression(text, parameters):
     return " + ".join(pieces)
 
 
-def core_declaration(key, text_parameters, list_parameters):
-    fields = [cpp(key["path"]), "KeyType::" + key["type"], cpp(key.get("unit", "-")),
-              cpp(key["default"]), text_expression(key["meaning"], text_parameters)]
-    values = key.get("values")
-    if isinstance(values, str):
-        if not values.startswith("@") or values[1:] not in list_parameters:
-            raise KeyFileError(f"{key['path']}: values {values!r} names no list parameter")
-        fields.append(values[1:])
-    elif values is not None:
-        fields.append("{" + ", ".join(cpp(v) for v in values) + "}")
-    return "{" + ", ".join(fields) + "}"
-
-
 def generate_core(data):
     """The core readers' key groups (core/keys.toml): each a function returning its declarations,
     or the common table."""
@@ -261,7 +258,7 @@ def generate_core(data):
         function = group["function"]
         texts = group.get("text_parameters", [])
         lists = group.get("list_parameters", [])
-        declarations = [core_declaration(key, texts, lists) for key in group["key"]]
+        declarations = [declaration(key, texts, lists) for key in group["key"]]
         if "table" in group:
             lines += [f"const KeyTable& {function}() {{",
                       "  static const KeyTable table = [] {",
