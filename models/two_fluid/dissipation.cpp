@@ -41,15 +41,8 @@ std::string Model<D, Arith>::dissipation_acts(const Model& model) {
 }
 
 template <int D, class Arith>
-void Model<D, Arith>::dissipate(double tau) {
-  const MutualFriction& mutual_friction = parameters_.mutual_friction;
-  const double friction = mutual_friction.active() ? mutual_friction.coefficient(time_) : 0.0;
-  const double wall_friction =
-      mutual_friction.active() ? mutual_friction.wall_coefficient(time_) : 0.0;
-  const Contact& contact = parameters_.contact;
-  if (viscosity() == 0.0 && friction == 0.0 && wall_friction == 0.0 && !contact.any()) {
-    return;
-  }
+DissipationTerm<D> Model<D, Arith>::dissipation_term(double tau, double friction,
+                                                     double wall_friction, bool contacts) {
   update_density();
   DissipationInputs& in = dissipation_inputs_;
   const std::size_t slots = layout_.slot_count();
@@ -78,7 +71,8 @@ void Model<D, Arith>::dissipate(double tau) {
     // The weights move with the particles only: the density's layout is this sub-step's.
     sum_pairs<Arith>(layout_, NormalWeightTerm<D>{kernel_, in.superfluid}, normal_weight_sums_);
   }
-  const DissipationTerm<D> term{
+  const Contact& contact = parameters_.contact;
+  return DissipationTerm<D>{
       kernel_,
       in,
       inputs_.volume,
@@ -89,10 +83,23 @@ void Model<D, Arith>::dissipate(double tau) {
       parameters_.central_viscosity,
       friction,
       wall_friction,
-      {contact.any() ? parameters_.dr : 0.0, contact.collision, contact.restitution,
-       contact.riemann, contact.limiter, parameters_.sound_speed, inputs_.mass, inputs_.density},
+      {contacts ? parameters_.dr : 0.0, contact.collision, contact.restitution, contact.riemann,
+       contact.limiter, parameters_.sound_speed, inputs_.mass, inputs_.density},
       tau};
-  sum_pairs<Arith>(layout_, term, dissipation_sums_);
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::dissipate(double tau) {
+  const MutualFriction& mutual_friction = parameters_.mutual_friction;
+  const double friction = mutual_friction.active() ? mutual_friction.coefficient(time_) : 0.0;
+  const double wall_friction =
+      mutual_friction.active() ? mutual_friction.wall_coefficient(time_) : 0.0;
+  const Contact& contact = parameters_.contact;
+  if (viscosity() == 0.0 && friction == 0.0 && wall_friction == 0.0 && !contact.any()) {
+    return;
+  }
+  sum_pairs<Arith>(layout_, dissipation_term(tau, friction, wall_friction, contact.any()),
+                   dissipation_sums_);
   FaultRecorder faults;
   for_each_moving([&](auto& kind, std::size_t set) {
     add_pair_totals<Arith>(kind.momentum, dissipation_sums_, 0, layout_.slots_of_set(set), faults);
@@ -101,7 +108,7 @@ void Model<D, Arith>::dissipate(double tau) {
   // The accounts: the walls' work, and as dissipated what the sub-step took beyond it, the
   // kinetic energy its applied (rounded) impulses changed.
   double wall_work = 0.0;
-  for (std::size_t s = 0; s < slots; ++s) {
+  for (std::size_t s = 0; s < layout_.slot_count(); ++s) {
     wall_work += dissipation_sums_.value(D, s);
   }
   const double kinetic_change = work_of_impulses(dissipation_sums_, 0);

@@ -61,7 +61,12 @@ public:
 
 private:
   static std::string dissipation_acts(const Model& model);
+  // The dissipate sub-step's pair term over tau with these couplings (contacts: the collision
+  // and Riemann terms as the case sets them, else off), the velocities gathered by slot.
+  DissipationTerm<D> dissipation_term(double tau, double friction, double wall_friction,
+                                      bool contacts);
   void spin_force_views(const ViewSink& sink);
+  void viscosity_views(const ViewSink& sink);
   // The thermomechanical or the spin force is on: the kick counts their work.
   bool counts_force_work() const {
     return parameters_.thermomechanical.entropy_scale > 0.0 || spin_on();

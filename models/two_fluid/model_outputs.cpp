@@ -71,6 +71,32 @@ void Model<D, Arith>::derived_views(const ViewSink& sink) {
   if (spin_on()) {
     spin_force_views(sink);
   }
+  if (viscosity() > 0.0) {
+    viscosity_views(sink);
+  }
+}
+
+template <int D, class Arith>
+void Model<D, Arith>::viscosity_views(const ViewSink& sink) {
+  // Eq. (34)'s viscosity term (with eq. 39's eta_bar + eta_r, as the dissipate sub-step applies
+  // it) on each fluid particle, as an acceleration (Fig. 5(b)): the dissipation's pair term over
+  // a unit time with the friction and the contact terms off. Summed in floating point for the
+  // output only.
+  PairSums<FloatArithmetic, D + 1> sums(
+      components_of<D + 1>("viscous_acceleration", fixedpoint::Scale()));
+  sum_pairs<FloatArithmetic>(layout_, dissipation_term(1.0, 0.0, 0.0, /*contacts=*/false), sums);
+  for_each_moving([&](const auto&, std::size_t set) {
+    const std::span<const std::uint32_t> slots = layout_.slots_of_set(set);
+    const std::span<const double> mass = layout_.part_of_set(std::span<const double>(mass_), set);
+    std::vector<double> acceleration(D * slots.size());
+    for (int k = 0; k < D; ++k) {
+      for (std::size_t i = 0; i < slots.size(); ++i) {
+        acceleration[k * slots.size() + i] = sums.value(k, slots[i]) / mass[i];
+      }
+    }
+    sink(ParticleView{std::string(layout_.sets()[set].name), "viscous_acceleration", "m/s^2", D,
+                      std::move(acceleration)});
+  });
 }
 
 template <int D, class Arith>
