@@ -12,6 +12,7 @@
 namespace {
 
 using revsph::analysis::DiscontinuityProfiles;
+using revsph::analysis::entropic_discontinuity;
 
 const DiscontinuityProfiles& profiles() {
   static const DiscontinuityProfiles computed = revsph::analysis::entropic_discontinuity();
@@ -71,6 +72,30 @@ TEST(EntropicDiscontinuity, EntropicVolumeJumpsSharply) {
   for (std::size_t i = 0; i < profiles().x.size(); ++i) {
     EXPECT_NEAR(profiles().density[entropic][i], profiles().x[i] < 0.5 ? 1.0 : 2.0, 2e-2);
   }
+}
+
+// The other two readings of "the entropies of the particles in the left part" (the right part's
+// S: the left's value continued, or zero). Neither gives Fig. 4's bump: with one S everywhere the
+// entropic volume is the direct one (s = rho, one monotone step); with S = 0 on the right its
+// density stays at or below 1 on the left and s falls monotonically to 0 at the jump.
+TEST(EntropicDiscontinuity, NoReadingOfTheRightEntropiesMakesABump) {
+  using revsph::analysis::RightEntropy;
+  const DiscontinuityProfiles same = entropic_discontinuity(RightEntropy::left_value);
+  const auto& rho = same.density[entropic];
+  EXPECT_TRUE(std::is_sorted(rho.begin(), rho.end()));
+  for (std::size_t i = 0; i < same.x.size(); ++i) {
+    EXPECT_NEAR(rho[i], same.density[direct][i], 1e-9);
+    EXPECT_NEAR(same.entropy_density[entropic][i], rho[i], 1e-9);
+  }
+  const DiscontinuityProfiles zero = entropic_discontinuity(RightEntropy::zero);
+  double largest_left = 0.0;
+  for (std::size_t i = 0; i < zero.x.size() && zero.x[i] < 0.5; ++i) {
+    largest_left = std::max(largest_left, zero.density[entropic][i]);
+    if (i > 0) {
+      EXPECT_LE(zero.entropy_density[entropic][i], zero.entropy_density[entropic][i - 1] + 1e-12);
+    }
+  }
+  EXPECT_LT(largest_left, 1.0 + 1e-3);
 }
 
 } // namespace

@@ -17,7 +17,13 @@ std::string_view name_of(DiscontinuityVolume volume) {
   return names[static_cast<int>(volume)];
 }
 
-DiscontinuityProfiles entropic_discontinuity(double left_spacing, double support_radius) {
+std::string_view name_of(RightEntropy right) {
+  static constexpr std::string_view names[] = {"spacing", "left_value", "zero"};
+  return names[static_cast<int>(right)];
+}
+
+DiscontinuityProfiles entropic_discontinuity(RightEntropy right, double left_spacing,
+                                             double support_radius) {
   // Particles at the centres of their spacing cells, continued 2 h beyond both ends (dummies).
   const double right_spacing = 0.5 * left_spacing;
   const double mass = left_spacing; // rho = 1 on the left
@@ -31,7 +37,9 @@ DiscontinuityProfiles entropic_discontinuity(double left_spacing, double support
   const auto right_count = static_cast<long>(std::lround((0.5 + reach) / right_spacing));
   for (long i = 0; i < right_count; ++i) {
     x.push_back(0.5 + (static_cast<double>(i) + 0.5) * right_spacing);
-    entropy.push_back(right_spacing);
+    entropy.push_back(right == RightEntropy::spacing      ? right_spacing
+                      : right == RightEntropy::left_value ? left_spacing
+                                                          : 0.0);
   }
   const std::size_t n = x.size();
   const WendlandQuintic<1> kernel(support_radius);

@@ -29,8 +29,19 @@ struct DiscontinuityProfiles {
   std::array<std::vector<double>, 5> density, entropy_density;
 };
 
+// The particle entropies S of the right part. The paper sets them "in the left part" equal to the
+// spacing and says nothing of the right part; the three readings: the right part's own spacing
+// (s about 1 everywhere, the stated aim: the default), the left part's value continued (S the
+// same on every particle), zero (only the left part carries entropy, as a code that starts every
+// S at 0 would have it).
+enum class RightEntropy { spacing, left_value, zero };
+inline constexpr std::array<RightEntropy, 3> right_entropies = {
+    RightEntropy::spacing, RightEntropy::left_value, RightEntropy::zero};
+std::string_view name_of(RightEntropy right);
+
 // The profiles; `left_spacing` 1e-4 and h 1e-3 are the paper's (right spacing: half the left).
-DiscontinuityProfiles entropic_discontinuity(double left_spacing = 1e-4,
+DiscontinuityProfiles entropic_discontinuity(RightEntropy right = RightEntropy::spacing,
+                                             double left_spacing = 1e-4,
                                              double support_radius = 1e-3);
 
 } // namespace revsph::analysis
