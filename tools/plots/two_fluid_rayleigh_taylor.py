@@ -13,8 +13,9 @@ on one thread) into RUNS/NAME (default RUNS = out/two_fluid). Runs:
   rt-paper          models/two_fluid/cases/rayleigh-taylor.toml: 240 x 480 particles, every
                     coupling on, to 7.49 ms (20 to 60 minutes on one thread)
 Writes into --out (default docs/figures):
-  two_fluid_rayleigh_taylor.png         the paper's run at its snapshots (Fig. 5 (a), (c)): the
-                                        kinds and the speed
+  two_fluid_rayleigh_taylor.png         the paper's run at its snapshots (Fig. 5): (a) the kinds,
+                                        (b) the magnitude of eq. (34)'s viscosity term (the
+                                        `viscous_acceleration` view), (c) the speed
   two_fluid_rayleigh_taylor.csv         the paper's run: t, the interface's lowest superfluid
                                         and highest normal particle (the spike and the bubble)
   two_fluid_rayleigh_taylor_growth.png  the interface's sin(k x) amplitude against t with the
@@ -82,45 +83,58 @@ def interface_amplitude(path):
 def paper_figure(runs, out, report):
     paths = snapshots(runs / "rt-paper")
     shown = paths[1:][-4:] if len(paths) > 4 else paths
-    fig, axes = plt.subplots(2, len(shown), figsize=(3.4 * len(shown), 11), squeeze=False)
+    fig, axes = plt.subplots(3, len(shown), figsize=(3.4 * len(shown), 16), squeeze=False)
     rows = []
     with h5py.File(shown[-1]) as f:
         speed_scale = np.percentile(np.concatenate([
             np.hypot(*(f[f"particles/{k}/momentum"][...] /
                        f[f"particles/{k}/mass"][...].reshape(-1, 1)).T)
             for k in ("superfluid", "normal")]), 99) * 1e3
+        viscous_scale = np.percentile(np.linalg.norm(
+            f["particles/normal/viscous_acceleration"][...], axis=1), 99)
     for column, path in enumerate(shown):
         with h5py.File(path) as f:
             time = float(f.attrs["time"])
             kinds = {k: (f[f"particles/{k}/position"][...], f[f"particles/{k}/momentum"][...] /
-                         f[f"particles/{k}/mass"][...].reshape(-1, 1))
+                         f[f"particles/{k}/mass"][...].reshape(-1, 1),
+                         np.linalg.norm(f[f"particles/{k}/viscous_acceleration"][...], axis=1))
                      for k in ("superfluid", "normal")}
         scaled = time * np.sqrt(G / L_X)
         for kind, colour in (("superfluid", "tab:red"), ("normal", "tab:blue")):
-            x, _ = kinds[kind]
+            x = kinds[kind][0]
             axes[0, column].scatter(x[:, 0] * 1e6, x[:, 1] * 1e6, s=0.3, c=colour, lw=0)
         x = np.concatenate([kinds[k][0] for k in kinds])
         speed = np.concatenate([np.hypot(*kinds[k][1].T) for k in kinds]) * 1e3
-        image = axes[1, column].scatter(x[:, 0] * 1e6, x[:, 1] * 1e6, s=0.3, c=speed,
+        viscous = np.concatenate([kinds[k][2] for k in kinds])
+        viscous_image = axes[1, column].scatter(x[:, 0] * 1e6, x[:, 1] * 1e6, s=0.3, c=viscous,
+                                                cmap="magma", vmin=0, vmax=viscous_scale, lw=0)
+        image = axes[2, column].scatter(x[:, 0] * 1e6, x[:, 1] * 1e6, s=0.3, c=speed,
                                         cmap="viridis", vmin=0, vmax=speed_scale, lw=0)
-        for row in (0, 1):
+        for row in (0, 1, 2):
             axes[row, column].set(aspect="equal", xlim=(0, 100), ylim=(0, 200), xlabel="x (um)",
                                   title=f"t = {time * 1e3:.2f} ms\nt sqrt(g/L_x) = {scaled:.2f}")
         spike = kinds["superfluid"][0][:, 1].min()
         bubble = kinds["normal"][0][:, 1].max()
-        rows.append((time, scaled, spike, bubble))
-    fig.colorbar(image, ax=axes[1, -1], label="|v| (mm/s)", shrink=0.8)
-    axes[0, 0].set(ylabel="y (um): superfluid red, normal blue")
-    axes[1, 0].set(ylabel="y (um)")
+        rows.append((time, scaled, spike, bubble, kinds["superfluid"][2].max(),
+                     np.median(kinds["normal"][2]), kinds["normal"][2].max()))
+    fig.colorbar(viscous_image, ax=axes[1, -1], label="|eq. (34)'s term| (m/s^2)", shrink=0.8)
+    fig.colorbar(image, ax=axes[2, -1], label="|v| (mm/s)", shrink=0.8)
+    axes[0, 0].set(ylabel="(a) y (um): superfluid red, normal blue")
+    axes[1, 0].set(ylabel="(b) y (um): viscosity term")
+    axes[2, 0].set(ylabel="(c) y (um): speed")
     save_figure(fig, out / "two_fluid_rayleigh_taylor.png")
     with open(out / "two_fluid_rayleigh_taylor.csv", "w", newline="") as f:
         writer = csv.writer(f)
-        writer.writerow(["time", "scaled_time", "lowest_superfluid_y", "highest_normal_y"])
+        writer.writerow(["time", "scaled_time", "lowest_superfluid_y", "highest_normal_y",
+                         "superfluid_viscous_max", "normal_viscous_median", "normal_viscous_max"])
         writer.writerows([f"{v:.8g}" for v in r] for r in rows)
-    t, scaled, spike, bubble = rows[-1]
+    t, scaled, spike, bubble, superfluid_viscous, normal_median, normal_max = rows[-1]
     report.append((f"rt-paper at t = {t * 1e3:.2f} ms (t sqrt(g/L_x) = {scaled:.2f}): the "
                    "superfluid spike's tip and the normal bubble's top (um)",
                    f"{spike * 1e6:.1f}, {bubble * 1e6:.1f}"))
+    report.append(("rt-paper at the last snapshot: |eq. (34)'s viscosity term| (m/s^2): largest on "
+                   "a superfluid particle; median and largest on a normal particle",
+                   f"{superfluid_viscous:.3g}; {normal_median:.3g}, {normal_max:.3g}"))
 
 
 def make_figures(runs, out, report, names):
