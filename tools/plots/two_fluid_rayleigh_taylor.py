@@ -10,6 +10,9 @@ fluid, the two-fluid couplings off, 96 x 192 particles, amplitude 1 um, to 5 ms;
 on one thread) into RUNS/NAME (default RUNS = out/two_fluid). Runs:
   rt-linear-n96     the case as it is (L_x / dr = 96)
   rt-linear-n192    dr halved (L_x / dr = 192; about 5 minutes on one thread)
+  rt-hydro-nN       the case from hydrostatic equilibrium (initial.hydrostatic = true: each
+                    particle's mass compressed to its column's pressure), L_x / dr = N = 96,
+                    144, 192
   rt-paper          models/two_fluid/cases/rayleigh-taylor.toml: 240 x 480 particles, every
                     coupling on, to 7.49 ms (20 to 60 minutes on one thread)
 Writes into --out (default docs/figures):
@@ -53,15 +56,18 @@ K = 2.0 * np.pi / L_X
 ATWOOD = (RHO_S - RHO_N) / (RHO_S + RHO_N)
 SIGMA = np.sqrt(ATWOOD * K * G)
 LINEAR_SLOPE = 0.15
-RUNS = {"rt-linear-n96": 96, "rt-linear-n192": 192, "rt-paper": None}
+RUNS = {"rt-linear-n96": (96, False), "rt-linear-n192": (192, False), "rt-paper": None,
+        "rt-hydro-n96": (96, True), "rt-hydro-n144": (144, True), "rt-hydro-n192": (192, True)}
 
 
-def command(n):
-    if n is None:
+def command(run):
+    if run is None:
         return ["run", str(PAPER_CASE)]
+    n, hydrostatic = run
     dr = L_X / n
     return ["run", str(CASE), "--set", f"discretisation.dr={dr!r}",
-            "--set", f"output.snapshot_every={max(1, round(80 * n / 96))}"]
+            "--set", f"output.snapshot_every={max(1, round(80 * n / 96))}",
+            "--set", f"initial.hydrostatic={'true' if hydrostatic else 'false'}"]
 
 
 def interface_amplitude(path):
