@@ -160,6 +160,13 @@ void apply_hydrostatic_masses(const Parameters<D>& p, std::array<KindParticles<D
   sum_pairs<FixedArithmetic>(layout, NumberDensityTerm<D>{kernel}, sums);
   std::vector<double> number_density;
   layout.scatter(sums.values(0), number_density);
+  // The interior's number density, the fluid's median (every fluid particle of a closed box has
+  // its kernel full).
+  const std::size_t fluid_count = kinds[0]->position.size() + kinds[1]->position.size();
+  std::vector<double> fluid_n(number_density.begin(),
+                              number_density.begin() + static_cast<std::ptrdiff_t>(fluid_count));
+  std::nth_element(fluid_n.begin(), fluid_n.begin() + fluid_n.size() / 2, fluid_n.end());
+  const double interior_n = fluid_n[fluid_n.size() / 2];
   std::size_t c = 0;
   for (std::size_t f = 0; f < 3; ++f) {
     KindParticles<D>& kind = *kinds[f];
@@ -168,7 +175,11 @@ void apply_hydrostatic_masses(const Parameters<D>& p, std::array<KindParticles<D
     for (std::size_t i = 0; i < kind.position.size(); ++i, ++c) {
       const Vec<D>& x = kind.position[i];
       const long long column = f < 2 ? column_of(x) : nearest_fluid_column(x);
-      const double pressure = pressure_at(column, x[D - 1]);
+      // A wall particle pushes on the fluid with p V^2 = p / n^2 (the variational pair force):
+      // where its kernel is cut (the outer layers) its pressure is lowered by (n / n_0)^2 so
+      // that it pushes as a full interior particle at the column's pressure would.
+      const double cut = f < 2 ? 1.0 : number_density[c] / interior_n;
+      const double pressure = pressure_at(column, x[D - 1]) * cut * cut;
       const double density =
           rest * std::pow(1.0 + (pressure - p.background_pressure) / b, 1.0 / p.tait_exponent);
       kind.mass[i] = density / number_density[c];
