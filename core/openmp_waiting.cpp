@@ -1,15 +1,45 @@
 #include "core/openmp_waiting.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cstdlib>
+#include <fstream>
+#include <string>
+#include <thread>
 #include <unistd.h>
 
 namespace revsph {
 
-void use_short_openmp_spinning(char** argv) {
+const char* openmp_spin_count_for(int other_runnable) {
+  return other_runnable > 0 ? "100" : "1000";
+}
+
+int other_runnable_tasks() {
+  int fewest = -1;
+  for (int sample = 0; sample < 3; ++sample) {
+    if (sample > 0) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    // The fourth field of /proc/loadavg: runnable tasks / all tasks, this one included.
+    std::ifstream loadavg("/proc/loadavg");
+    std::string one, five, fifteen;
+    int runnable = 0;
+    char slash = 0;
+    if (!(loadavg >> one >> five >> fifteen >> runnable >> slash) || slash != '/') {
+      return 0;
+    }
+    const int others = std::max(runnable - 1, 0);
+    fewest = fewest < 0 ? others : std::min(fewest, others);
+  }
+  return std::max(fewest, 0);
+}
+
+void choose_openmp_spinning(char** argv) {
   if (std::getenv("OMP_WAIT_POLICY") != nullptr || std::getenv("GOMP_SPINCOUNT") != nullptr) {
     return; // the user's choice, or this process is the re-executed one
   }
-  if (argv == nullptr || argv[0] == nullptr || setenv("GOMP_SPINCOUNT", "1000", 1) != 0) {
+  if (argv == nullptr || argv[0] == nullptr ||
+      setenv("GOMP_SPINCOUNT", openmp_spin_count_for(other_runnable_tasks()), 1) != 0) {
     return;
   }
   execv("/proc/self/exe", argv);
@@ -27,9 +57,9 @@ int revsph_openmp_waiting_anchor = 0;
 
 namespace {
 
-[[gnu::constructor]] void short_openmp_spinning_before_main(int /*argc*/, char** argv,
-                                                            char** /*envp*/) {
-  revsph::use_short_openmp_spinning(argv);
+[[gnu::constructor]] void choose_openmp_spinning_before_main(int /*argc*/, char** argv,
+                                                             char** /*envp*/) {
+  revsph::choose_openmp_spinning(argv);
 }
 
 } // namespace

@@ -1,4 +1,4 @@
-// Prints the GOMP_SPINCOUNT this program's main sees: the core sets it before main
+// Prints the GOMP_SPINCOUNT this program's main sees: the core chooses it before main
 // (core/openmp_waiting.hpp); tests/unit/openmp_waiting_test.cpp checks that it does. Calls
 // nothing of the core itself: linking it must be enough.
 

@@ -1,13 +1,20 @@
-// Every program that links the core waits at OpenMP barriers the short way
-// (core/openmp_waiting.hpp): run a program that links the core and calls nothing of it, with
-// the environment the user might have, and read back what its main saw.
+// Every program that links the core chooses how its threads wait at OpenMP barriers from the
+// machine's load (core/openmp_waiting.hpp): run a program that links the core and calls nothing
+// of it, with the environment the user might have, and read back what its main saw.
+
+#include "core/openmp_waiting.hpp"
 
 #include <gtest/gtest.h>
 
 #include <array>
+#include <csignal>
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
 
 namespace {
 
@@ -26,8 +33,40 @@ std::string probe_output(const std::string& environment) {
   return output;
 }
 
-TEST(OpenmpWaiting, ProgramLinkingTheCoreSpinsShortlyByDefault) {
-  EXPECT_EQ(probe_output(""), "1000\n");
+TEST(OpenmpWaiting, SpinLongOnAnIdleMachineShortOnASharedOne) {
+  EXPECT_STREQ(revsph::openmp_spin_count_for(0), "1000");
+  EXPECT_STREQ(revsph::openmp_spin_count_for(1), "100");
+  EXPECT_STREQ(revsph::openmp_spin_count_for(7), "100");
+}
+
+// Whatever else runs on the machine now, the program sets one of the two counts.
+TEST(OpenmpWaiting, ProgramLinkingTheCoreChoosesASpinCount) {
+  const std::string chosen = probe_output("");
+  EXPECT_TRUE(chosen == "1000\n" || chosen == "100\n") << chosen;
+}
+
+// Beside two busy processes there is always another runnable task: the short count.
+TEST(OpenmpWaiting, ProgramBesideBusyProcessesSpinsShortly) {
+  std::vector<pid_t> busy;
+  for (int i = 0; i < 2; ++i) {
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      volatile unsigned long spin = 0;
+      while (true) {
+        spin = spin + 1;
+      }
+    }
+    busy.push_back(pid);
+  }
+  usleep(20000); // let them start running
+  EXPECT_GE(revsph::other_runnable_tasks(), 1);
+  const std::string chosen = probe_output("");
+  for (const pid_t pid : busy) {
+    kill(pid, SIGKILL);
+    waitpid(pid, nullptr, 0);
+  }
+  EXPECT_EQ(chosen, "100\n");
 }
 
 TEST(OpenmpWaiting, UsersOwnSpinCountIsKept) {
