@@ -171,6 +171,29 @@ def figure_script_main(args, runs_table, makers, report_name):
     return 0 if made else 1
 
 
+def run_rows_main(doc, default_runs, name, runs, command, draw_row, panels, panel_width=5.0):
+    """main() of a script whose figure has one row of `panels` panels per run: for each (run,
+    value) of `runs`, draw_row(fig, axes, RUNS / run, value, columns, report); writes
+    OUT/name.png, OUT/name.csv (the columns) and OUT/name.md (the report), OUT defaulting to
+    docs/figures/name. command(value) gives a run's revsph arguments for --make-runs."""
+    parser = figure_parser(doc, default_runs, REPO / "docs" / "figures" / name)
+    args = parser.parse_args()
+
+    def make_figure(runs_dir, out, report):
+        import matplotlib.pyplot as plt  # here: the modules importing this one need not plot
+        fig, axes = plt.subplots(len(runs), panels, figsize=(panel_width * panels, 5 * len(runs)),
+                                 squeeze=False)
+        columns = {}
+        for row, (run, value) in zip(axes, runs.items()):
+            draw_row(fig, row, runs_dir / run, value, columns, report)
+        fig.tight_layout()
+        save_figure(fig, out / f"{name}.png")
+        write_csv(out / f"{name}.csv", columns)
+
+    return figure_script_main(args, {run: command(value) for run, value in runs.items()},
+                              [(list(runs), make_figure)], f"{name}.md")
+
+
 def chosen_runs_main(doc, default_runs, runs_table, command, make_figures, report_name):
     """main() of a figure script whose one maker, make_figures(runs, out, report, names), draws
     the runs that --only chooses (all of runs_table by default), so that such scripts cannot

@@ -29,7 +29,7 @@ import numpy as np  # noqa: E402
 from scipy.spatial import cKDTree  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from revsph_runs import REPO, figure_parser, figure_script_main, save_figure, snapshots, write_csv  # noqa: E402,E501
+from revsph_runs import REPO, run_rows_main, snapshots  # noqa: E402
 
 RUNS = {"cylinder-fig10": 0.01, "cylinder-fig10-c0.05": 0.05}
 RADIUS = 1.0e-3
@@ -133,20 +133,9 @@ def draw_row(fig, axes, run, c_omega, columns, report):
                    f"{force_n.max():.3e} / {force_n.mean():.3e}"))
 
 
-def make_figure(runs, out, report):
-    fig, axes = plt.subplots(len(RUNS), 3, figsize=(15, 5 * len(RUNS)), squeeze=False)
-    columns = {}
-    for row, (name, c_omega) in zip(axes, RUNS.items()):
-        draw_row(fig, row, runs / name, c_omega, columns, report)
-    save_figure(fig, out / "two_fluid_fig10.png")
-    write_csv(out / "two_fluid_fig10.csv", columns)
-
-
 def main():
-    parser = figure_parser(__doc__, "out/two_fluid", REPO / "docs" / "figures" / "two_fluid_fig10")
-    args = parser.parse_args()
-    return figure_script_main(args, {name: command(c) for name, c in RUNS.items()},
-                              [(list(RUNS), make_figure)], "two_fluid_fig10.md")
+    return run_rows_main(__doc__, "out/two_fluid", "two_fluid_fig10", RUNS, command, draw_row,
+                         panels=3)
 
 
 if __name__ == "__main__":

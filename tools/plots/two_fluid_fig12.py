@@ -38,7 +38,7 @@ from scipy import ndimage  # noqa: E402
 from scipy.spatial import cKDTree  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from revsph_runs import REPO, figure_parser, figure_script_main, save_figure, snapshots, write_csv  # noqa: E402,E501
+from revsph_runs import REPO, run_rows_main, snapshots  # noqa: E402
 
 RUNS = {"cylinder-fig12": 0.01, "cylinder-fig12-c0.05": 0.05}
 RADIUS = 1.0e-3
@@ -85,7 +85,7 @@ def describe(areas):
             f">= 10 dr^2")
 
 
-def draw_run(axes, run, c_omega, columns, report):
+def draw_run(fig, axes, run, c_omega, columns, report):
     name = run.name
     tag = f"C_omega = {c_omega:g}"
     image_axis, histogram_axis = axes
@@ -109,21 +109,9 @@ def draw_run(axes, run, c_omega, columns, report):
     histogram_axis.legend()
 
 
-def make_figure(runs, out, report):
-    fig, axes = plt.subplots(len(RUNS), 2, figsize=(11, 5 * len(RUNS)), squeeze=False)
-    columns = {}
-    for row, (name, c_omega) in zip(axes, RUNS.items()):
-        draw_run(row, runs / name, c_omega, columns, report)
-    fig.tight_layout()
-    save_figure(fig, out / "two_fluid_fig12.png")
-    write_csv(out / "two_fluid_fig12.csv", columns)
-
-
 def main():
-    parser = figure_parser(__doc__, "out/two_fluid", REPO / "docs" / "figures" / "two_fluid_fig12")
-    args = parser.parse_args()
-    return figure_script_main(args, {name: command(c) for name, c in RUNS.items()},
-                              [(list(RUNS), make_figure)], "two_fluid_fig12.md")
+    return run_rows_main(__doc__, "out/two_fluid", "two_fluid_fig12", RUNS, command, draw_run,
+                         panels=2, panel_width=5.5)
 
 
 if __name__ == "__main__":
