@@ -41,9 +41,21 @@ struct Interface {
   double height = 0.0;
   double amplitude = 0.0;
   double wavelength = 0.0;
+  // false: kinds split by the curve on the unmoved lattice; true: split at y = height, then every
+  // fluid particle moved by the linear mode's displacement (displacement()).
+  bool displaced = false;
 
   bool superfluid_at(double x, double y) const {
-    return y > height - amplitude * std::sin(2.0 * std::numbers::pi * x / wavelength);
+    return y > (displaced ? height
+                          : height - amplitude * std::sin(2.0 * std::numbers::pi * x / wavelength));
+  }
+  // The incompressible displacement (x, y) of the interface's linear mode at a point of the flat
+  // state: the interface y = height moves to height - amplitude sin(k x), and the displacement
+  // decays as e^(-k |y - height|) on both sides (div = 0 on each; it slips along the interface).
+  std::array<double, 2> displacement(double x, double y) const {
+    const double k = 2.0 * std::numbers::pi / wavelength;
+    const double decay = amplitude * std::exp(-k * std::abs(y - height));
+    return {(y > height ? 1.0 : -1.0) * decay * std::cos(k * x), -decay * std::sin(k * x)};
   }
 };
 
@@ -97,8 +109,8 @@ struct Parameters : ParticleDiscretisation { // dr, support_radius, dt, cell_siz
   MutualFriction mutual_friction;
   Contact contact;
   Interface interface;
-  RigidWalls rigid_walls;       // filled by the setup from the wall blocks
-  double random_velocity = 0.0; // each velocity component uniform in [-value, value] at start
+  RigidWalls rigid_walls;         // filled by the setup from the wall blocks
+  double random_velocity = 0.0;   // each velocity component uniform in [-value, value] at start
   bool hydrostatic_start = false; // masses of the hydrostatic column (setup.cpp)
   std::uint64_t seed = 1;
   // [discretisation]

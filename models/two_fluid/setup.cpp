@@ -274,6 +274,17 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
     }
     apply_hydrostatic_masses<D>(parameters, {&superfluid, &normal, &wall});
   }
+  // The interface's displacement moves the particles after the masses are set: each carries the
+  // mass (and so the pressure) of its place in the flat column, as a fluid displaced at rest.
+  if (parameters.interface.given && parameters.interface.displaced) {
+    for (KindParticles<D>* kind : {&superfluid, &normal}) {
+      for (Vec<D>& x : kind->position) {
+        const auto [along, up] = parameters.interface.displacement(x[0], x[D - 1]);
+        x[0] += along;
+        x[D - 1] += up;
+      }
+    }
+  }
   // N / N_n is the normal share of a random mixture (model.hpp, normal_pair_factor): it means
   // nothing for layers of pure kinds.
   const bool any_mixed = std::any_of(blocks.begin(), blocks.end(),

@@ -13,6 +13,9 @@ on one thread) into RUNS/NAME (default RUNS = out/two_fluid). Runs:
   rt-hydro-nN       the case from hydrostatic equilibrium (initial.hydrostatic = true: each
                     particle's mass compressed to its column's pressure), L_x / dr = N = 96,
                     144, 192
+  rt-mode-nN        the same with the interface moved by its linear mode's displacement
+                    (interface.perturbation = "displacement": a smooth interface, not a
+                    staircase of lattice rows)
   rt-paper          models/two_fluid/cases/rayleigh-taylor.toml: 240 x 480 particles, every
                     coupling on, to 7.49 ms (20 to 60 minutes on one thread)
 Writes into --out (default docs/figures):
@@ -56,18 +59,21 @@ K = 2.0 * np.pi / L_X
 ATWOOD = (RHO_S - RHO_N) / (RHO_S + RHO_N)
 SIGMA = np.sqrt(ATWOOD * K * G)
 LINEAR_SLOPE = 0.15
-RUNS = {"rt-linear-n96": (96, False), "rt-linear-n192": (192, False), "rt-paper": None,
-        "rt-hydro-n96": (96, True), "rt-hydro-n144": (144, True), "rt-hydro-n192": (192, True)}
+RUNS = {"rt-linear-n96": (96, False, False), "rt-linear-n192": (192, False, False),
+        "rt-paper": None}
+RUNS.update({f"rt-hydro-n{n}": (n, True, False) for n in (96, 144, 192)})
+RUNS.update({f"rt-mode-n{n}": (n, True, True) for n in (96, 144, 192)})
 
 
 def command(run):
     if run is None:
         return ["run", str(PAPER_CASE)]
-    n, hydrostatic = run
+    n, hydrostatic, displaced = run
     dr = L_X / n
     return ["run", str(CASE), "--set", f"discretisation.dr={dr!r}",
             "--set", f"output.snapshot_every={max(1, round(80 * n / 96))}",
-            "--set", f"initial.hydrostatic={'true' if hydrostatic else 'false'}"]
+            "--set", f"initial.hydrostatic={'true' if hydrostatic else 'false'}",
+            "--set", f"interface.perturbation={'displacement' if displaced else 'kinds'}"]
 
 
 def interface_amplitude(path):
