@@ -14,7 +14,8 @@ last snapshot only, 6-10 minutes each on two threads:
                         vortices growing
 Writes OUT/two_fluid_fig12.png (default OUT = docs/figures/two_fluid_fig12: per run the image the
 pores are found in and the histograms at t = 0 and 5 s), OUT/two_fluid_fig12.csv (the histograms)
-and OUT/two_fluid_fig12.md (count, mean, median and spread of the areas).
+and OUT/two_fluid_fig12.md (count, mean, median and spread of the areas, of all pores and of
+those of 10 dr^2 or more: a vortex's core rather than a stray particle).
 
 The image stands in for the paper's picture of the particles: pixels of dr / 2 inside the
 cylinder, each of the kind of its nearest fluid particle (a Voronoi picture of the particles, the
@@ -46,6 +47,9 @@ DR = 1.25e-5  # the case's spacing
 PIXEL = 0.5 * DR
 # Pore areas in dr^2, a particle's Voronoi cell about 1: bins centred on whole particles.
 BINS = np.array([0.5, 1.5, 2.5, 3.5, 5.5, 8.5, 13.5, 20.5, 32.5, 50.5, 80.5, 128.5, 200.5, 400.5])
+# Pores of this area (dr^2) and more: a vortex's core, not a stray particle or two (ImageJ's
+# "Analyze Particles" is given such a size floor).
+LARGE = 10
 
 
 def command(c_omega):
@@ -79,10 +83,15 @@ def pore_areas(normal):
 
 
 def describe(areas):
-    return (f"{len(areas)} pores; mean {areas.mean():.2f}, median {np.median(areas):.2f}, "
+    large = areas[areas >= LARGE]
+    text = (f"{len(areas)} pores; mean {areas.mean():.2f}, median {np.median(areas):.2f}, "
             f"std / mean {areas.std() / areas.mean():.2f}, largest {areas.max():.1f}; "
-            f"{100 * areas[areas >= 10].sum() / areas.sum():.1f} % of the normal area in pores "
-            f">= 10 dr^2")
+            f"{100 * large.sum() / areas.sum():.1f} % of the normal area in {len(large)} pores "
+            f">= {LARGE} dr^2")
+    if len(large) > 1:
+        text += (f", their mean {large.mean():.1f}, median {np.median(large):.1f}, std / mean "
+                 f"{large.std() / large.mean():.2f}")
+    return text
 
 
 def draw_run(fig, axes, run, c_omega, columns, report):
@@ -104,7 +113,7 @@ def draw_run(fig, axes, run, c_omega, columns, report):
                       extent=[-RADIUS * 1e3, RADIUS * 1e3, -RADIUS * 1e3, RADIUS * 1e3])
     image_axis.set(title=f"normal (blue) and superfluid (red) pixels\nt = {time:.2f} s, {tag}",
                    xlabel="x (mm)", ylabel="y (mm)", aspect="equal")
-    histogram_axis.set(xscale="log", xlabel="pore area (dr^2; 1 dr^2 = 4 pixels)",
+    histogram_axis.set(xscale="log", yscale="log", xlabel="pore area (dr^2; 1 dr^2 = 4 pixels)",
                        ylabel="number of pores", title=f"pore areas, {tag}")
     histogram_axis.legend()
 
