@@ -144,7 +144,7 @@ def paper_figure(runs, out, report):
     report.append((f"rt-paper at t = {t * 1e3:.2f} ms (t sqrt(g/L_x) = {scaled:.2f}): the "
                    "superfluid spike's tip and the normal bubble's top (um)",
                    f"{spike * 1e6:.1f}, {bubble * 1e6:.1f}"))
-    report.append(("rt-paper at the last snapshot: |eq. (34)'s viscosity term| (m/s^2): largest on "
+    report.append(("rt-paper at the last snapshot: magnitude of eq. (34)'s viscosity term (m/s^2): largest on "
                    "a superfluid particle; median and largest on a normal particle",
                    f"{superfluid_viscous:.3g}; {normal_median:.3g}, {normal_max:.3g}"))
 
