@@ -168,7 +168,7 @@ def make_figures(runs, out, report, names):
         axis.plot(t[linear] * 1e3, np.abs(a0 * np.cosh(sigma * t[linear])) * 1e6, "-",
                   color=line[0].get_color(), label=f"fit: sigma = {sigma:.0f} 1/s")
         axis.plot(t * 1e3, np.abs(a0 * np.cosh(SIGMA * t)) * 1e6, ":", color="k")
-        report.append((f"{name}: sigma from a0 cosh(sigma t) while k|a| < {LINEAR_SLOPE} "
+        report.append((f"{name}: sigma from a0 cosh(sigma t) while k abs(a) < {LINEAR_SLOPE} "
                        f"({int(linear.sum())} snapshots, to t = {t[linear].max() * 1e3:.2f} ms)",
                        f"{sigma:.1f} 1/s, {100 * (sigma / SIGMA - 1):+.1f} % against "
                        f"sqrt(A k g) = {SIGMA:.1f}"))
