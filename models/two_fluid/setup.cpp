@@ -6,12 +6,11 @@
 #include "core/portable_random.hpp"
 #include "core/run_settings.hpp"
 #include "core/state_fill.hpp"
+#include "models/two_fluid/hydrostatic_start.hpp"
 #include "models/two_fluid/model.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <map>
 #include <random>
 #include <string>
 
@@ -92,99 +91,6 @@ double rigid_rate(const CaseFile& case_file, const std::string& key) {
     case_file.fail(key + ".wall_motion", "a rigid wall needs a non-zero rotation_rate");
   }
   return std::abs(rate);
-}
-
-// initial.hydrostatic: the fluid and the walls start compressed as a column at rest under
-// gravity. The pressure at a particle is background_pressure plus rho_k g dr for every fluid
-// particle above it in its lattice column (half for itself), rho_k each one's rest density; a
-// wall particle takes the column of the nearest fluid particle's x and the normal fluid's rest
-// density (walls are frozen normal fluid). Its mass is the Tait density of that pressure,
-// rho_k (1 + (p - p_b) / B)^(1 / gamma) with B = rho_k c^2 / gamma, over its own number density
-// n = sum_b W_ab at the start (exact sums, as the model's): so rho = m n (eq. 36) is the column's
-// at every particle, next to walls too, where 1 / dr^D would leave the outer wall layers short
-// and the kernel sum's lattice bias (0.5 % at 3 dr) would give the two fluids' Tait laws
-// different pressures at rest.
-template <int D>
-void apply_hydrostatic_masses(const Parameters<D>& p, std::array<KindParticles<D>*, 3> kinds) {
-  // Per column (x in whole spacings from a fluid particle's: lattice columns are whole numbers
-  // apart, while x / dr itself may sit on a half): the heights and rho_k g dr of its particles.
-  const Vec<D> origin = kinds[0]->position.empty() ? kinds[1]->position[0] : kinds[0]->position[0];
-  std::map<long long, std::vector<std::pair<double, double>>> columns;
-  const auto column_of = [&](const Vec<D>& x) {
-    long long key = 0;
-    for (int k = 0; k < D - 1; ++k) {
-      key = key * 1000003 + std::llround((x[k] - origin[k]) / p.dr);
-    }
-    return key;
-  };
-  for (std::size_t f = 0; f < 2; ++f) {
-    for (const Vec<D>& x : kinds[f]->position) {
-      columns[column_of(x)].push_back({x[D - 1], p.rest_density(f == 0) * p.gravity * p.dr});
-    }
-  }
-  const auto pressure_at = [&](long long column, double y) {
-    double pressure = p.background_pressure;
-    for (const auto& [height, weight] : columns.at(column)) {
-      pressure += height > y ? weight : height == y ? 0.5 * weight : 0.0;
-    }
-    return pressure;
-  };
-  const auto nearest_fluid_column = [&](const Vec<D>& x) {
-    long long nearest = columns.begin()->first;
-    double distance = std::numeric_limits<double>::infinity();
-    for (std::size_t f = 0; f < 2; ++f) {
-      for (const Vec<D>& y : kinds[f]->position) {
-        double d = 0.0;
-        for (int k = 0; k < D - 1; ++k) {
-          d += (x[k] - y[k]) * (x[k] - y[k]);
-        }
-        if (d < distance) {
-          distance = d;
-          nearest = column_of(y);
-        }
-      }
-    }
-    return nearest;
-  };
-  // Every particle's number density, superfluid, normal then wall.
-  std::vector<const Vec<D>*> all;
-  for (const KindParticles<D>* kind : kinds) {
-    for (const Vec<D>& x : kind->position) {
-      all.push_back(&x);
-    }
-  }
-  SlotLayout<D> layout(p.domain, p.support_radius, {{"particles", all.size()}});
-  layout.build([&](int axis, std::size_t c) { return (*all[c])[axis]; }, p.support_radius);
-  const WendlandQuintic<D> kernel(p.support_radius);
-  PairSums<FixedArithmetic, 1> sums(SummedQuantity{"number_density", p.density_scale});
-  sum_pairs<FixedArithmetic>(layout, NumberDensityTerm<D>{kernel}, sums);
-  std::vector<double> number_density;
-  layout.scatter(sums.values(0), number_density);
-  // The interior's number density, the fluid's median (every fluid particle of a closed box has
-  // its kernel full).
-  const std::size_t fluid_count = kinds[0]->position.size() + kinds[1]->position.size();
-  std::vector<double> fluid_n(number_density.begin(),
-                              number_density.begin() + static_cast<std::ptrdiff_t>(fluid_count));
-  std::nth_element(fluid_n.begin(), fluid_n.begin() + fluid_n.size() / 2, fluid_n.end());
-  const double interior_n = fluid_n[fluid_n.size() / 2];
-  std::size_t c = 0;
-  for (std::size_t f = 0; f < 3; ++f) {
-    KindParticles<D>& kind = *kinds[f];
-    const double rest = p.rest_density(f == 0);
-    const double b = rest * p.sound_speed * p.sound_speed / p.tait_exponent;
-    for (std::size_t i = 0; i < kind.position.size(); ++i, ++c) {
-      const Vec<D>& x = kind.position[i];
-      const long long column = f < 2 ? column_of(x) : nearest_fluid_column(x);
-      // A wall particle pushes on the fluid with p V^2 = p / n^2 (the variational pair force):
-      // where its kernel is cut (the outer layers) its pressure is lowered by (n / n_0)^2 so
-      // that it pushes as a full interior particle at the column's pressure would.
-      const double cut = f < 2 ? 1.0 : number_density[c] / interior_n;
-      const double pressure = pressure_at(column, x[D - 1]) * cut * cut;
-      const double density =
-          rest * std::pow(1.0 + (pressure - p.background_pressure) / b, 1.0 / p.tait_exponent);
-      kind.mass[i] = density / number_density[c];
-    }
-  }
 }
 
 template <int D, class Arith>
@@ -272,7 +178,8 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
     if (parameters.interpenetrating || !(parameters.gravity > 0.0)) {
       case_file.fail("initial.hydrostatic", "needs separate phases and physics.gravity > 0");
     }
-    apply_hydrostatic_masses<D>(parameters, {&superfluid, &normal, &wall});
+    hydrostatic_masses<D>(parameters, {superfluid.position, normal.position, wall.position},
+                          {superfluid.mass, normal.mass, wall.mass});
   }
   // The interface's displacement moves the particles after the masses are set: each carries the
   // mass (and so the pressure) of its place in the flat column, as a fluid displaced at rest.
