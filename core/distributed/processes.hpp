@@ -1,0 +1,37 @@
+#pragma once
+// The processes of a run and the reductions across them that cannot depend on how the particles
+// are split among them (docs/design/distributed.md, piece 2): sums of integers (exact in any
+// order), maxima and minima. There is no sum of doubles: a floating-point total would depend on
+// the order in which the processes' parts are added.
+//
+// Built with -DREVSPH_MPI=ON these are MPI_COMM_WORLD's processes (processes_mpi.cpp); without
+// it, one process (processes_serial.cpp), and every reduction returns its argument.
+
+#include "fixedpoint/exact_sum.hpp"
+
+#include <cstdint>
+
+namespace revsph::distributed {
+
+// Starts the processes' communication for the life of this object (MPI_Init_thread with
+// threads funnelled through the main thread, MPI_Finalize at the end): one in main, before
+// anything else reduces.
+class ProcessSession {
+public:
+  ProcessSession(int& argc, char**& argv);
+  ~ProcessSession();
+  ProcessSession(const ProcessSession&) = delete;
+  ProcessSession& operator=(const ProcessSession&) = delete;
+};
+
+// This process's rank in [0, process_count()).
+int process_rank();
+int process_count();
+
+// Over every process.
+fixedpoint::int128 sum_over_processes(fixedpoint::int128 local);
+std::int64_t sum_over_processes(std::int64_t local);
+double max_over_processes(double local);
+double min_over_processes(double local);
+
+} // namespace revsph::distributed

@@ -1,0 +1,95 @@
+// MPI_COMM_WORLD's processes (processes.hpp), built with -DREVSPH_MPI=ON.
+#include "core/distributed/processes.hpp"
+
+#include <mpi.h>
+
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace revsph::distributed {
+
+namespace {
+
+__extension__ using uint128 = unsigned __int128;
+
+// A 128-bit integer travels as 16 bytes; the reduction adds them as integers (modulo 2^128, as
+// the accumulators do: the total is exact and independent of the order of the processes).
+MPI_Datatype int128_type = MPI_DATATYPE_NULL;
+MPI_Op int128_sum = MPI_OP_NULL;
+
+void add_int128(void* in, void* inout, int* count, MPI_Datatype*) {
+  for (int i = 0; i < *count; ++i) {
+    fixedpoint::int128 a = 0;
+    fixedpoint::int128 b = 0;
+    std::memcpy(&a, static_cast<char*>(in) + 16 * i, 16);
+    std::memcpy(&b, static_cast<char*>(inout) + 16 * i, 16);
+    const auto total =
+        static_cast<fixedpoint::int128>(static_cast<uint128>(a) + static_cast<uint128>(b));
+    std::memcpy(static_cast<char*>(inout) + 16 * i, &total, 16);
+  }
+}
+
+void check(int status, const char* what) {
+  if (status != MPI_SUCCESS) {
+    throw std::runtime_error(std::string("MPI: ") + what + " failed");
+  }
+}
+
+} // namespace
+
+ProcessSession::ProcessSession(int& argc, char**& argv) {
+  int provided = 0;
+  check(MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");
+  check(MPI_Type_contiguous(16, MPI_BYTE, &int128_type), "MPI_Type_contiguous");
+  check(MPI_Type_commit(&int128_type), "MPI_Type_commit");
+  check(MPI_Op_create(&add_int128, /*commute=*/1, &int128_sum), "MPI_Op_create");
+}
+
+ProcessSession::~ProcessSession() {
+  MPI_Op_free(&int128_sum);
+  MPI_Type_free(&int128_type);
+  MPI_Finalize();
+}
+
+int process_rank() {
+  int rank = 0;
+  check(MPI_Comm_rank(MPI_COMM_WORLD, &rank), "MPI_Comm_rank");
+  return rank;
+}
+
+int process_count() {
+  int count = 1;
+  check(MPI_Comm_size(MPI_COMM_WORLD, &count), "MPI_Comm_size");
+  return count;
+}
+
+fixedpoint::int128 sum_over_processes(fixedpoint::int128 local) {
+  fixedpoint::int128 total = 0;
+  check(MPI_Allreduce(&local, &total, 1, int128_type, int128_sum, MPI_COMM_WORLD),
+        "MPI_Allreduce (int128 sum)");
+  return total;
+}
+
+std::int64_t sum_over_processes(std::int64_t local) {
+  std::int64_t total = 0;
+  check(MPI_Allreduce(&local, &total, 1, MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD),
+        "MPI_Allreduce (int64 sum)");
+  return total;
+}
+
+double max_over_processes(double local) {
+  double result = 0.0;
+  check(MPI_Allreduce(&local, &result, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD),
+        "MPI_Allreduce (max)");
+  return result;
+}
+
+double min_over_processes(double local) {
+  double result = 0.0;
+  check(MPI_Allreduce(&local, &result, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD),
+        "MPI_Allreduce (min)");
+  return result;
+}
+
+} // namespace revsph::distributed

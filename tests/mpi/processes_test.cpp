@@ -1,0 +1,82 @@
+// The reductions across processes (core/distributed/processes.hpp) give every process the same
+// total as one process adding every term: the exact integer sum of 100 000 fixed-point terms
+// split round-robin among the processes, and the maximum and minimum of the doubles. CTest runs
+// this program on 1, 2 and 3 processes (tests/mpi/CMakeLists.txt); built without MPI it is the
+// one-process case.
+
+#include "core/distributed/processes.hpp"
+#include "fixedpoint/conversion.hpp"
+#include "fixedpoint/scale.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace {
+
+using revsph::distributed::process_count;
+using revsph::distributed::process_rank;
+
+std::vector<double> terms() {
+  std::mt19937_64 generator(12345);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  std::vector<double> values(100000);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    // Spread over 30 binary orders of magnitude, as per-particle energies are.
+    values[i] = uniform(generator) * std::ldexp(1.0, static_cast<int>(i % 30) - 15);
+  }
+  return values;
+}
+
+TEST(Processes, ExactSumIsTheOneProcessSumForAnySplit) {
+  const revsph::fixedpoint::Scale scale = revsph::fixedpoint::Scale::covering(1e5 * 32768.0, 62);
+  revsph::fixedpoint::int128 everything = 0;
+  revsph::fixedpoint::int128 mine = 0;
+  std::int64_t my_count = 0;
+  const std::vector<double> values = terms();
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    std::int64_t raw = 0;
+    ASSERT_TRUE(revsph::fixedpoint::try_to_fixed(values[i], scale, raw));
+    everything += raw;
+    if (static_cast<int>(i % static_cast<std::size_t>(process_count())) == process_rank()) {
+      mine += raw;
+      ++my_count;
+    }
+  }
+  EXPECT_TRUE(revsph::distributed::sum_over_processes(mine) == everything);
+  EXPECT_EQ(revsph::distributed::sum_over_processes(my_count),
+            static_cast<std::int64_t>(values.size()));
+}
+
+TEST(Processes, MaximumAndMinimumAreTheOneProcessOnes) {
+  const std::vector<double> values = terms();
+  double largest = -1e300;
+  double smallest = 1e300;
+  double my_largest = -1e300;
+  double my_smallest = 1e300;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    largest = std::max(largest, values[i]);
+    smallest = std::min(smallest, values[i]);
+    if (static_cast<int>(i % static_cast<std::size_t>(process_count())) == process_rank()) {
+      my_largest = std::max(my_largest, values[i]);
+      my_smallest = std::min(my_smallest, values[i]);
+    }
+  }
+  EXPECT_EQ(revsph::distributed::max_over_processes(my_largest), largest);
+  EXPECT_EQ(revsph::distributed::min_over_processes(my_smallest), smallest);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  revsph::distributed::ProcessSession session(argc, argv);
+  ::testing::InitGoogleTest(&argc, argv);
+  // Only rank 0 prints: the others' results are checked by their exit status.
+  if (process_rank() != 0) {
+    delete ::testing::UnitTest::GetInstance()->listeners().Release(
+        ::testing::UnitTest::GetInstance()->listeners().default_result_printer());
+  }
+  return RUN_ALL_TESTS();
+}
