@@ -34,6 +34,16 @@ int other_runnable_tasks() {
   return std::max(fewest, 0);
 }
 
+std::string openmp_waiting_description() {
+  if (const char* spin_count = std::getenv("GOMP_SPINCOUNT")) {
+    return std::string("spin count ") + spin_count;
+  }
+  if (const char* policy = std::getenv("OMP_WAIT_POLICY")) {
+    return std::string("OMP_WAIT_POLICY=") + policy;
+  }
+  return "libgomp's default";
+}
+
 void choose_openmp_spinning(char** argv) {
   if (std::getenv("OMP_WAIT_POLICY") != nullptr || std::getenv("GOMP_SPINCOUNT") != nullptr) {
     return; // the user's choice, or this process is the re-executed one

@@ -24,6 +24,8 @@
 // link options pull it in), the revsph command, the test programs and a user's own alike; set
 // GOMP_SPINCOUNT or OMP_WAIT_POLICY yourself to keep your own choice.
 
+#include <string>
+
 namespace revsph {
 
 // The spin count for a machine on which `other_runnable` tasks besides this program want a core.
@@ -32,6 +34,10 @@ const char* openmp_spin_count_for(int other_runnable);
 // The fewest runnable tasks other than this one seen in a few samples of /proc/loadavg a
 // millisecond apart (0 where it cannot be read).
 int other_runnable_tasks();
+
+// How this program's threads wait, for the run's log: "spin count N" (GOMP_SPINCOUNT, chosen
+// here or by the user), "OMP_WAIT_POLICY=..." or "libgomp's default".
+std::string openmp_waiting_description();
 
 // Returns only if nothing had to be changed or the re-execution failed (then the program goes on
 // with libgomp's defaults).

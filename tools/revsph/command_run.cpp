@@ -1,5 +1,6 @@
 #include "core/diagnostics_log.hpp"
 #include "core/energy_log.hpp"
+#include "core/openmp_waiting.hpp"
 #include "core/progress.hpp"
 #include "core/run_loop.hpp"
 #include "core/threads.hpp"
@@ -35,7 +36,8 @@ void print_header(const LoadedCase& loaded, std::int64_t steps) {
     std::cout << " from step " << simulation.steps_taken() << " (t = " << simulation.time()
               << " s)";
   }
-  std::cout << ", " << thread_count() << (thread_count() == 1 ? " thread\n" : " threads\n");
+  std::cout << ", " << thread_count() << (thread_count() == 1 ? " thread" : " threads")
+            << " (OpenMP " << openmp_waiting_description() << ")\n";
   print_setup_report(info);
   for (const std::string& term : info.irreversible_terms) {
     std::cout << "note: irreversible term: " << term << "\n";
