@@ -3,6 +3,7 @@
 #include "core/atomic_file.hpp"
 #include "core/build_info.hpp"
 #include "core/memory.hpp"
+#include "core/openmp_waiting.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -50,6 +51,9 @@ void write_summary(const std::filesystem::path& path, Simulation& simulation, co
   summary["stepping_particle_steps_per_second"] =
       run.stepping_seconds > 0 ? particle_steps / run.stepping_seconds : 0.0;
   summary["threads"] = run.threads;
+  // How the threads waited at barriers (core/openmp_waiting.hpp: chosen from the machine's
+  // load at start), which a benchmark's throughput depends on.
+  summary["openmp_waiting"] = openmp_waiting_description();
   summary["peak_memory_bytes"] = peak_resident_bytes();
   summary["initial_hash"] = run.initial_hash;
   summary["final_hash"] = run.final_hash;
