@@ -316,6 +316,20 @@ TEST(CliBadInputTest, FloatArithmeticOnAFixedPointOnlyModelIsBadInput) {
   }
 }
 
+// An --out that cannot be created is bad input, found before the set-up (nothing on stdout: not
+// even the run's header line), not a filesystem error after it (exit 3 before issue 33's fix).
+TEST(CliBadInputTest, OutputDirectoryThatCannotBeCreatedIsRefusedBeforeSetUp) {
+  Sandbox sandbox;
+  const fs::path blocker = sandbox.work() / "blocker";
+  std::ofstream(blocker) << "a file, not a directory\n";
+  const fs::path out = blocker / "run";
+  const CommandResult result =
+      sandbox.revsph({"run", "dambreak-small", "--steps", "1", "--out", out.string()});
+  expect_clean_rejection(sandbox, result, {"blocker"},
+                         {"dambreak-small: --out: ", out.string() + " cannot be created: ",
+                          blocker.string() + " is not a directory"});
+}
+
 TEST(CliBadInputTest, ZeroThreadsIsRefusedInOneLine) {
   Sandbox sandbox;
   for (const std::string threads : {"0", "-2"}) {

@@ -47,6 +47,12 @@ void print_header(const LoadedCase& loaded, std::int64_t steps) {
 } // namespace
 
 int run_command(const RunOptions& options) {
+  if (!options.out_dir.empty()) {
+    // A bad --out is bad input: said before the set-up, which may take long.
+    const CaseOptions& given = options.case_options;
+    RunOutput::check_creatable(options.out_dir,
+                               given.from_snapshot.empty() ? given.case_path : given.from_snapshot);
+  }
   LoadedCase loaded = load_simulation(options.case_options);
   Simulation& simulation = *loaded.simulation;
   const std::int64_t steps = resolve_steps(loaded, options.steps, options.t_end, false);

@@ -5,6 +5,9 @@
 #include "verify/state_hash.hpp"
 
 #include <cstdio>
+#include <system_error>
+
+#include <unistd.h>
 
 namespace revsph::cli {
 
@@ -26,8 +29,31 @@ bool is_snapshot_artifact(const fs::path& path) {
 
 } // namespace
 
+void RunOutput::check_creatable(const fs::path& directory, const std::string& case_source) {
+  std::error_code error;
+  if (fs::exists(directory, error)) {
+    return;
+  }
+  fs::path ancestor = fs::absolute(directory, error).parent_path();
+  while (!fs::exists(ancestor, error) && ancestor.has_parent_path() &&
+         ancestor != ancestor.parent_path()) {
+    ancestor = ancestor.parent_path();
+  }
+  if (!fs::is_directory(ancestor, error)) {
+    throw CaseError(case_source, "--out",
+                    directory.string() + " cannot be created: " + ancestor.string() +
+                        " is not a directory");
+  }
+  if (access(ancestor.c_str(), W_OK | X_OK) != 0) {
+    throw CaseError(case_source, "--out",
+                    directory.string() + " cannot be created: no permission to write in " +
+                        ancestor.string());
+  }
+}
+
 void RunOutput::check_directory(const fs::path& directory, bool force,
                                 const std::string& case_source) {
+  check_creatable(directory, case_source);
   if (fs::exists(directory) && !fs::is_directory(directory)) {
     throw CaseError(case_source, "--out", directory.string() + " exists and is not a directory");
   }

@@ -25,6 +25,11 @@ public:
   // `force`; with `force`, removes the files a previous run left there. Nothing is created.
   static void check_directory(const std::filesystem::path& directory, bool force,
                               const std::string& case_source);
+  // Refuses (CaseError on key "--out") a directory that cannot be created: its nearest existing
+  // ancestor is not a directory, or this process may not write into it. Touches nothing, so the
+  // run calls it before the case's set-up.
+  static void check_creatable(const std::filesystem::path& directory,
+                              const std::string& case_source);
 
   // Creates the directory. `base` carries what every snapshot records about the case and build.
   RunOutput(std::filesystem::path directory, SnapshotMetadata base, std::int64_t snapshot_every);
