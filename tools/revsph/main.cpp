@@ -75,9 +75,12 @@ void add_from_option(CLI::App& command, CaseOptions& options) {
 
 void add_length_options(CLI::App& command, std::optional<std::int64_t>& steps,
                         std::optional<double>& t_end) {
-  auto* steps_option = command.add_option("--steps", steps, "number of time steps to take");
+  auto* steps_option = command.add_option(
+      "--steps", steps, "number of time steps to take (after --from: this many more steps)");
   auto* t_end_option = command.add_option(
-      "--t-end", t_end, "run until this simulated time (s), rounded to whole steps");
+      "--t-end", t_end,
+      "run until this simulated time (s), rounded to whole steps (absolute: after --from, the "
+      "time the run ends at, not a duration)");
   steps_option->excludes(t_end_option);
 }
 
@@ -105,7 +108,10 @@ int main(int argc, char** argv) {
   RunOptions run;
   auto* run_app = app.add_subcommand(
       "run", "run a case (default: dambreak-small) or continue from a snapshot; writes "
-             "OUT/energy.csv, OUT/snapshots/*.h5, OUT/run.xdmf and OUT/summary.json");
+             "OUT/energy.csv, OUT/snapshots/*.h5, OUT/run.xdmf and OUT/summary.json.\n"
+             "Exit status: 0 the run reached its end; 2 bad input (command line, case, snapshot, "
+             "--out); 3 the simulation stopped (a fault: the message names the particle, the "
+             "variable and the step; the last snapshot is kept).");
   const auto run_handles = add_case_options(*run_app, run.case_options, case_help);
   add_from_option(*run_app, run.case_options);
   add_length_options(*run_app, run.steps, run.t_end);
