@@ -1,5 +1,6 @@
 #include "core/particle_blocks.hpp"
 
+#include "core/coincident_particles.hpp"
 #include "core/outline.hpp"
 
 #include "core/memory.hpp"
@@ -627,6 +628,7 @@ read_particle_blocks(const CaseFile& case_file, double default_spacing, const Bo
       case_file.fail(specs[b].key, "the block holds no particles once exclude_blocks are left out");
     }
   }
+  refuse_coincident_particles<D>(case_file, blocks);
   return blocks;
 }
 

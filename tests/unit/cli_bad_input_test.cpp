@@ -55,6 +55,20 @@ std::ostream& operator<<(std::ostream& out, const Defect& defect) {
 const std::vector<Defect>& defects() {
   static const std::vector<Defect> all = {
       {"syntax_error", "\ndr = 0.02", "\ndr = = 0.02", "", {"syntax error at line @LINE@,"}},
+      // Overlapping blocks (issue 33's fault list): fluid on fluid was accepted silently, fluid
+      // over a wall ended in an overflow that did not say why.
+      {"overlapping_fluid_blocks",
+       "\n[run]",
+       "\n[[particles]]\nkind = \"fluid\"\nshape = \"box\"\nlattice = \"square\"\nmin = [0.5, "
+       "0.5]\nmax = [0.7, 0.7]\n\n[run]",
+       "particles[2]",
+       {"lies on particle", "of particles[0]", "the blocks overlap"}},
+      {"fluid_block_over_the_wall",
+       "\n[run]",
+       "\n[[particles]]\nkind = \"fluid\"\nshape = \"box\"\nlattice = \"square\"\nmin = [1.5, "
+       "-0.1]\nmax = [1.7, 0.3]\n\n[run]",
+       "particles[2]",
+       {"lies on particle", "of particles[1]", "the blocks overlap"}},
       {"syntax_error_duplicate_key",
        "\ndr = 0.02",
        "\ndr = 0.02\ndr = 0.03",
