@@ -158,7 +158,12 @@ CaseFile CaseFile::parse(std::string text, std::string source_name) {
 }
 
 void CaseFile::fail(std::string_view key, const std::string& reason) const {
-  throw CaseError(source_name_, std::string(key), reason);
+  // A value from --set has no place in the file (line 0): say so, or the file takes the blame.
+  const toml::node* node = root_->at_path(key).node();
+  const bool from_command_line = node != nullptr && node->source().begin.line == 0 &&
+                                 reason.find("given with --set") == std::string::npos;
+  throw CaseError(source_name_, std::string(key),
+                  from_command_line ? reason + " (given with --set)" : reason);
 }
 
 const KeyDecl* CaseFile::declared(std::string_view key, const KeyType* type) const {
@@ -207,6 +212,15 @@ const toml::node* CaseFile::find(std::string_view key) const {
 const toml::node& CaseFile::require(std::string_view key) const {
   const toml::node* node = find(key);
   if (node == nullptr) {
+    // A misspelt key (dx for dr, [discretization]) leaves the required one missing: name the
+    // misspelling, as the unknown-key check would have had the reader not stopped first.
+    std::vector<UnreadKey> unread;
+    collect_unread(*root_, "", read_keys_, unread);
+    for (const UnreadKey& u : unread) {
+      if (nearest_declared_key(key_tables_, u.key) == key) {
+        fail_unknown(u.key, u.position.line);
+      }
+    }
     fail(key, "missing required key");
   }
   return *node;
@@ -444,10 +458,13 @@ void CaseFile::require_no_unknown_keys() const {
       first = &u;
     }
   }
+  fail_unknown(first->key, first->position.line);
+}
+
+void CaseFile::fail_unknown(const std::string& key, std::size_t line) const {
   // Values added by --set have no position in the file (line 0).
-  const std::string where = first->position.line == 0
-                                ? std::string("given with --set")
-                                : "line " + std::to_string(first->position.line);
+  const std::string where =
+      line == 0 ? std::string("given with --set") : "line " + std::to_string(line);
   // Point to the model's reference: the table other than the common one.
   std::string model = "MODEL";
   for (const KeyTable* table : key_tables_) {
@@ -455,15 +472,15 @@ void CaseFile::require_no_unknown_keys() const {
       model = table->name();
     }
   }
-  const std::string nearest = nearest_declared_key(key_tables_, first->key);
-  if (nearest == first->key) {
+  const std::string nearest = nearest_declared_key(key_tables_, key);
+  if (nearest == key) {
     // A declared key the case's other settings leave unread (say, a seed for particles that are
     // not drawn at random): suggesting the key itself would only puzzle.
-    fail(first->key, "not used with this case's other settings (" + where +
-                         "; what each key needs: revsph cases --keys " + model + ")");
+    fail(key, "not used with this case's other settings (" + where +
+                  "; what each key needs: revsph cases --keys " + model + ")");
   }
-  fail(first->key, "unknown key (" + where + "; every key: revsph cases --keys " + model + ")" +
-                       (nearest.empty() ? std::string() : "; did you mean " + nearest + "?"));
+  fail(key, "unknown key (" + where + "; every key: revsph cases --keys " + model + ")" +
+                (nearest.empty() ? std::string() : "; did you mean " + nearest + "?"));
 }
 
 } // namespace revsph

@@ -112,6 +112,8 @@ public:
 
 private:
   CaseFile(std::string text, std::string source_name);
+  // The unknown-key (or unused-key) message for `key`, at `line` of the file (0: from --set).
+  [[noreturn]] void fail_unknown(const std::string& key, std::size_t line) const;
   const toml::node* find(std::string_view key) const;
   const toml::node& require(std::string_view key) const;
   // The declaration of `key` when tables are attached (nullptr otherwise); a std::logic_error if
