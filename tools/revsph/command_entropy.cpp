@@ -242,14 +242,26 @@ int entropy_command(const EntropyOptions& options) {
   }
 
   std::vector<SnapshotSpeeds> snapshots;
+  std::string particle_set = options.particle_set;
   for (const Phase& phase : phases) {
     const std::vector<fs::path> files = snapshot_files(phase.snapshots);
     if (files.empty()) {
       print_error(phase.snapshots.string() + ": no snapshots (step_*.h5)");
       return bad_input;
     }
+    if (particle_set.empty()) {
+      // The model's moving set, from the first snapshot (state_speeds.hpp).
+      const std::optional<std::string> moving =
+          moving_particle_set(read_checked_snapshot(files.front()).state);
+      if (!moving) {
+        print_error(files.front().string() +
+                    ": no particle set has a mass with velocities or momenta");
+        return bad_input;
+      }
+      particle_set = *moving;
+    }
     for (const fs::path& file : files) {
-      snapshots.push_back(read_speeds(file, phase.name, options.particle_set));
+      snapshots.push_back(read_speeds(file, phase.name, particle_set));
     }
   }
   const bool reversal = phases.size() == 2;
@@ -309,9 +321,9 @@ int entropy_command(const EntropyOptions& options) {
 
   const SnapshotSpeeds& first = snapshots.front();
   std::cout << "revsph entropy: " << run_dir.string() << ": " << snapshots.size() << " snapshots, "
-            << first.speeds.size() << " " << options.particle_set << " particles, "
-            << first.dimension << "D; " << options.bins << " speed bins on [0, "
-            << number(max_speed.value_or(0.0)) << "] m/s"
+            << first.speeds.size() << " " << particle_set << " particles, " << first.dimension
+            << "D; " << options.bins << " speed bins on [0, " << number(max_speed.value_or(0.0))
+            << "] m/s"
             << (options.max_speed ? " (--max-speed)\n" : " (the largest speed of the run)\n");
   print_table(rows);
   if (!max_speed) {

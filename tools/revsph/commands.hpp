@@ -39,8 +39,8 @@ struct EntropyOptions {
   std::string run_dir; // a `run` output directory or a `verify --out` experiment directory
   int bins = analysis::default_speed_bins;
   std::optional<double> max_speed; // default: the largest speed over all snapshots of the run
-  std::string particle_set = "fluid";
-  std::string out_dir; // default RUN_DIR/analysis
+  std::string particle_set;        // empty: moving_particle_set of the first snapshot
+  std::string out_dir;             // default RUN_DIR/analysis
   bool plots = true;
 };
 

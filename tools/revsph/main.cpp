@@ -180,8 +180,10 @@ int main(int argc, char** argv) {
       ->add_option("--max-speed", entropy.max_speed,
                    "upper end of the speed bins in m/s (default: the largest speed in the run)")
       ->check(positive_number());
-  entropy_app->add_option("--particle-set", entropy.particle_set,
-                          "particle set whose velocities are analysed (default fluid)");
+  entropy_app->add_option(
+      "--particle-set", entropy.particle_set,
+      "particle set whose speeds are analysed (default: fluid or material, else "
+      "the first set with velocities or momenta)");
   entropy_app->add_option("--out", entropy.out_dir, "output directory (default RUN_DIR/analysis)");
   entropy_app->add_flag("--no-plots", no_plots,
                         "only the CSV files (no call of tools/plots/entropy.py)");

@@ -19,12 +19,15 @@ struct ParticleSpeeds {
   double mean_mass = 0.0;
 };
 
-// Throws std::invalid_argument if the set has no velocity and mass fields, is empty, or holds a
-// non-finite velocity or a mass that is not positive (the message names the set and particle).
+// The speeds from the set's velocity field, or from its momentum over its mass where it has no
+// velocity (entropic SPH, the two-fluid model). Throws std::invalid_argument if the set has no
+// mass with a velocity or momentum field, is empty, or holds a non-finite velocity or a mass that
+// is not positive (the message names the set and particle).
 ParticleSpeeds particle_speeds(const StateSnapshot& state, const std::string& particle_set);
 
-// The set whose speeds describe the flow: "fluid" (WCSPH) or "material" (SHTC) if the state has
-// it with velocity and mass fields, else the first set that has both; nullopt if none does.
+// The set whose speeds describe the flow: "fluid" (WCSPH, superfluid) or "material" (SHTC) if the
+// state has it with speeds (above), else the first set that has them (entropic SPH's gas, the
+// two-fluid model's superfluid); nullopt if none does.
 std::optional<std::string> moving_particle_set(const StateSnapshot& state);
 
 struct SpeedEntropy {
