@@ -15,6 +15,7 @@ void DiagnosticsLog::record(std::int64_t step, double time,
   }
   if (maxima_.empty()) {
     maxima_ = diagnostics;
+    minima_ = diagnostics;
     // The file is created with the first record, so runs without diagnostics have none.
     if (csv_path_) {
       csv_.emplace(*csv_path_);
@@ -31,6 +32,7 @@ void DiagnosticsLog::record(std::int64_t step, double time,
   }
   for (std::size_t i = 0; i < diagnostics.size() && i < maxima_.size(); ++i) {
     maxima_[i].value = std::max(maxima_[i].value, diagnostics[i].value);
+    minima_[i].value = std::min(minima_[i].value, diagnostics[i].value);
   }
   if (csv_) {
     *csv_ << step << "," << time;

@@ -128,6 +128,7 @@ int run_command(const RunOptions& options) {
     summary.last_snapshot = last->string();
   }
   summary.diagnostics_maxima = diagnostics.maxima();
+  summary.diagnostics_minima = diagnostics.minima();
   write_summary(output.summary_json(), simulation, summary, energy);
 
   const double steps_done = static_cast<double>(simulation.steps_taken() - summary.start_step);

@@ -72,6 +72,9 @@ void write_summary(const std::filesystem::path& path, Simulation& simulation, co
       summary["energy"]["final"][term.name] = term.value;
     }
   }
+  for (const EnergyTerm& minimum : run.diagnostics_minima) {
+    summary["diagnostics"]["min_" + minimum.name] = minimum.value;
+  }
   for (const EnergyTerm& maximum : run.diagnostics_maxima) {
     summary["diagnostics"]["max_" + maximum.name] = maximum.value;
   }

@@ -25,6 +25,7 @@ struct RunSummary {
   std::optional<std::string> failure; // the fault message if the run stopped early
   std::size_t snapshots_written = 0;
   std::vector<EnergyTerm> diagnostics_maxima; // the largest value of each diagnostic
+  std::vector<EnergyTerm> diagnostics_minima; // and the smallest
   std::optional<std::string> last_snapshot;
 };
 
