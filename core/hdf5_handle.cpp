@@ -34,7 +34,14 @@ void write_attribute(hid_t object, const std::string& name, hid_t type, hid_t sp
 
 void silence_library_errors() {
   static std::once_flag once;
-  std::call_once(once, [] { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); });
+  std::call_once(once, [] {
+    // No library clean-up at exit: every file is closed explicitly (Handle), and after a failed
+    // write (a full disk) HDF5 keeps the file it could not flush open; its exit handler then
+    // tried to flush it again and crashed (H5F__close_cb, exit 139 after the clean message).
+    // Must come before any other HDF5 call.
+    H5dont_atexit();
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  });
 }
 
 void Handle::close(const std::string& what) {

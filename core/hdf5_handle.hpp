@@ -16,7 +16,8 @@ public:
   using std::runtime_error::runtime_error;
 };
 
-// Stops the HDF5 library from printing its error stack (once per process).
+// Stops the HDF5 library from printing its error stack and from cleaning up at exit (once per
+// process, before any other HDF5 call).
 void silence_library_errors();
 
 class Handle {

@@ -471,6 +471,29 @@ class FaultTest(unittest.TestCase):
             self.assertEqual(python_state_hash(h5), text_attr(h5.attrs["state_hash"]))
         self.assert_refused(path, "version 99")
 
+    def test_full_disk_stops_the_run_cleanly(self):
+        # A full disk while writing a snapshot (issue 33's fault list): the one-line message and
+        # exit status 3, where HDF5's exit handler used to crash afterwards (exit 139). A file
+        # size limit stands in for the full disk: with SIGXFSZ ignored, writes past it fail
+        # (EFBIG) as they would with ENOSPC.
+        out = os.path.join(WORK, "full_disk")
+        def limit_file_size():
+            import resource
+            import signal
+            signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+            resource.setrlimit(resource.RLIMIT_FSIZE, (100 * 1024, 100 * 1024))
+        result = subprocess.run([REVSPH, "run", "dambreak-small", "--steps", "10", "--out", out],
+                                capture_output=True, text=True, timeout=240, env=environment(),
+                                preexec_fn=limit_file_size)
+        self.assertEqual(result.returncode, STOPPED, result.stderr)
+        errors = [line for line in result.stderr.splitlines() if line.startswith("revsph: error:")]
+        self.assertEqual(len(errors), 1, result.stderr)
+        self.assertIn("writing snapshot", errors[0])
+        with open(os.path.join(out, "summary.json")) as f:
+            summary = json.load(f)
+        self.assertFalse(summary["completed"])
+        self.assertIn("writing snapshot", summary["failure"])
+
     def test_intact_snapshots_are_accepted(self):
         # The reference for the refusals: the same commands accept the unmodified files.
         for path in (self.good, self.other_good):
