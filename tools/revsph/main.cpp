@@ -84,6 +84,22 @@ void add_length_options(CLI::App& command, std::optional<std::int64_t>& steps,
   steps_option->excludes(t_end_option);
 }
 
+// The options of a command that runs a case from a file or a snapshot for a length: run, verify.
+template <class Options>
+CaseOptionHandles add_running_options(CLI::App& command, Options& options,
+                                      const std::string& case_help) {
+  const CaseOptionHandles handles = add_case_options(command, options.case_options, case_help);
+  add_from_option(command, options.case_options);
+  add_length_options(command, options.steps, options.t_end);
+  return handles;
+}
+
+void add_output_options(CLI::App& command, std::string& out_dir, bool& force,
+                        const std::string& out_help) {
+  command.add_option("--out", out_dir, out_help);
+  command.add_flag("--force", force, "overwrite the files of a previous run in --out");
+}
+
 void record_given(const CaseOptionHandles& handles, CaseOptions& options) {
   options.case_given = handles.case_path->count() > 0;
   options.arithmetic_given = handles.arithmetic->count() > 0;
@@ -104,19 +120,19 @@ int main(int argc, char** argv) {
   });
   const std::string case_help =
       "case file (TOML), or the name of a built-in case (list: revsph cases)";
+  // The exit statuses every command that runs a case shares.
+  const std::string stopped_statuses =
+      "2 bad input (command line, case, snapshot, --out); 3 the simulation stopped (a fault: the "
+      "message names the particle, the variable and the step; the last snapshot is kept).";
 
   RunOptions run;
   auto* run_app = app.add_subcommand(
       "run", "run a case (default: dambreak-small) or continue from a snapshot; writes "
              "OUT/energy.csv, OUT/snapshots/*.h5, OUT/run.xdmf and OUT/summary.json.\n"
-             "Exit status: 0 the run reached its end; 2 bad input (command line, case, snapshot, "
-             "--out); 3 the simulation stopped (a fault: the message names the particle, the "
-             "variable and the step; the last snapshot is kept).");
-  const auto run_handles = add_case_options(*run_app, run.case_options, case_help);
-  add_from_option(*run_app, run.case_options);
-  add_length_options(*run_app, run.steps, run.t_end);
-  run_app->add_option("--out", run.out_dir, "output directory (default: out/CASE_NAME)");
-  run_app->add_flag("--force", run.force, "overwrite the files of a previous run in --out");
+             "Exit status: 0 the run reached its end; " +
+                 stopped_statuses);
+  const auto run_handles = add_running_options(*run_app, run, case_help);
+  add_output_options(*run_app, run.out_dir, run.force, "output directory (default: out/CASE_NAME)");
 
   VerifyCommandOptions verify;
   auto* verify_app = app.add_subcommand(
@@ -128,17 +144,14 @@ int main(int argc, char** argv) {
       "energy budget over both halves and the entropy of its speeds.\n"
       "Exit status: 0 a reversible case returned bit for bit, or a case with irreversible terms "
       "kept its energy budget within --energy-tolerance (its not returning is then expected); "
-      "1 a reversible case did not return, or the energy budget did not close; 2 bad input "
-      "(command line, case, snapshot); 3 the simulation stopped (a fault).");
-  const auto verify_handles = add_case_options(*verify_app, verify.case_options, case_help);
-  add_from_option(*verify_app, verify.case_options);
-  add_length_options(*verify_app, verify.steps, verify.t_end);
+      "1 a reversible case did not return, or the energy budget did not close; " +
+          stopped_statuses);
+  const auto verify_handles = add_running_options(*verify_app, verify, case_help);
   verify_app->add_flag("--substeps", verify.check_substeps,
                        "also check each sub-step (kick, drift, …) on its own");
-  verify_app->add_option("--out", verify.out_dir,
-                         "keep the experiment: OUT/forward/ and OUT/backward/ (energy.csv, "
-                         "snapshots, run.xdmf) and OUT/summary.json");
-  verify_app->add_flag("--force", verify.force, "overwrite the files of a previous run in --out");
+  add_output_options(*verify_app, verify.out_dir, verify.force,
+                     "keep the experiment: OUT/forward/ and OUT/backward/ (energy.csv, "
+                     "snapshots, run.xdmf) and OUT/summary.json");
   verify_app
       ->add_option("--energy-tolerance", verify.energy_tolerance,
                    "a case with irreversible terms (dissipation, an inexact update) passes if "
