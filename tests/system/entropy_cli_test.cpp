@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace {
@@ -33,6 +34,22 @@ TEST_P(EntropyCli, DefaultSetWorksForEveryModel) {
   EXPECT_NE(result.out.find(" " + GetParam().expected_set + " particles"), std::string::npos)
       << result;
   EXPECT_TRUE(fs::is_regular_file(run / "analysis" / "entropy.csv"));
+}
+
+// An --out that cannot be created is bad input (exit 2, one line), not a filesystem error (exit 3).
+TEST(EntropyCliOut, OutputDirectoryThatCannotBeCreatedIsBadInput) {
+  Sandbox sandbox;
+  const fs::path run = sandbox.work() / "run";
+  const CommandResult made =
+      sandbox.revsph({"run", "dambreak-small", "--steps", "2", "--out", run.string()});
+  ASSERT_EQ(made.exit_status, 0) << made;
+  const fs::path blocker = sandbox.work() / "blocker";
+  std::ofstream(blocker) << "a file\n";
+  const CommandResult result = sandbox.revsph(
+      {"entropy", run.string(), "--no-plots", "--out", (blocker / "analysis").string()});
+  EXPECT_EQ(result.exit_status, 2) << result;
+  EXPECT_NE(result.err.find("--out: "), std::string::npos) << result;
+  EXPECT_NE(result.err.find(" is not a directory"), std::string::npos) << result;
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, EntropyCli,

@@ -4,6 +4,7 @@
 #include "core/atomic_file.hpp"
 #include "tools/analysis/boltzmann_entropy.hpp"
 #include "tools/revsph/commands.hpp"
+#include "tools/revsph/run_output.hpp"
 #include "tools/revsph/state_speeds.hpp"
 #include "verify/snapshot_check.hpp"
 
@@ -220,6 +221,10 @@ void make_plots(const fs::path& out) {
 
 int entropy_command(const EntropyOptions& options) {
   const fs::path run_dir(options.run_dir);
+  if (!options.out_dir.empty()) {
+    // Bad input, said before the snapshots are read.
+    RunOutput::check_creatable(options.out_dir, run_dir.string());
+  }
   std::vector<Phase> phases;
   if (fs::is_directory(run_dir / "forward" / "snapshots") &&
       fs::is_directory(run_dir / "backward" / "snapshots")) {
