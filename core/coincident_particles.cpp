@@ -41,6 +41,10 @@ void refuse_coincident_particles(const CaseFile& case_file,
   // its neighbours hold few. (block, particle) by cell.
   const double cell_size = 0.5 * spacing;
   using Cell = std::array<std::int64_t, D>;
+  int neighbourhood = 1; // 3^D cells around a cell, itself included
+  for (int k = 0; k < D; ++k) {
+    neighbourhood *= 3;
+  }
   std::unordered_map<Cell, std::vector<std::pair<std::uint32_t, std::uint32_t>>, CellHash<D>> cells;
   for (std::size_t b = 0; b < blocks.size(); ++b) {
     const std::vector<Vec<D>>& positions = blocks[b].positions;
@@ -50,8 +54,7 @@ void refuse_coincident_particles(const CaseFile& case_file,
       for (int k = 0; k < D; ++k) {
         cell[k] = static_cast<std::int64_t>(std::floor(x[k] / cell_size));
       }
-      // The 3^D cells around, this one included.
-      for (int n = 0; n < static_cast<int>(std::pow(3, D)); ++n) {
+      for (int n = 0; n < neighbourhood; ++n) {
         Cell near = cell;
         for (int k = 0, rest = n; k < D; ++k, rest /= 3) {
           near[k] += rest % 3 - 1;

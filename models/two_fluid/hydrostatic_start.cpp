@@ -7,6 +7,7 @@
 #include "models/two_fluid/pair_terms.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -41,7 +42,30 @@ void hydrostatic_masses(const Parameters<D>& p, std::array<std::span<const Vec<D
     }
     return pressure;
   };
-  const auto nearest_fluid_column = [&](const Vec<D>& x) {
+  // A wall particle's column: its x in whole spacings, clamped to the fluid's columns (a side
+  // wall takes the outermost one); the nearest fluid column by search only where that column is
+  // empty (a fluid region that is not a box).
+  std::array<long long, D> lowest{}, highest{};
+  lowest.fill(std::numeric_limits<long long>::max());
+  highest.fill(std::numeric_limits<long long>::min());
+  for (std::size_t f = 0; f < 2; ++f) {
+    for (const Vec<D>& x : position[f]) {
+      for (int k = 0; k < D - 1; ++k) {
+        const long long index = std::llround((x[k] - origin[k]) / p.dr);
+        lowest[k] = std::min(lowest[k], index);
+        highest[k] = std::max(highest[k], index);
+      }
+    }
+  }
+  const auto wall_column = [&](const Vec<D>& x) {
+    long long key = 0;
+    for (int k = 0; k < D - 1; ++k) {
+      key = key * 1000003 +
+            std::clamp(std::llround((x[k] - origin[k]) / p.dr), lowest[k], highest[k]);
+    }
+    if (columns.contains(key)) {
+      return key;
+    }
     long long nearest = columns.begin()->first;
     double distance = std::numeric_limits<double>::infinity();
     for (std::size_t f = 0; f < 2; ++f) {
@@ -85,7 +109,7 @@ void hydrostatic_masses(const Parameters<D>& p, std::array<std::span<const Vec<D
     const double b = rest * p.sound_speed * p.sound_speed / p.tait_exponent;
     for (std::size_t i = 0; i < position[f].size(); ++i, ++c) {
       const Vec<D>& x = position[f][i];
-      const long long column = f < 2 ? column_of(x) : nearest_fluid_column(x);
+      const long long column = f < 2 ? column_of(x) : wall_column(x);
       // A wall particle pushes on the fluid with p V^2 = p / n^2 (the variational pair force):
       // where its kernel is cut (the outer layers) its pressure is lowered by (n / n_0)^2 so
       // that it pushes as a full interior particle at the column's pressure would.

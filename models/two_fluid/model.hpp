@@ -67,6 +67,11 @@ private:
                                       bool contacts);
   void spin_force_views(const ViewSink& sink);
   void viscosity_views(const ViewSink& sink);
+  // A D-component view `name` of each moving set, component k of its particle i being
+  // value(kind, k, i, slot, mass) (model_outputs.cpp).
+  template <class Value>
+  void moving_vector_views(const ViewSink& sink, const char* name, const char* unit,
+                           const Value& value);
   // The thermomechanical or the spin force is on: the kick counts their work.
   bool counts_force_work() const {
     return parameters_.thermomechanical.entropy_scale > 0.0 || spin_on();

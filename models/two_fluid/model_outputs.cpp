@@ -39,6 +39,24 @@ EnergyBudget Model<D, Arith>::energy() {
 }
 
 template <int D, class Arith>
+template <class Value>
+void Model<D, Arith>::moving_vector_views(const ViewSink& sink, const char* name, const char* unit,
+                                          const Value& value) {
+  for_each_moving([&](const auto& kind, std::size_t set) {
+    const std::span<const std::uint32_t> slots = layout_.slots_of_set(set);
+    const std::span<const double> mass = layout_.part_of_set(std::span<const double>(mass_), set);
+    const std::size_t n = slots.size();
+    std::vector<double> values(D * n);
+    for (int k = 0; k < D; ++k) {
+      for (std::size_t i = 0; i < n; ++i) {
+        values[k * n + i] = value(kind, k, i, slots[i], mass[i]);
+      }
+    }
+    sink(ParticleView{std::string(layout_.sets()[set].name), name, unit, D, std::move(values)});
+  });
+}
+
+template <int D, class Arith>
 void Model<D, Arith>::derived_views(const ViewSink& sink) {
   update_density();
   const ImpulseInputs& in = inputs_;
@@ -53,20 +71,12 @@ void Model<D, Arith>::derived_views(const ViewSink& sink) {
     sink(ParticleView{name, "density", "kg/m^3", 1, std::move(density)});
     sink(ParticleView{name, "pressure", "Pa", 1, std::move(pressure)});
   };
-  for_each_moving([&](const auto& kind, std::size_t set) {
-    density_and_pressure(set);
-    const std::span<const double> mass = layout_.part_of_set(std::span<const double>(mass_), set);
-    const std::size_t n = mass.size();
-    std::vector<double> velocity(D * n);
-    for (int k = 0; k < D; ++k) {
-      for (std::size_t i = 0; i < n; ++i) {
-        velocity[k * n + i] =
-            Arith::real(kind.momentum.at(k, i), kind.momentum.info().scale) / mass[i];
-      }
-    }
-    sink(ParticleView{std::string(layout_.sets()[set].name), "velocity", "m/s", D,
-                      std::move(velocity)});
-  });
+  for_each_moving([&](const auto&, std::size_t set) { density_and_pressure(set); });
+  moving_vector_views(sink, "velocity", "m/s",
+                      [](const auto& kind, int k, std::size_t i, std::uint32_t, double mass) {
+                        return Arith::real(kind.momentum.at(k, i), kind.momentum.info().scale) /
+                               mass;
+                      });
   density_and_pressure(layout_.index_of(state_.wall));
   if (spin_on()) {
     spin_force_views(sink);
@@ -85,18 +95,10 @@ void Model<D, Arith>::viscosity_views(const ViewSink& sink) {
   PairSums<FloatArithmetic, D + 1> sums(
       components_of<D + 1>("viscous_acceleration", fixedpoint::Scale()));
   sum_pairs<FloatArithmetic>(layout_, dissipation_term(1.0, 0.0, 0.0, /*contacts=*/false), sums);
-  for_each_moving([&](const auto&, std::size_t set) {
-    const std::span<const std::uint32_t> slots = layout_.slots_of_set(set);
-    const std::span<const double> mass = layout_.part_of_set(std::span<const double>(mass_), set);
-    std::vector<double> acceleration(D * slots.size());
-    for (int k = 0; k < D; ++k) {
-      for (std::size_t i = 0; i < slots.size(); ++i) {
-        acceleration[k * slots.size() + i] = sums.value(k, slots[i]) / mass[i];
-      }
-    }
-    sink(ParticleView{std::string(layout_.sets()[set].name), "viscous_acceleration", "m/s^2", D,
-                      std::move(acceleration)});
-  });
+  moving_vector_views(sink, "viscous_acceleration", "m/s^2",
+                      [&](const auto&, int k, std::size_t, std::uint32_t slot, double mass) {
+                        return sums.value(k, slot) / mass;
+                      });
 }
 
 template <int D, class Arith>
@@ -112,17 +114,10 @@ void Model<D, Arith>::spin_force_views(const ViewSink& sink) {
                                                   /*thermomechanical_on=*/false,
                                                   /*spin_on=*/true},
                              sums);
-  for_each_moving([&](const auto&, std::size_t set) {
-    const std::span<const std::uint32_t> slots = layout_.slots_of_set(set);
-    std::vector<double> force(D * slots.size());
-    for (int k = 0; k < D; ++k) {
-      for (std::size_t i = 0; i < slots.size(); ++i) {
-        force[k * slots.size() + i] = sums.value(D + k, slots[i]);
-      }
-    }
-    sink(ParticleView{std::string(layout_.sets()[set].name), "spin_force", D == 2 ? "N/m" : "N", D,
-                      std::move(force)});
-  });
+  moving_vector_views(sink, "spin_force", D == 2 ? "N/m" : "N",
+                      [&](const auto&, int k, std::size_t, std::uint32_t slot, double) {
+                        return sums.value(D + k, slot);
+                      });
 }
 
 template class Model<2, FixedArithmetic>;

@@ -111,7 +111,7 @@ struct Parameters : ParticleDiscretisation { // dr, support_radius, dt, cell_siz
   Interface interface;
   RigidWalls rigid_walls;         // filled by the setup from the wall blocks
   double random_velocity = 0.0;   // each velocity component uniform in [-value, value] at start
-  bool hydrostatic_start = false; // masses of the hydrostatic column (setup.cpp)
+  bool hydrostatic_start = false; // masses of the hydrostatic column (hydrostatic_start.hpp)
   std::uint64_t seed = 1;
   // [discretisation]
   Box<D> domain;

@@ -74,4 +74,15 @@ double named_value(const std::vector<EnergyTerm>& terms, const std::string& name
   return std::numeric_limits<double>::quiet_NaN();
 }
 
+std::map<std::string, std::vector<double>> views_named(Simulation& simulation,
+                                                       const std::string& name) {
+  std::map<std::string, std::vector<double>> views;
+  simulation.derived_views([&](ParticleView&& view) {
+    if (view.name == name) {
+      views[view.particle_set] = std::move(view.values);
+    }
+  });
+  return views;
+}
+
 } // namespace revsph::testing

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -44,5 +45,9 @@ fixedpoint::int128 raw_total(const StateSnapshot& state, const std::string& set,
 // The value of the energy term or diagnostic called `name`; NaN (which fails every comparison)
 // if there is none.
 double named_value(const std::vector<EnergyTerm>& terms, const std::string& name);
+
+// The values of the output view `name` (ParticleView), by particle set: empty where no set has it.
+std::map<std::string, std::vector<double>> views_named(Simulation& simulation,
+                                                       const std::string& name);
 
 } // namespace revsph::testing

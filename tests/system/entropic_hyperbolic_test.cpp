@@ -21,13 +21,8 @@ using revsph::testing::make_simulation;
 using revsph::testing::raw_total;
 
 std::vector<double> gas_view(revsph::Simulation& simulation, const std::string& name) {
-  std::vector<double> values;
-  simulation.derived_views([&](revsph::ParticleView&& view) {
-    if (view.particle_set == "gas" && view.name == name) {
-      values = std::move(view.values);
-    }
-  });
-  return values;
+  auto views = revsph::testing::views_named(simulation, name);
+  return views.count("gas") ? std::move(views.at("gas")) : std::vector<double>{};
 }
 
 // tau infinite: 2000 steps each way on 1 and 2 threads, and every sub-step alone.

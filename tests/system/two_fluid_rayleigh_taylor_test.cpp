@@ -14,17 +14,7 @@ namespace {
 
 using revsph::testing::make_simulation;
 using revsph::testing::Override;
-
-std::map<std::string, std::vector<double>> views_named(revsph::Simulation& simulation,
-                                                       const std::string& name) {
-  std::map<std::string, std::vector<double>> views;
-  simulation.derived_views([&](revsph::ParticleView&& view) {
-    if (view.name == name) {
-      views[view.particle_set] = std::move(view.values);
-    }
-  });
-  return views;
-}
+using revsph::testing::views_named;
 
 // The root mean square of the fluid's vertical velocity over the elapsed time: the mean
 // acceleration of the first steps.

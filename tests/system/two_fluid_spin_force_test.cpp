@@ -14,13 +14,7 @@
 namespace {
 
 std::map<std::string, std::vector<double>> spin_force_views(revsph::Simulation& simulation) {
-  std::map<std::string, std::vector<double>> views;
-  simulation.derived_views([&](revsph::ParticleView&& view) {
-    if (view.name == "spin_force") {
-      views[view.particle_set] = std::move(view.values);
-    }
-  });
-  return views;
+  return revsph::testing::views_named(simulation, "spin_force");
 }
 
 // Eq. (40): F = 2 eta_r curl omega, so at the same positions the view doubles with eta_r and
