@@ -62,6 +62,26 @@ ExactDoubleSum::Wide ExactDoubleSum::units() const {
   return copy.folded_;
 }
 
+ExactDoubleSum::Image ExactDoubleSum::image() const {
+  const Wide total = units();
+  Image image{};
+  // Least significant byte first; the magnitude has at most 2 240 bits, so it fills at most the
+  // 280 bytes before the sign.
+  boost::multiprecision::export_bits(boost::multiprecision::abs(total), image.begin(), 8,
+                                     /*msv_first=*/false);
+  image[image_size - 2] = total < 0 ? 1 : 0;
+  image[image_size - 1] = finite_ ? 1 : 0;
+  return image;
+}
+
+ExactDoubleSum ExactDoubleSum::from_image(const Image& image) {
+  Wide magnitude = 0;
+  boost::multiprecision::import_bits(magnitude, image.begin(), image.end() - 2, 8,
+                                     /*msv_first=*/false);
+  return from_units(image[image_size - 2] != 0 ? Wide(-magnitude) : magnitude,
+                    image[image_size - 1] != 0);
+}
+
 void ExactDoubleSum::add(const ExactDoubleSum& other) {
   folded_ += other.units();
   finite_ = finite_ && other.finite_;

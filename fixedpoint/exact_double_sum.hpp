@@ -15,6 +15,7 @@
 #include <boost/multiprecision/cpp_int.hpp>
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 
 namespace revsph::fixedpoint {
@@ -45,6 +46,13 @@ public:
     sum.finite_ = finite;
     return sum;
   }
+
+  // A fixed-size image of the sum, to send it to another process: the magnitude of units() in
+  // 280 little-endian bytes, then its sign and whether every term was finite.
+  static constexpr std::size_t image_size = 2240 / 8 + 2;
+  using Image = std::array<std::uint8_t, image_size>;
+  Image image() const;
+  static ExactDoubleSum from_image(const Image& image);
 
 private:
   static constexpr int chunk_bits = 32;

@@ -1,12 +1,14 @@
 #pragma once
 // The processes of a run and the reductions across them that cannot depend on how the particles
 // are split among them (docs/design/distributed.md, piece 2): sums of integers (exact in any
-// order), maxima and minima. There is no sum of doubles: a floating-point total would depend on
-// the order in which the processes' parts are added.
+// order), exact sums of doubles (fixedpoint/exact_double_sum.hpp), maxima and minima. There is no
+// floating-point sum: its total would depend on the order in which the processes' parts are
+// added.
 //
 // Built with -DREVSPH_MPI=ON these are MPI_COMM_WORLD's processes (processes_mpi.cpp); without
 // it, one process (processes_serial.cpp), and every reduction returns its argument.
 
+#include "fixedpoint/exact_double_sum.hpp"
 #include "fixedpoint/exact_sum.hpp"
 
 #include <cstdint>
@@ -31,6 +33,7 @@ int process_count();
 // Over every process.
 fixedpoint::int128 sum_over_processes(fixedpoint::int128 local);
 std::int64_t sum_over_processes(std::int64_t local);
+fixedpoint::ExactDoubleSum sum_over_processes(const fixedpoint::ExactDoubleSum& local);
 double max_over_processes(double local);
 double min_over_processes(double local);
 

@@ -19,6 +19,9 @@ fixedpoint::int128 sum_over_processes(fixedpoint::int128 local) {
 std::int64_t sum_over_processes(std::int64_t local) {
   return local;
 }
+fixedpoint::ExactDoubleSum sum_over_processes(const fixedpoint::ExactDoubleSum& local) {
+  return local;
+}
 double max_over_processes(double local) {
   return local;
 }

@@ -411,43 +411,43 @@ EnergyBudget Model<D>::energy() {
   const Field& momentum = state_.gas.momentum;
   const Field& position = state_.gas.position;
   const std::span<const double> gas_mass = of_gas(mass_);
-  // Serial sums in particle order: the same value for any thread count.
-  double kinetic = 0.0;
-  double internal = 0.0;
-  double gravitational = 0.0;
+  // Exact sums (core/global_totals.hpp): the same value for any thread or process count.
+  ExactDoubleSum kinetic;
+  ExactDoubleSum internal;
+  ExactDoubleSum gravitational;
   for (std::size_t i = 0; i < gas_count(); ++i) {
     double m_squared = 0.0;
     for (int k = 0; k < D; ++k) {
       const double p = fixedpoint::to_real(momentum.at(k, i), momentum.info().scale);
       m_squared += p * p;
     }
-    kinetic += 0.5 * m_squared / gas_mass[i];
-    internal += gas_mass[i] * values.specific_energy[i]; // V_a eps_a = m_a u_a, eq. (20)
+    kinetic.add(0.5 * m_squared / gas_mass[i]);
+    internal.add(gas_mass[i] * values.specific_energy[i]); // V_a eps_a = m_a u_a, eq. (20)
     const double height = fixedpoint::to_real(position.at(D - 1, i), position.info().scale);
     if (!parameters_.boussinesq) { // the Boussinesq body force has no potential
-      gravitational +=
-          gas_mass[i] * parameters_.gravity * (height - parameters_.gravity_reference_height);
+      gravitational.add(gas_mass[i] * parameters_.gravity *
+                        (height - parameters_.gravity_reference_height));
     }
   }
   // Dummy and thermal particles store internal energy too: their density follows the gas around
   // them.
   for (const std::size_t set : {layout_.index_of(state_.dummy), layout_.index_of(state_.thermal)}) {
     for (const std::uint32_t s : layout_.slots_of_set(set)) {
-      internal += slot_mass_[s] * specific_energy_[s];
+      internal.add(slot_mass_[s] * specific_energy_[s]);
     }
   }
   PairSums<FloatArithmetic, 1> wall_sums(SummedQuantity{"wall_energy", fixedpoint::Scale()});
   sum_cross_pairs<FloatArithmetic>(
       layout_, WallEnergyTerm<D>{slot_mass_, layout_.in(state_.gas), parameters_.wall_potential()},
       wall_sums, walls_.cross_pairs());
-  double wall = 0.0;
+  ExactDoubleSum wall;
   for (const std::uint32_t s : layout_.slots_of(state_.gas)) {
-    wall += wall_sums.value(0, s);
+    wall.add(wall_sums.value(0, s));
   }
-  EnergyBudget budget{{{"kinetic", kinetic},
-                       {"internal", internal},
-                       {"gravitational", gravitational},
-                       {"wall", wall}}};
+  EnergyBudget budget{{{"kinetic", global_total(kinetic)},
+                       {"internal", global_total(internal)},
+                       {"gravitational", global_total(gravitational)},
+                       {"wall", global_total(wall)}}};
   if (state_.thermal.position.count() > 0) {
     // The heat the thermal walls took in: with it the total is kept.
     budget.terms.push_back({"thermal_walls", wall_heat_});
@@ -455,16 +455,16 @@ EnergyBudget Model<D>::energy() {
   if (parameters_.hyperbolic()) {
     // c_w sum_a V_a |w_a|^2 (§5.5, Fig. 13).
     const Field& flux = state_.gas.entropy_flux;
-    double flux_energy = 0.0;
+    ExactDoubleSum flux_energy;
     for (std::size_t i = 0; i < gas_count(); ++i) {
       double w_squared = 0.0;
       for (int k = 0; k < D; ++k) {
         const double w = fixedpoint::to_real(flux.at(k, i), flux.info().scale);
         w_squared += w * w;
       }
-      flux_energy += parameters_.flux_energy_coefficient * values.volume[i] * w_squared;
+      flux_energy.add(parameters_.flux_energy_coefficient * values.volume[i] * w_squared);
     }
-    budget.terms.push_back({"entropy_flux", flux_energy});
+    budget.terms.push_back({"entropy_flux", global_total(flux_energy)});
   }
   return budget;
 }
@@ -502,8 +502,8 @@ std::vector<EnergyTerm> Model<D>::diagnostics() {
     for (const std::int64_t raw : momentum.component(k)) {
       total += raw;
     }
-    terms.push_back(
-        {names[k], static_cast<double>(total) * fixedpoint::to_real(1, momentum.info().scale)});
+    terms.push_back({names[k], static_cast<double>(global_total(total)) *
+                                   fixedpoint::to_real(1, momentum.info().scale)});
   }
   // The total entropy of the gas, summed exactly: the reversible part keeps it bit for bit, the
   // dissipation and the relaxation raise it.
@@ -511,7 +511,7 @@ std::vector<EnergyTerm> Model<D>::diagnostics() {
   for (const std::int64_t raw : state_.gas.entropy.component(0)) {
     entropy += raw;
   }
-  terms.push_back({"entropy", static_cast<double>(entropy) *
+  terms.push_back({"entropy", static_cast<double>(global_total(entropy)) *
                                   fixedpoint::to_real(1, state_.gas.entropy.info().scale)});
   if (state_.thermal.position.count() > 0) {
     // Since the run (or its restart) began: the entropy the walls gained, sum Q / T_w (with the

@@ -436,15 +436,13 @@ Model<D>::particle_energies(const std::array<CarrierValues, 2>& values) {
 template <int D>
 EnergyBudget Model<D>::energy() {
   const auto energies = particle_energies(carrier_values());
-  // Serial sums in particle order (set after set): the same value for any thread count.
+  // Exact sums (core/global_totals.hpp): the same value for any thread or process count.
   auto total = [&energies](std::vector<double> ParticleEnergies::*term) {
-    double sum = 0.0;
+    ExactDoubleSum sum;
     for (const ParticleEnergies& of_set : energies) {
-      for (const double value : of_set.*term) {
-        sum += value;
-      }
+      sum.add(exact_sum_of(of_set.*term));
     }
-    return sum;
+    return global_total(sum);
   };
   EnergyBudget budget{{{"kinetic", total(&ParticleEnergies::kinetic)},
                        {"volumetric", total(&ParticleEnergies::bulk)},
@@ -457,12 +455,12 @@ EnergyBudget Model<D>::energy() {
     // What the walls have put in, counted negative: the total stays constant.
     const std::span<const std::uint32_t> walls = layout_.slots_of(state_.boundary);
     const Field& wall_work = state_.boundary.wall_work;
-    double work = 0.0;
+    ExactDoubleSum work;
     for (std::size_t i = 0; i < walls.size(); ++i) {
-      work +=
-          slot_mass_[walls[i]] * fixedpoint::to_real(wall_work.at(0, i), wall_work.info().scale);
+      work.add(slot_mass_[walls[i]] *
+               fixedpoint::to_real(wall_work.at(0, i), wall_work.info().scale));
     }
-    budget.terms.push_back({"wall_work", -work});
+    budget.terms.push_back({"wall_work", -global_total(work)});
   }
   return budget;
 }
@@ -573,7 +571,7 @@ double Model<D>::wall_power() {
   update_carrier_velocities();
   WallForces forces;
   wall_forces(forces);
-  double total = 0.0; // serial, in canonical order: the same for any thread count
+  ExactDoubleSum total; // exact: the same for any thread or process count
   for (const std::uint32_t s : layout_.slots_of(state_.boundary)) {
     // The material's stress pairs with the velocity the material sees the wall move with, the
     // wall's own with the wall's velocity (model.hpp); without mirroring both are v_w and
@@ -585,9 +583,9 @@ double Model<D>::wall_power() {
         power -= slot_mass_[s] * forces.from_material[k][s] * slot_mirrored_velocity_[k][s];
       }
     }
-    total += power;
+    total.add(power);
   }
-  return total;
+  return global_total(total);
 }
 
 template <int D>
@@ -629,10 +627,10 @@ std::vector<EnergyTerm> Model<D>::diagnostics() {
     }
   }
   // Angular momentum of the material about the origin, eq. (26) (conserved without boundary
-  // particles; the twisting column's changes sign when its rotation reverses). Serial sum in
-  // particle order: the same for any thread count.
+  // particles; the twisting column's changes sign when its rotation reverses). Exact sums: the
+  // same for any thread or process count.
   const Field& mass = state_.material.carried.mass;
-  Vec<3> angular{};
+  std::array<ExactDoubleSum, 3> angular;
   const auto& v_scale = state_.material.velocity.info().scale;
   for (std::size_t a = 0; a < material_count(); ++a) {
     Vec<3> x{};
@@ -642,16 +640,16 @@ std::vector<EnergyTerm> Model<D>::diagnostics() {
       v[k] = fixedpoint::to_real(state_.material.velocity.at(k, a), v_scale);
     }
     const double m = fixedpoint::to_real(mass.at(0, a), mass.info().scale);
-    angular[0] += m * (x[1] * v[2] - x[2] * v[1]);
-    angular[1] += m * (x[2] * v[0] - x[0] * v[2]);
-    angular[2] += m * (x[0] * v[1] - x[1] * v[0]);
+    angular[0].add(m * (x[1] * v[2] - x[2] * v[1]));
+    angular[1].add(m * (x[2] * v[0] - x[0] * v[2]));
+    angular[2].add(m * (x[0] * v[1] - x[1] * v[0]));
   }
   if constexpr (D == 2) {
-    terms.push_back({"angular_momentum", angular[2]});
+    terms.push_back({"angular_momentum", global_total(angular[2])});
   } else {
-    terms.push_back({"angular_momentum_x", angular[0]});
-    terms.push_back({"angular_momentum_y", angular[1]});
-    terms.push_back({"angular_momentum_z", angular[2]});
+    terms.push_back({"angular_momentum_x", global_total(angular[0])});
+    terms.push_back({"angular_momentum_y", global_total(angular[1])});
+    terms.push_back({"angular_momentum_z", global_total(angular[2])});
   }
   if (walls_work()) {
     terms.push_back({"wall_power", wall_power()});

@@ -47,9 +47,8 @@ EnergyBudget Model<D, Arith>::energy() {
       layout_.part_of(std::span<const double>(mass_), state_.fluid);
   const std::span<const double> dummy_mass =
       layout_.part_of(std::span<const double>(mass_), state_.dummy);
-  // Serial sums in particle order: the same value for any thread count.
-  double kinetic = 0.0, counterflow = 0.0, compressional = 0.0, thermal = 0.0;
-  double gravitational = 0.0;
+  // Exact sums (core/global_totals.hpp): the same value for any thread or process count.
+  ExactDoubleSum kinetic, counterflow, compressional, thermal, gravitational;
   const auto& x_scale = state_.fluid.position.info().scale;
   for (std::size_t a = 0; a < fluid.size(); ++a) {
     double v_squared = 0.0, relative_squared = 0.0;
@@ -60,30 +59,30 @@ EnergyBudget Model<D, Arith>::energy() {
       relative_squared += u * u;
     }
     const double s = mean.entropy[a];
-    kinetic += mass[a] * 0.5 * v_squared;
-    counterflow += mass[a] * he.counterflow_energy(s, relative_squared);
-    compressional += mass[a] * he.compressional_energy(density_sums_.value(0, fluid[a]));
-    thermal += mass[a] * he.thermal_energy(s);
-    gravitational += mass[a] * parameters_.gravity *
-                     (Arith::real(state_.fluid.position.at(D - 1, a), x_scale) -
-                      parameters_.gravity_reference_height);
+    kinetic.add(mass[a] * 0.5 * v_squared);
+    counterflow.add(mass[a] * he.counterflow_energy(s, relative_squared));
+    compressional.add(mass[a] * he.compressional_energy(density_sums_.value(0, fluid[a])));
+    thermal.add(mass[a] * he.thermal_energy(s));
+    gravitational.add(mass[a] * parameters_.gravity *
+                      (Arith::real(state_.fluid.position.at(D - 1, a), x_scale) -
+                       parameters_.gravity_reference_height));
   }
   for (std::size_t d = 0; d < dummy.size(); ++d) {
-    compressional +=
-        dummy_mass[d] * he.boundary_compressional_energy(density_sums_.value(0, dummy[d]));
+    compressional.add(dummy_mass[d] *
+                      he.boundary_compressional_energy(density_sums_.value(0, dummy[d])));
   }
   const std::span<const std::uint32_t> wall = layout_.slots_of(state_.wall);
   const std::span<const double> wall_mass =
       layout_.part_of(std::span<const double>(mass_), state_.wall);
   for (std::size_t w = 0; w < wall.size(); ++w) {
-    compressional +=
-        wall_mass[w] * he.boundary_compressional_energy(density_sums_.value(0, wall[w]));
+    compressional.add(wall_mass[w] *
+                      he.boundary_compressional_energy(density_sums_.value(0, wall[w])));
   }
-  return EnergyBudget{{{"kinetic", kinetic},
-                       {"counterflow", counterflow},
-                       {"compressional", compressional},
-                       {"thermal", thermal},
-                       {"gravitational", gravitational},
+  return EnergyBudget{{{"kinetic", global_total(kinetic)},
+                       {"counterflow", global_total(counterflow)},
+                       {"compressional", global_total(compressional)},
+                       {"thermal", global_total(thermal)},
+                       {"gravitational", global_total(gravitational)},
                        {"wall_exchange", -exchanged_energy_},
                        {"heater_input", -heater_energy_}}};
 }
@@ -96,7 +95,8 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics(double time) {
   update_constants();
   const std::span<const double> mass =
       layout_.part_of(std::span<const double>(mass_), state_.fluid);
-  double dv = 0.0, dvs = 0.0, ds = 0.0, entropy_one = 0.0, entropy_two = 0.0;
+  double dv = 0.0, dvs = 0.0, ds = 0.0;
+  ExactDoubleSum entropy_one, entropy_two;
   for (std::size_t a = 0; a < fluid_count(); ++a) {
     for (int k = 0; k < D; ++k) {
       dv = std::max(dv, std::abs(Arith::real(f.velocity.at(k, a), v_scale) -
@@ -107,25 +107,25 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics(double time) {
     const double s1 = Arith::real(f.entropy.at(0, a), s_scale);
     const double s2 = Arith::real(f.entropy_copy.at(0, a), s_scale);
     ds = std::max(ds, std::abs(s1 - s2));
-    entropy_one += mass[a] * s1;
-    entropy_two += mass[a] * s2;
+    entropy_one.add(mass[a] * s1);
+    entropy_two.add(mass[a] * s2);
   }
-  std::vector<EnergyTerm> terms{{"copy_velocity_difference", dv},
-                                {"copy_superflow_difference", dvs},
-                                {"copy_entropy_difference", ds},
-                                {"total_entropy", entropy_one},
-                                {"total_entropy_copy", entropy_two}};
+  std::vector<EnergyTerm> terms{{"copy_velocity_difference", global_max(dv)},
+                                {"copy_superflow_difference", global_max(dvs)},
+                                {"copy_entropy_difference", global_max(ds)},
+                                {"total_entropy", global_total(entropy_one)},
+                                {"total_entropy_copy", global_total(entropy_two)}};
   if (!std::isnan(parameters_.jet_height)) {
     update_density();
     const std::span<const std::uint32_t> fluid = layout_.slots_of(state_.fluid);
     const auto& x_scale = f.position.info().scale;
-    double volume = 0.0;
+    ExactDoubleSum volume;
     for (std::size_t a = 0; a < fluid_count(); ++a) {
       if (Arith::real(f.position.at(D - 1, a), x_scale) > parameters_.jet_height) {
-        volume += mass[a] / density_sums_.value(0, fluid[a]);
+        volume.add(mass[a] / density_sums_.value(0, fluid[a]));
       }
     }
-    terms.push_back({"volume_above_jet_height", volume});
+    terms.push_back({"volume_above_jet_height", global_total(volume)});
   }
   const InitialFields& wave = parameters_.initial;
   if (wave.wave_amplitude != 0.0) {
@@ -148,7 +148,8 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics(double time) {
     const auto& x_scale = f.position.info().scale;
     std::array<double, D> probe_point{};
     probe_point.fill(0.25 * wave.wave_length);
-    double squared = 0.0, nearest = std::numeric_limits<double>::infinity();
+    ExactDoubleSum squared;
+    double nearest = std::numeric_limits<double>::infinity();
     double probe_entropy = 0.0;
     for (std::size_t a = 0; a < fluid_count(); ++a) {
       std::array<double, D> x{};
@@ -158,14 +159,15 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics(double time) {
         distance += (x[k] - probe_point[k]) * (x[k] - probe_point[k]);
       }
       const double error = (mean.entropy[a] - exact(x)) / (wave.wave_amplitude * s0);
-      squared += error * error;
+      squared.add(error * error);
       if (distance < nearest) {
         nearest = distance;
         probe_entropy = mean.entropy[a];
       }
     }
     terms.push_back(
-        {"second_sound_error", std::sqrt(squared / static_cast<double>(fluid_count()))});
+        {"second_sound_error",
+         std::sqrt(global_total(squared) / static_cast<double>(global_count(fluid_count())))});
     terms.push_back({"probe_entropy", probe_entropy});
     terms.push_back({"probe_entropy_exact", exact(probe_point)});
   }

@@ -9,7 +9,8 @@ template <int D, class Arith>
 EnergyBudget Model<D, Arith>::energy() {
   update_density();
   const ImpulseInputs& in = inputs_;
-  double kinetic = 0.0, internal = 0.0, gravitational = 0.0;
+  // Exact sums (core/global_totals.hpp): the same value for any thread or process count.
+  ExactDoubleSum kinetic, internal, gravitational;
   for_each_moving([&](const auto& kind, std::size_t set) {
     const std::span<const double> mass = layout_.part_of_set(std::span<const double>(mass_), set);
     const auto& p_scale = kind.momentum.info().scale;
@@ -20,19 +21,18 @@ EnergyBudget Model<D, Arith>::energy() {
         const double p = Arith::real(kind.momentum.at(k, i), p_scale);
         p_squared += p * p;
       }
-      kinetic += 0.5 * p_squared / mass[i];
+      kinetic.add(0.5 * p_squared / mass[i]);
       const double y = Arith::real(kind.position.at(D - 1, i), x_scale);
-      gravitational += mass[i] * parameters_.gravity * (y - parameters_.gravity_reference_height);
+      gravitational.add(mass[i] * parameters_.gravity * (y - parameters_.gravity_reference_height));
     }
   });
-  // Every particle's m e(rho), walls included, in slot order (a fixed order for a given
-  // layout: the total is reported, not evolved).
+  // Every particle's m e(rho), walls included.
   for (std::size_t s = 0; s < layout_.slot_count(); ++s) {
-    internal += in.mass[s] * internal_energy(in.density[s], slot_rest_density_[s]);
+    internal.add(in.mass[s] * internal_energy(in.density[s], slot_rest_density_[s]));
   }
-  return EnergyBudget{{{"kinetic", kinetic},
-                       {"internal", internal},
-                       {"gravitational", gravitational},
+  return EnergyBudget{{{"kinetic", global_total(kinetic)},
+                       {"internal", global_total(internal)},
+                       {"gravitational", global_total(gravitational)},
                        {"dissipated", dissipated_},
                        {"wall_work", -wall_work_},
                        {"force_work", -force_work_}}};

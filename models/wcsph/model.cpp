@@ -283,19 +283,14 @@ std::vector<double> Model<D, Arith>::particle_energy(EnergyOf what) {
 
 template <int D, class Arith>
 EnergyBudget Model<D, Arith>::energy() {
-  // Serial sums in particle order: the same value for any thread count.
-  auto total = [&](EnergyOf what) {
-    double sum = 0.0;
-    for (const double value : particle_energy(what)) {
-      sum += value;
-    }
-    return sum;
-  };
-  return EnergyBudget{
-      {{"kinetic", total(EnergyOf::kinetic)},
-       {"gravitational", total(EnergyOf::gravitational)},
-       {"compressional", total(EnergyOf::compressional) + total(EnergyOf::dummy_compressional)},
-       {"wall", total(EnergyOf::wall)}}};
+  // Exact sums (core/global_totals.hpp): the same value for any thread or process count.
+  auto total = [&](EnergyOf what) { return exact_sum_of(particle_energy(what)); };
+  ExactDoubleSum compressional = total(EnergyOf::compressional);
+  compressional.add(total(EnergyOf::dummy_compressional));
+  return EnergyBudget{{{"kinetic", global_total(total(EnergyOf::kinetic))},
+                       {"gravitational", global_total(total(EnergyOf::gravitational))},
+                       {"compressional", global_total(compressional)},
+                       {"wall", global_total(total(EnergyOf::wall))}}};
 }
 
 template <int D, class Arith>
@@ -369,20 +364,21 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics() {
     const std::array<std::vector<double>, D> filtered = filtered_velocity();
     const auto mass = mass_of(state_.fluid);
     const auto rho = density_of(state_.fluid);
-    double raw_sum = 0.0;
-    double filtered_sum = 0.0;
+    ExactDoubleSum raw_sum;
+    ExactDoubleSum filtered_sum;
     for (std::size_t a = 0; a < fluid_count(); ++a) {
       const auto [exact_x, exact_y] =
           gresho::velocity(fluid_position(0, a) - parameters_.centre[0],
                            fluid_position(1, a) - parameters_.centre[1]);
       const double volume = mass[a] / rho[a];
-      raw_sum += volume * ((velocity[0][a] - exact_x) * (velocity[0][a] - exact_x) +
-                           (velocity[1][a] - exact_y) * (velocity[1][a] - exact_y));
-      filtered_sum += volume * ((filtered[0][a] - exact_x) * (filtered[0][a] - exact_x) +
-                                (filtered[1][a] - exact_y) * (filtered[1][a] - exact_y));
+      raw_sum.add(volume * ((velocity[0][a] - exact_x) * (velocity[0][a] - exact_x) +
+                            (velocity[1][a] - exact_y) * (velocity[1][a] - exact_y)));
+      filtered_sum.add(volume * ((filtered[0][a] - exact_x) * (filtered[0][a] - exact_x) +
+                                 (filtered[1][a] - exact_y) * (filtered[1][a] - exact_y)));
     }
-    return {{"velocity_error", std::sqrt(raw_sum / gresho::velocity_norm_squared)},
-            {"filtered_velocity_error", std::sqrt(filtered_sum / gresho::velocity_norm_squared)}};
+    return {{"velocity_error", std::sqrt(global_total(raw_sum) / gresho::velocity_norm_squared)},
+            {"filtered_velocity_error",
+             std::sqrt(global_total(filtered_sum) / gresho::velocity_norm_squared)}};
   }
 }
 

@@ -1,6 +1,7 @@
 // The reductions across processes (core/distributed/processes.hpp) give every process the same
 // total as one process adding every term: the exact integer sum of 100 000 fixed-point terms
-// split round-robin among the processes, and the maximum and minimum of the doubles. CTest runs
+// split round-robin among the processes, the exact sum of the doubles themselves (the same bits as
+// one process adding them in index order into one accumulator), and their maximum and minimum. CTest runs
 // this program on 1, 2 and 3 processes (tests/mpi/CMakeLists.txt); built without MPI it is the
 // one-process case.
 
@@ -48,6 +49,21 @@ TEST(Processes, ExactSumIsTheOneProcessSumForAnySplit) {
   EXPECT_TRUE(revsph::distributed::sum_over_processes(mine) == everything);
   EXPECT_EQ(revsph::distributed::sum_over_processes(my_count),
             static_cast<std::int64_t>(values.size()));
+}
+
+TEST(Processes, ExactDoubleSumIsTheOneProcessSumForAnySplit) {
+  const std::vector<double> values = terms();
+  revsph::fixedpoint::ExactDoubleSum everything;
+  revsph::fixedpoint::ExactDoubleSum mine;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    everything.add(values[i]);
+    if (static_cast<int>(i % static_cast<std::size_t>(process_count())) == process_rank()) {
+      mine.add(values[i]);
+    }
+  }
+  const revsph::fixedpoint::ExactDoubleSum total = revsph::distributed::sum_over_processes(mine);
+  EXPECT_TRUE(total.units() == everything.units());
+  EXPECT_EQ(total.value(), everything.value());
 }
 
 TEST(Processes, MaximumAndMinimumAreTheOneProcessOnes) {

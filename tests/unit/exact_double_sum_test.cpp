@@ -55,6 +55,28 @@ TEST(ExactDoubleSum, SameBitsForAnyOrderAndAnySplit) {
   }
 }
 
+// The fixed-size image that carries a sum to another process gives back the same sum: positive,
+// negative, zero, the widest total, and one with a non-finite term.
+TEST(ExactDoubleSum, ImageRoundTrips) {
+  std::vector<ExactDoubleSum> sums(5);
+  for (const double term : wide_terms()) {
+    sums[0].add(term);
+    sums[1].add(-term);
+  }
+  const double largest = std::numeric_limits<double>::max();
+  for (int i = 0; i < 1000; ++i) {
+    sums[3].add(-largest); // 1 000 times the largest double: near the top of the 2 240 bits
+  }
+  sums[4].add(1.0);
+  sums[4].add(std::numeric_limits<double>::infinity());
+  for (const ExactDoubleSum& sum : sums) {
+    const ExactDoubleSum back = ExactDoubleSum::from_image(sum.image());
+    EXPECT_TRUE(back.units() == sum.units());
+    EXPECT_EQ(back.finite(), sum.finite());
+  }
+  EXPECT_EQ(ExactDoubleSum::from_image(sums[1].image()).value(), -sums[0].value());
+}
+
 // Where naive left-to-right summation loses everything, the exact total survives.
 TEST(ExactDoubleSum, CancellationKeepsTheSmallTerm) {
   EXPECT_EQ(exact_sum({1.0, 1e-300, -1.0}), 1e-300);
