@@ -85,14 +85,3 @@ TEST(Processes, MaximumAndMinimumAreTheOneProcessOnes) {
 }
 
 } // namespace
-
-int main(int argc, char** argv) {
-  revsph::distributed::ProcessSession session(argc, argv);
-  ::testing::InitGoogleTest(&argc, argv);
-  // Only rank 0 prints: the others' results are checked by their exit status.
-  if (process_rank() != 0) {
-    delete ::testing::UnitTest::GetInstance()->listeners().Release(
-        ::testing::UnitTest::GetInstance()->listeners().default_result_printer());
-  }
-  return RUN_ALL_TESTS();
-}
