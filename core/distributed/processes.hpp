@@ -11,7 +11,10 @@
 #include "fixedpoint/exact_double_sum.hpp"
 #include "fixedpoint/exact_sum.hpp"
 
+#include <cstddef>
 #include <cstdint>
+#include <span>
+#include <vector>
 
 namespace revsph::distributed {
 
@@ -35,6 +38,12 @@ fixedpoint::int128 sum_over_processes(fixedpoint::int128 local);
 std::int64_t sum_over_processes(std::int64_t local);
 fixedpoint::ExactDoubleSum sum_over_processes(const fixedpoint::ExactDoubleSum& local);
 double max_over_processes(double local);
+// Personalised all-to-all: `send` holds the bytes for process 0, then for process 1, ...,
+// `send_bytes[p]` of them for process p (one entry per process). Returns what every process sent
+// to this one, in rank order, and the byte count from each in `received_bytes`.
+std::vector<std::byte> exchange_bytes(std::span<const std::byte> send,
+                                      std::span<const std::size_t> send_bytes,
+                                      std::vector<std::size_t>& received_bytes);
 double min_over_processes(double local);
 
 } // namespace revsph::distributed

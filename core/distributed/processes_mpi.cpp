@@ -4,6 +4,7 @@
 #include <mpi.h>
 
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -93,6 +94,41 @@ fixedpoint::ExactDoubleSum sum_over_processes(const fixedpoint::ExactDoubleSum& 
     total.add(fixedpoint::ExactDoubleSum::from_image(part));
   }
   return total;
+}
+
+std::vector<std::byte> exchange_bytes(std::span<const std::byte> send,
+                                      std::span<const std::size_t> send_bytes,
+                                      std::vector<std::size_t>& received_bytes) {
+  const auto count = static_cast<std::size_t>(process_count());
+  // MPI's counts are int: a part above 2 GiB is refused rather than cut.
+  std::vector<int> send_counts(count), send_offsets(count), receive_counts(count),
+      receive_offsets(count);
+  std::size_t offset = 0;
+  for (std::size_t p = 0; p < count; ++p) {
+    if (send_bytes[p] > static_cast<std::size_t>(std::numeric_limits<int>::max()) ||
+        offset > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+      throw std::runtime_error("MPI: a message of more than 2 GiB");
+    }
+    send_counts[p] = static_cast<int>(send_bytes[p]);
+    send_offsets[p] = static_cast<int>(offset);
+    offset += send_bytes[p];
+  }
+  check(MPI_Alltoall(send_counts.data(), 1, MPI_INT, receive_counts.data(), 1, MPI_INT,
+                     MPI_COMM_WORLD),
+        "MPI_Alltoall (byte counts)");
+  received_bytes.resize(count);
+  std::size_t total = 0;
+  for (std::size_t p = 0; p < count; ++p) {
+    receive_offsets[p] = static_cast<int>(total);
+    received_bytes[p] = static_cast<std::size_t>(receive_counts[p]);
+    total += received_bytes[p];
+  }
+  std::vector<std::byte> received(total);
+  check(MPI_Alltoallv(send.data(), send_counts.data(), send_offsets.data(), MPI_BYTE,
+                      received.data(), receive_counts.data(), receive_offsets.data(), MPI_BYTE,
+                      MPI_COMM_WORLD),
+        "MPI_Alltoallv");
+  return received;
 }
 
 double max_over_processes(double local) {

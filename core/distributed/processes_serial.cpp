@@ -22,6 +22,12 @@ std::int64_t sum_over_processes(std::int64_t local) {
 fixedpoint::ExactDoubleSum sum_over_processes(const fixedpoint::ExactDoubleSum& local) {
   return local;
 }
+std::vector<std::byte> exchange_bytes(std::span<const std::byte> send,
+                                      std::span<const std::size_t> send_bytes,
+                                      std::vector<std::size_t>& received_bytes) {
+  received_bytes.assign(1, send_bytes.empty() ? 0 : send_bytes[0]);
+  return {send.begin(), send.begin() + static_cast<std::ptrdiff_t>(received_bytes[0])};
+}
 double max_over_processes(double local) {
   return local;
 }

@@ -33,9 +33,12 @@ from revsph_runs import REPO, case_of, snapshots  # noqa: E402
 DAMBREAK_DR = 0.005 * np.sqrt(80000.0 / np.array([1e5, 1e6, 4e6]))
 WORKLOADS = [(f"dambreak, {n:.0e} fluid particles", "dambreak", dr)
              for n, dr in zip([1e5, 1e6, 4e6], DAMBREAK_DR)]
-WORKLOADS += [("twisting column (the case)", "twisting-column", None),
-              ("twisting column at the paper's dr", "twisting-column", 0.0496),
-              ("twisting column at dr / 2 of the paper", "twisting-column", 0.0248)]
+# The twisting column's resolution is its lattice spacing (and dr with it): the case's, the
+# paper's (dr = 0.0496 m) and half of that, written as edited copies of the case file.
+TWISTING = REPO / "models" / "shtc" / "cases" / "twisting-column.toml"
+WORKLOADS += [("twisting column (the case)", TWISTING, 1),
+              ("twisting column at the paper's dr", TWISTING, 2),
+              ("twisting column at half the paper's dr", TWISTING, 4)]
 
 
 def support_radius(case):
@@ -45,12 +48,20 @@ def support_radius(case):
     return 2.0 * d["smoothing_length_over_dr"] * d["dr"]  # shtc: support 2 h
 
 
-def arrangement(revsph, case, dr, directory):
+def arrangement(revsph, case, refinement, directory):
+    """refinement: dr for a built-in case name; the lattice's refinement factor for a file."""
     out = Path(directory) / "run"
-    command = [revsph, "run", case, "--steps", "1", "--out", str(out), "--force",
+    command = [revsph, "run", str(case), "--steps", "1", "--out", str(out), "--force",
                "--set", "output.snapshot_every=1000000"]
-    if dr is not None:
-        command += ["--set", f"discretisation.dr={dr!r}"]
+    if isinstance(case, Path):
+        text = case.read_text()
+        text = text.replace("spacing = 0.125", f"spacing = {0.125 / refinement!r}")
+        text = text.replace("dr = 0.099213", f"dr = {0.099213 / refinement!r}")
+        edited = Path(directory) / case.name
+        edited.write_text(text)
+        command[2] = str(edited)
+    elif refinement is not None:
+        command += ["--set", f"discretisation.dr={refinement!r}"]
     subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
     first = snapshots(out)[0]
     with h5py.File(first) as f:

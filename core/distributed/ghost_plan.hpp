@@ -1,0 +1,63 @@
+#pragma once
+// Which of this process's particles the other processes need as ghosts, and the exchange that
+// brings them there (docs/design/distributed.md, pieces 4 and 5). A particle is needed by every
+// other process whose region comes within the reach (the kernel's support) of it
+// (SpatialPartition::processes_near); the plan lists them once, and each exchange then sends any
+// per-particle values along the same lists: the inputs of a pair pass before it, its summed
+// results (a density, say) after it, for the ghosts' slots.
+//
+// Ghosts arrive in a fixed order: by the sending process's rank, then in the sender's particle
+// order. Results do not depend on it (pair sums are exact), only the layout does.
+
+#include "core/distributed/processes.hpp"
+#include "core/distributed/spatial_partition.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <span>
+#include <type_traits>
+#include <vector>
+
+namespace revsph::distributed {
+
+class GhostPlan {
+public:
+  GhostPlan() = default;
+  // `positions`: this process's particles, point after point (partition.dimension() values
+  // each, metres).
+  GhostPlan(const SpatialPartition& partition, std::span<const double> positions, double reach);
+
+  // Sends `width` values of each listed particle (values[i * width + j]: particle i's j-th) to
+  // every process that needs it; returns the ghosts' values in the same layout (collective).
+  template <class T>
+  std::vector<T> exchange(std::span<const T> values, std::size_t width) const {
+    static_assert(std::is_trivially_copyable_v<T>);
+    std::vector<std::byte> send(sent_particles_.size() * width * sizeof(T));
+    for (std::size_t n = 0; n < sent_particles_.size(); ++n) {
+      std::memcpy(send.data() + n * width * sizeof(T),
+                  values.data() + static_cast<std::size_t>(sent_particles_[n]) * width,
+                  width * sizeof(T));
+    }
+    std::vector<std::size_t> bytes(sent_per_process_.size());
+    for (std::size_t p = 0; p < bytes.size(); ++p) {
+      bytes[p] = sent_per_process_[p] * width * sizeof(T);
+    }
+    std::vector<std::size_t> received_bytes;
+    const std::vector<std::byte> received = exchange_bytes(send, bytes, received_bytes);
+    std::vector<T> ghosts(received.size() / sizeof(T));
+    std::memcpy(ghosts.data(), received.data(), received.size());
+    return ghosts;
+  }
+
+  // How many ghosts this process receives, and how many particle copies it sends.
+  std::size_t ghost_count() const { return ghost_count_; }
+  std::size_t sent_count() const { return sent_particles_.size(); }
+
+private:
+  std::vector<std::uint32_t> sent_particles_; // grouped by destination, in particle order
+  std::vector<std::size_t> sent_per_process_; // one count per process
+  std::size_t ghost_count_ = 0;
+};
+
+} // namespace revsph::distributed
