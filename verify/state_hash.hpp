@@ -5,10 +5,25 @@
 
 #include "core/state_snapshot.hpp"
 
+#include <cstdint>
+#include <span>
 #include <string>
 
 namespace revsph {
 
 std::string state_hash(const StateSnapshot& state);
+
+// One particle set's rows on this process: their global indices (ascending) and the set's
+// particle count over every process.
+struct SetRows {
+  std::string set;
+  std::span<const std::uint64_t> indices;
+  std::uint64_t total = 0;
+};
+
+// The same hash of a state the processes hold in pieces (docs/design/distributed.md, piece 8):
+// `local` has this process's rows of every field, `sets` says which. Every process returns the
+// hash of the whole state, the one a one-process run computes (collective).
+std::string state_hash(const StateSnapshot& local, std::span<const SetRows> sets);
 
 } // namespace revsph
