@@ -97,6 +97,11 @@ INTERPENETRATING["cylinder-interp-grip"] = (0.01, 4.76e-9)
 # The same at 320 particles across (dr halved: four times the particles).
 GRIP["cylinder-interp-grip-320"] = [*GRIP["cylinder-interp-grip"], "discretisation.dr=6.25e-6"]
 INTERPENETRATING["cylinder-interp-grip-320"] = (0.01, 4.76e-9)
+# The kernel's support, which the paper does not give (issue 30): 2 and 4 dr beside the case's 3,
+# the wall as thick as the support.
+GRIP["cylinder-paper-s2"] = ["discretisation.support_radius_over_dr=2.0"]
+GRIP["cylinder-paper-s4"] = ["discretisation.support_radius_over_dr=4.0",
+                             "particles[1].outer_radius=1.05e-3"]
 RUNS.update({name: (0.01, 4.76e-9) for name in GRIP})
 RHO_S = RHO - RHO_N
 ALPHA, KAPPA, L0, BETA_V = 0.0968, 9.9693e-8, 1.0e10, 4.76e-9  # the case's mutual friction
