@@ -1,7 +1,10 @@
 #pragma once
 // One state variable across the carrier sets of a SlotLayout (core/slot_layout.hpp): the
 // position of fluid and dummy particles, say, read as one array indexed by carrier, so that model
-// code never branches on "which set is this index in".
+// code never branches on "which set is this index in". The carriers are the sets' own particles,
+// set after set, then their ghosts (core/state_field.hpp), set after set: in a one-process run
+// there are none, and in a distributed one the pair passes reach the ghosts through the same
+// indices without the model knowing.
 
 #include "core/state_field.hpp"
 
@@ -29,6 +32,11 @@ public:
                                ": the sets disagree on its components");
       }
     }
+    owned_count_ = count_;
+    for (const StateField<Raw>* field : fields_) {
+      firsts_.push_back(count_);
+      count_ += field->ghost_count();
+    }
   }
 
   std::size_t count() const { return count_; }
@@ -36,13 +44,14 @@ public:
   // Component c of one carrier, raw or as a physical value (what SlotLayout::build gathers into
   // slot order without a per-carrier copy).
   Raw raw(int component, std::size_t carrier) const {
-    const std::size_t set = set_of(carrier);
-    return fields_[set]->at(component, carrier - firsts_[set]);
+    const std::size_t part = part_of(carrier);
+    const std::size_t set = part % fields_.size();
+    return part < fields_.size() ? fields_[set]->at(component, carrier - firsts_[part])
+                                 : fields_[set]->ghost_at(component, carrier - firsts_[part]);
   }
   double real(int component, std::size_t carrier) const {
-    const std::size_t set = set_of(carrier);
-    return Arith::real(fields_[set]->at(component, carrier - firsts_[set]),
-                       fields_[set]->info().scale);
+    return Arith::real(raw(component, carrier),
+                       fields_[part_of(carrier) % fields_.size()]->info().scale);
   }
 
   // Component c of every carrier, in carrier order, as physical values.
@@ -54,6 +63,9 @@ public:
         values.push_back(Arith::real(raw, field->info().scale));
       }
     }
+    for (std::size_t c = owned_count_; c < count_; ++c) {
+      values.push_back(real(component, c));
+    }
     return values;
   }
   // The same as raw values.
@@ -64,20 +76,25 @@ public:
       const auto part = field->component(component);
       values.insert(values.end(), part.begin(), part.end());
     }
+    for (std::size_t c = owned_count_; c < count_; ++c) {
+      values.push_back(raw(component, c));
+    }
     return values;
   }
 
 private:
-  std::size_t set_of(std::size_t carrier) const {
-    std::size_t set = fields_.size() - 1;
-    while (carrier < firsts_[set]) {
-      --set;
+  // Parts 0 .. n-1 are the sets' own particles, n .. 2n-1 their ghosts.
+  std::size_t part_of(std::size_t carrier) const {
+    std::size_t part = carrier < owned_count_ ? fields_.size() - 1 : firsts_.size() - 1;
+    while (carrier < firsts_[part]) {
+      --part;
     }
-    return set;
+    return part;
   }
 
   std::vector<const StateField<Raw>*> fields_;
-  std::vector<std::size_t> firsts_;
+  std::vector<std::size_t> firsts_; // the first carrier of each part
+  std::size_t owned_count_ = 0;
   std::size_t count_ = 0;
 };
 

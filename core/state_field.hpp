@@ -41,6 +41,12 @@ struct VariableInfo {
 
 // Values of one variable for all particles of its set, component-major: component c of particle i
 // is values[c * count + i]. Raw is std::int64_t (fixed point) or double (the FloPA variant).
+//
+// In a distributed run (docs/design/distributed.md) the particles are this process's own, and a
+// ghost segment holds copies of other processes' particles near its region, laid out the same
+// way. Only the distributed layer fills it and only CarrierField reads it (the pair passes):
+// count(), all(), component() and at() are the owned particles, so a model's pointwise loops
+// never see a ghost. Without ghosts (every one-process run) the segment is empty.
 template <class Raw>
 class StateField {
 public:
@@ -78,11 +84,24 @@ public:
   std::span<Raw> all() { return values_; }
   std::span<const Raw> all() const { return values_; }
 
+  std::size_t ghost_count() const { return ghost_count_; }
+  // `values`: component-major over `count` ghosts.
+  void set_ghosts(std::size_t count, std::vector<Raw> values) {
+    assert(values.size() == count * static_cast<std::size_t>(info_.components));
+    ghost_count_ = count;
+    ghost_values_ = std::move(values);
+  }
+  const Raw& ghost_at(int c, std::size_t g) const {
+    return ghost_values_[static_cast<std::size_t>(c) * ghost_count_ + g];
+  }
+
 private:
   VariableInfo info_;
   bool has_scale_ = false;
   std::size_t count_ = 0;
   std::vector<Raw> values_;
+  std::size_t ghost_count_ = 0;
+  std::vector<Raw> ghost_values_;
 };
 
 } // namespace revsph

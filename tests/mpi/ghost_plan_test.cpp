@@ -7,6 +7,7 @@
 #include "core/distributed/ghost_plan.hpp"
 #include "core/distributed/processes.hpp"
 #include "core/distributed/spatial_partition.hpp"
+#include "process_share.hpp"
 
 #include <gtest/gtest.h>
 
@@ -32,17 +33,9 @@ TEST(GhostPlan, DeliversEveryNeighbourFromOtherProcessesBitForBit) {
     x = uniform(generator);
   }
   // Start from a round-robin split, balance, then keep the points of this process's region.
-  std::vector<double> held;
-  std::vector<std::uint64_t> held_indices;
-  for (std::size_t i = 0; i < count; ++i) {
-    if (static_cast<int>(i % static_cast<std::size_t>(process_count())) == process_rank()) {
-      held.insert(held.end(), points.begin() + static_cast<std::ptrdiff_t>(i * d),
-                  points.begin() + static_cast<std::ptrdiff_t>((i + 1) * d));
-      held_indices.push_back(i);
-    }
-  }
+  const ProcessShare held = round_robin_share(points, d);
   SpatialPartition partition(dimension, PartitionMethod::coordinate_bisection);
-  partition.balance(held, held_indices);
+  partition.balance(held.coordinates, held.indices);
   std::vector<double> mine;
   std::vector<std::uint64_t> my_indices;
   std::vector<int> owner(count);

@@ -7,6 +7,7 @@
 
 #include "core/distributed/processes.hpp"
 #include "core/distributed/spatial_partition.hpp"
+#include "process_share.hpp"
 
 #include <gtest/gtest.h>
 
@@ -23,8 +24,7 @@ using revsph::distributed::process_count;
 using revsph::distributed::process_rank;
 using revsph::distributed::SpatialPartition;
 
-// Every process makes the same points; process r holds those with index = r modulo the count
-// (so that no process starts with a region of its own).
+// Every process makes the same points (process_share.hpp splits them).
 std::vector<double> all_points(int dimension, std::size_t count) {
   std::mt19937_64 generator(2024);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
@@ -44,15 +44,9 @@ TEST_P(Partition, OwnsEachParticleOnceBalancedAndListsEveryGhost) {
   const std::size_t count = dimension == 2 ? 3000 : 4000;
   const double reach = dimension == 2 ? 0.06 : 0.15;
   const std::vector<double> points = all_points(dimension, count);
-  std::vector<double> mine;
-  std::vector<std::uint64_t> my_indices;
-  for (std::size_t i = 0; i < count; ++i) {
-    if (static_cast<int>(i % static_cast<std::size_t>(process_count())) == process_rank()) {
-      mine.insert(mine.end(), points.begin() + static_cast<std::ptrdiff_t>(i * d),
-                  points.begin() + static_cast<std::ptrdiff_t>((i + 1) * d));
-      my_indices.push_back(i);
-    }
-  }
+  const ProcessShare share = round_robin_share(points, d);
+  const std::vector<double>& mine = share.coordinates;
+  const std::vector<std::uint64_t>& my_indices = share.indices;
   SpatialPartition partition(dimension, method);
   const std::vector<int> owners = partition.balance(mine, my_indices);
   // No ASSERT before the last collective call: a process that returned early would leave the
