@@ -102,6 +102,7 @@ INTERPENETRATING["cylinder-interp-grip-320"] = (0.01, 4.76e-9)
 GRIP["cylinder-paper-s2"] = ["discretisation.support_radius_over_dr=2.0"]
 GRIP["cylinder-paper-s4"] = ["discretisation.support_radius_over_dr=4.0",
                              "particles[1].outer_radius=1.05e-3"]
+GRIP["cylinder-paper-s2-320"] = [*GRIP["cylinder-paper-s2"], "discretisation.dr=6.25e-6", "run.t_end=2.0"]
 RUNS.update({name: (0.01, 4.76e-9) for name in GRIP})
 RHO_S = RHO - RHO_N
 ALPHA, KAPPA, L0, BETA_V = 0.0968, 9.9693e-8, 1.0e10, 4.76e-9  # the case's mutual friction
