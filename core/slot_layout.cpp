@@ -20,19 +20,21 @@ template <int D>
 SlotLayout<D>::SlotLayout(const Box<D>& domain, double cell_size, std::vector<CarrierSet> sets)
     : sets_(std::move(sets)), carrier_count_(total_count(sets_)),
       cells_(domain, cell_size, cell_budget(carrier_count_)) {
-  if (sets_.size() > 64) {
-    throw std::logic_error("a slot layout holds at most 64 particle sets");
+  // Two bits per set in SlotInSet's mask: its own particles and its ghosts.
+  if (sets_.size() > 32) {
+    throw std::logic_error("a slot layout holds at most 32 particle sets");
   }
   first_carrier_.push_back(0);
   for (const CarrierSet& set : sets_) {
     first_carrier_.push_back(first_carrier_.back() + set.count);
   }
+  first_carrier_.insert(first_carrier_.end(), sets_.size(), first_carrier_.back()); // no ghosts
 }
 
 template <int D>
 std::pair<const char*, std::size_t> SlotLayout<D>::particle_of_carrier(std::size_t carrier) const {
-  const std::size_t set = set_of_carrier(carrier);
-  return {sets_[set].name.c_str(), carrier - first_carrier_[set]};
+  const std::size_t part = set_of_carrier(carrier);
+  return {sets_[part % sets_.size()].name.c_str(), carrier - first_carrier_[part]};
 }
 
 template <int D>

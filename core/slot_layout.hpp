@@ -89,9 +89,14 @@ public:
   // The same from the carriers' position field (one per carrier set, core/carrier_field.hpp).
   template <class Arith, class... T, class... Source>
   void build(const CarrierField<Arith>& position, double radius, Gathered<T, Source>... gathered) {
+    resize_sets(position);
     build([&position](int axis, std::size_t carrier) { return position.real(axis, carrier); },
           radius, gathered...);
   }
+  // The sets' own and ghost particle counts from a carrier field over them (they change in a
+  // distributed run when particles migrate and ghosts are refreshed; never in one process).
+  template <class Arith>
+  void resize_sets(const CarrierField<Arith>& field);
 
   std::size_t carrier_count() const { return carrier_count_; }
   std::size_t slot_count() const { return carrier_count_; }
@@ -100,12 +105,14 @@ public:
   std::size_t first_carrier(std::size_t set) const { return first_carrier_[set]; }
   // The set of a carrier (an index into sets()): the last set starting at or before it (sets are
   // few: a linear scan).
+  // For a ghost carrier (a distributed run's copy of another process's particle, after every
+  // set's own ones: core/carrier_field.hpp) the set's index plus the number of sets.
   std::size_t set_of_carrier(std::size_t carrier) const {
-    std::size_t set = 0;
-    while (set + 1 < sets_.size() && carrier >= first_carrier_[set + 1]) {
-      ++set;
+    std::size_t part = 0;
+    while (part + 2 < first_carrier_.size() && carrier >= first_carrier_[part + 1]) {
+      ++part;
     }
-    return set;
+    return part;
   }
   // The part of a per-carrier array that belongs to one set, in the set's order.
   template <class T>
@@ -138,15 +145,19 @@ public:
   std::span<const std::uint8_t> set_of_slot() const { return set_of_slot_; }
   template <ParticleSet... Sets>
   SlotInSet in(const Sets&... sets) const {
-    return {set_of_slot_, ((std::uint64_t{1} << index_of(sets)) | ...)};
+    // A set's ghosts are in it too: a ghost fluid particle is fluid to a pair term.
+    return {set_of_slot_, (((std::uint64_t{1} << index_of(sets)) |
+                            (std::uint64_t{1} << (index_of(sets) + sets_.size()))) |
+                           ...)};
   }
   // The particle in slot s. With it a loop over slots reaches each particle's own set without
   // asking which set an index falls in.
+  // (For a ghost slot: its set and its index among the set's ghosts.)
   SetParticle particle_in_slot(std::size_t slot) const {
     const std::size_t carrier = cells_.sorted_points()[slot];
-    const std::size_t set = set_of_slot_[slot];
-    return {static_cast<std::uint32_t>(set),
-            static_cast<std::uint32_t>(carrier - first_carrier_[set])};
+    const std::size_t part = set_of_slot_[slot];
+    return {static_cast<std::uint32_t>(part % sets_.size()),
+            static_cast<std::uint32_t>(carrier - first_carrier_[part])};
   }
   // A per-slot array read in one set's particle order: values[i] is the value of the set's
   // particle i (a density or a mass for an output, without a copy in canonical order).
@@ -190,7 +201,8 @@ public:
 
 private:
   std::vector<CarrierSet> sets_;
-  std::vector<std::size_t> first_carrier_; // one per set, then the total
+  // One per set, then one per set's ghosts, then the total.
+  std::vector<std::size_t> first_carrier_;
   std::size_t carrier_count_ = 0;
   CellList<D> cells_;
   CoordinateArrays<D> slot_position_;
@@ -227,6 +239,31 @@ void SlotLayout<D>::build(const Coordinate& coordinate, double radius,
     (((*gathered.by_slot)[s] = gathered(carrier[s])), ...);
   }
   pairs_.build<D>(cells_, position(), radius);
+}
+
+template <int D>
+template <class Arith>
+void SlotLayout<D>::resize_sets(const CarrierField<Arith>& field) {
+  if (field.set_count() != sets_.size()) {
+    throw std::logic_error("carrier field over another number of sets than the layout");
+  }
+  bool same = true;
+  for (std::size_t k = 0; k < sets_.size(); ++k) {
+    same = same && first_carrier_[k + 1] - first_carrier_[k] == field.owned_count(k) &&
+           first_carrier_[sets_.size() + k + 1] - first_carrier_[sets_.size() + k] ==
+               field.ghost_count(k);
+  }
+  if (same) {
+    return;
+  }
+  for (std::size_t k = 0; k < sets_.size(); ++k) {
+    sets_[k].count = field.owned_count(k);
+    first_carrier_[k + 1] = first_carrier_[k] + field.owned_count(k);
+  }
+  for (std::size_t k = 0; k < sets_.size(); ++k) {
+    first_carrier_[sets_.size() + k + 1] = first_carrier_[sets_.size() + k] + field.ghost_count(k);
+  }
+  carrier_count_ = first_carrier_.back();
 }
 
 template <int D>
