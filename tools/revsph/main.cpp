@@ -1,6 +1,7 @@
 // revsph: the command line of the bitwise-reversible SPH engine.
 
 #include "core/build_info.hpp"
+#include "core/distributed/processes.hpp"
 #include "core/snapshot_file.hpp"
 #include "fixedpoint/conversion.hpp"
 #include "tools/revsph/commands.hpp"
@@ -108,6 +109,18 @@ void record_given(const CaseOptionHandles& handles, CaseOptions& options) {
 } // namespace
 
 int main(int argc, char** argv) {
+  // The processes of an MPI launch (one without MPI). Until the distributed run is built
+  // (docs/design/distributed.md), more than one process would run the same case side by side
+  // into the same files: refused.
+  revsph::distributed::ProcessSession session(argc, argv);
+  if (revsph::distributed::process_count() > 1) {
+    if (revsph::distributed::process_rank() == 0) {
+      std::cerr << "revsph: error: started on " << revsph::distributed::process_count()
+                << " processes; distributed runs are not built yet (docs/design/distributed.md): "
+                   "start one process\n";
+    }
+    return bad_input;
+  }
   CLI::App app{"revsph: smoothed particle hydrodynamics whose simulations are bitwise reversible.\n"
                "Run forward, reverse the velocities, run forward again: every bit of the initial\n"
                "state comes back."};
