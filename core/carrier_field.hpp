@@ -47,14 +47,11 @@ public:
   // Component c of one carrier, raw or as a physical value (what SlotLayout::build gathers into
   // slot order without a per-carrier copy).
   Raw raw(int component, std::size_t carrier) const {
-    const std::size_t part = part_of(carrier);
-    const std::size_t set = part % fields_.size();
-    return part < fields_.size() ? fields_[set]->at(component, carrier - firsts_[part])
-                                 : fields_[set]->ghost_at(component, carrier - firsts_[part]);
+    return raw_in(part_of(carrier), component, carrier);
   }
   double real(int component, std::size_t carrier) const {
-    return Arith::real(raw(component, carrier),
-                       fields_[part_of(carrier) % fields_.size()]->info().scale);
+    const std::size_t part = part_of(carrier);
+    return Arith::real(raw_in(part, component, carrier), field_of(part).info().scale);
   }
 
   // Component c of every carrier, in carrier order, as physical values.
@@ -66,8 +63,10 @@ public:
         values.push_back(Arith::real(raw, field->info().scale));
       }
     }
-    for (std::size_t c = owned_count_; c < count_; ++c) {
-      values.push_back(real(component, c));
+    for (const StateField<Raw>* field : fields_) {
+      for (std::size_t g = 0; g < field->ghost_count(); ++g) {
+        values.push_back(Arith::real(field->ghost_at(component, g), field->info().scale));
+      }
     }
     return values;
   }
@@ -79,8 +78,10 @@ public:
       const auto part = field->component(component);
       values.insert(values.end(), part.begin(), part.end());
     }
-    for (std::size_t c = owned_count_; c < count_; ++c) {
-      values.push_back(raw(component, c));
+    for (const StateField<Raw>* field : fields_) {
+      for (std::size_t g = 0; g < field->ghost_count(); ++g) {
+        values.push_back(field->ghost_at(component, g));
+      }
     }
     return values;
   }
@@ -93,6 +94,14 @@ private:
       --part;
     }
     return part;
+  }
+  const StateField<Raw>& field_of(std::size_t part) const {
+    return *fields_[part < fields_.size() ? part : part - fields_.size()];
+  }
+  Raw raw_in(std::size_t part, int component, std::size_t carrier) const {
+    const std::size_t index = carrier - firsts_[part];
+    return part < fields_.size() ? field_of(part).at(component, index)
+                                 : field_of(part).ghost_at(component, index);
   }
 
   std::vector<const StateField<Raw>*> fields_;

@@ -33,12 +33,9 @@ inline std::size_t global_count(std::size_t own) {
   return static_cast<std::size_t>(distributed::sum_over_processes(static_cast<std::int64_t>(own)));
 }
 
-// The run's largest and smallest value (exact in any order).
+// The run's largest value (exact in any order).
 inline double global_max(double own) {
   return distributed::max_over_processes(own);
-}
-inline double global_min(double own) {
-  return distributed::min_over_processes(own);
 }
 
 // The exact sum of per-particle values.

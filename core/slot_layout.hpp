@@ -104,9 +104,9 @@ public:
   // The first carrier of set k: set k's particle i is carrier first_carrier(k) + i.
   std::size_t first_carrier(std::size_t set) const { return first_carrier_[set]; }
   // The set of a carrier (an index into sets()): the last set starting at or before it (sets are
-  // few: a linear scan).
-  // For a ghost carrier (a distributed run's copy of another process's particle, after every
-  // set's own ones: core/carrier_field.hpp) the set's index plus the number of sets.
+  // few: a linear scan). For a ghost carrier (a distributed run's copy of another process's
+  // particle, after every set's own ones: core/carrier_field.hpp) the set's index plus the
+  // number of sets.
   std::size_t set_of_carrier(std::size_t carrier) const {
     std::size_t part = 0;
     while (part + 2 < first_carrier_.size() && carrier >= first_carrier_[part + 1]) {
@@ -146,13 +146,14 @@ public:
   template <ParticleSet... Sets>
   SlotInSet in(const Sets&... sets) const {
     // A set's ghosts are in it too: a ghost fluid particle is fluid to a pair term.
-    return {set_of_slot_, (((std::uint64_t{1} << index_of(sets)) |
-                            (std::uint64_t{1} << (index_of(sets) + sets_.size()))) |
-                           ...)};
+    const auto own_and_ghosts = [this](std::size_t set) {
+      return (std::uint64_t{1} << set) | (std::uint64_t{1} << (set + sets_.size()));
+    };
+    return {set_of_slot_, (own_and_ghosts(index_of(sets)) | ...)};
   }
   // The particle in slot s. With it a loop over slots reaches each particle's own set without
-  // asking which set an index falls in.
-  // (For a ghost slot: its set and its index among the set's ghosts.)
+  // asking which set an index falls in. (For a ghost slot: its set and its index among the set's
+  // ghosts.)
   SetParticle particle_in_slot(std::size_t slot) const {
     const std::size_t carrier = cells_.sorted_points()[slot];
     const std::size_t part = set_of_slot_[slot];
@@ -246,15 +247,6 @@ template <class Arith>
 void SlotLayout<D>::resize_sets(const CarrierField<Arith>& field) {
   if (field.set_count() != sets_.size()) {
     throw std::logic_error("carrier field over another number of sets than the layout");
-  }
-  bool same = true;
-  for (std::size_t k = 0; k < sets_.size(); ++k) {
-    same = same && first_carrier_[k + 1] - first_carrier_[k] == field.owned_count(k) &&
-           first_carrier_[sets_.size() + k + 1] - first_carrier_[sets_.size() + k] ==
-               field.ghost_count(k);
-  }
-  if (same) {
-    return;
   }
   for (std::size_t k = 0; k < sets_.size(); ++k) {
     sets_[k].count = field.owned_count(k);

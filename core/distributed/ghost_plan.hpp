@@ -10,13 +10,12 @@
 // order. Results do not depend on it (pair sums are exact), only the layout does.
 
 #include "core/distributed/processes.hpp"
+#include "core/distributed/row_exchange.hpp"
 #include "core/distributed/spatial_partition.hpp"
 
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <span>
-#include <type_traits>
 #include <vector>
 
 namespace revsph::distributed {
@@ -32,22 +31,8 @@ public:
   // every process that needs it; returns the ghosts' values in the same layout (collective).
   template <class T>
   std::vector<T> exchange(std::span<const T> values, std::size_t width) const {
-    static_assert(std::is_trivially_copyable_v<T>);
-    std::vector<std::byte> send(sent_particles_.size() * width * sizeof(T));
-    for (std::size_t n = 0; n < sent_particles_.size(); ++n) {
-      std::memcpy(send.data() + n * width * sizeof(T),
-                  values.data() + static_cast<std::size_t>(sent_particles_[n]) * width,
-                  width * sizeof(T));
-    }
-    std::vector<std::size_t> bytes(sent_per_process_.size());
-    for (std::size_t p = 0; p < bytes.size(); ++p) {
-      bytes[p] = sent_per_process_[p] * width * sizeof(T);
-    }
-    std::vector<std::size_t> received_bytes;
-    const std::vector<std::byte> received = exchange_bytes(send, bytes, received_bytes);
-    std::vector<T> ghosts(received.size() / sizeof(T));
-    std::memcpy(ghosts.data(), received.data(), received.size());
-    return ghosts;
+    return exchange_rows(values, width, std::span<const std::uint32_t>(sent_particles_),
+                         std::span<const std::size_t>(sent_per_process_));
   }
 
   // How many ghosts this process receives, and how many particle copies it sends.

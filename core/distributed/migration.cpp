@@ -26,22 +26,12 @@ Migration::Migration(std::span<const int> owners, std::span<const std::uint64_t>
                       std::size_t{0});
   sent_order_.resize(owners.size());
   for (std::size_t i = 0; i < owners.size(); ++i) {
-    sent_order_[next[static_cast<std::size_t>(owners[i])]++] = i;
+    sent_order_[next[static_cast<std::size_t>(owners[i])]++] = static_cast<std::uint32_t>(i);
   }
   // The indices travel first; the arrival order sorts what came by index.
-  std::vector<std::uint64_t> sent_indices(owners.size());
-  for (std::size_t n = 0; n < sent_order_.size(); ++n) {
-    sent_indices[n] = global_indices[sent_order_[n]];
-  }
-  std::vector<std::size_t> bytes(sent_per_process_.size());
-  for (std::size_t p = 0; p < bytes.size(); ++p) {
-    bytes[p] = sent_per_process_[p] * sizeof(std::uint64_t);
-  }
-  std::vector<std::size_t> received_bytes;
-  const std::vector<std::byte> received = exchange_bytes(
-      std::as_bytes(std::span<const std::uint64_t>(sent_indices)), bytes, received_bytes);
-  std::vector<std::uint64_t> arrived(received.size() / sizeof(std::uint64_t));
-  std::memcpy(arrived.data(), received.data(), received.size());
+  const std::vector<std::uint64_t> arrived =
+      exchange_rows(global_indices, 1, std::span<const std::uint32_t>(sent_order_),
+                    std::span<const std::size_t>(sent_per_process_));
   arrival_order_.resize(arrived.size());
   std::iota(arrival_order_.begin(), arrival_order_.end(), std::size_t{0});
   std::sort(arrival_order_.begin(), arrival_order_.end(),

@@ -7,12 +7,12 @@
 // one-process run keeps, so snapshots and hashes can be written by global index.
 
 #include "core/distributed/processes.hpp"
+#include "core/distributed/row_exchange.hpp"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <span>
-#include <type_traits>
 #include <vector>
 
 namespace revsph::distributed {
@@ -26,21 +26,13 @@ public:
   // after the move, in global-index order (collective).
   template <class T>
   std::vector<T> move(std::span<const T> values, std::size_t width) const {
-    static_assert(std::is_trivially_copyable_v<T>);
-    const std::size_t row = width * sizeof(T);
-    std::vector<std::byte> send(sent_order_.size() * row);
-    for (std::size_t n = 0; n < sent_order_.size(); ++n) {
-      std::memcpy(send.data() + n * row, values.data() + sent_order_[n] * width, row);
-    }
-    std::vector<std::size_t> bytes(sent_per_process_.size());
-    for (std::size_t p = 0; p < bytes.size(); ++p) {
-      bytes[p] = sent_per_process_[p] * row;
-    }
-    std::vector<std::size_t> received_bytes;
-    const std::vector<std::byte> received = exchange_bytes(send, bytes, received_bytes);
-    std::vector<T> moved(received.size() / sizeof(T));
+    const std::vector<T> arrived =
+        exchange_rows(values, width, std::span<const std::uint32_t>(sent_order_),
+                      std::span<const std::size_t>(sent_per_process_));
+    std::vector<T> moved(arrived.size());
     for (std::size_t n = 0; n < arrival_order_.size(); ++n) {
-      std::memcpy(moved.data() + n * width, received.data() + arrival_order_[n] * row, row);
+      std::copy_n(arrived.begin() + static_cast<std::ptrdiff_t>(arrival_order_[n] * width), width,
+                  moved.begin() + static_cast<std::ptrdiff_t>(n * width));
     }
     return moved;
   }
@@ -52,7 +44,7 @@ public:
   std::int64_t moved_count() const { return moved_count_; }
 
 private:
-  std::vector<std::size_t> sent_order_;       // this process's particles grouped by new owner
+  std::vector<std::uint32_t> sent_order_;     // this process's particles grouped by new owner
   std::vector<std::size_t> sent_per_process_; // one count per process (this one included)
   std::vector<std::size_t> arrival_order_;    // received row of each particle in index order
   std::vector<std::uint64_t> indices_after_;

@@ -2,6 +2,8 @@
 // -DREVSPH_MPI=ON.
 #include "core/distributed/spatial_partition.hpp"
 
+#include "core/distributed/processes.hpp"
+
 #include <mpi.h>
 #include <zoltan.h>
 
@@ -9,6 +11,7 @@
 #include <array>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace revsph::distributed {
 
@@ -63,6 +66,8 @@ void particle_coordinates(void* data, int, int, int count, ZOLTAN_ID_PTR, ZOLTAN
 struct SpatialPartition::Zoltan {
   Zoltan_Struct* handle = nullptr;
   Particles particles;
+  // processes_near's answer space, one entry per process, kept: it runs once per particle.
+  std::vector<int> parts;
   ~Zoltan() { Zoltan_Destroy(&handle); }
 };
 
@@ -76,6 +81,7 @@ SpatialPartition::SpatialPartition(int dimension, PartitionMethod method)
   }();
   (void)initialised;
   zoltan_->particles.dimension = dimension;
+  zoltan_->parts.resize(static_cast<std::size_t>(process_count()));
   zoltan_->handle = Zoltan_Create(MPI_COMM_WORLD);
   if (zoltan_->handle == nullptr) {
     throw std::runtime_error("Zoltan: Zoltan_Create failed");
@@ -147,13 +153,10 @@ void SpatialPartition::processes_near(std::span<const double> point, double reac
     low[static_cast<std::size_t>(k)] = point[static_cast<std::size_t>(k)] - reach;
     high[static_cast<std::size_t>(k)] = point[static_cast<std::size_t>(k)] + reach;
   }
-  int size = 0;
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
-  processes.resize(static_cast<std::size_t>(size));
-  std::vector<int> parts(static_cast<std::size_t>(size));
+  processes.resize(zoltan_->parts.size());
   int count = 0, part_count = 0;
   check(Zoltan_LB_Box_PP_Assign(zoltan_->handle, low[0], low[1], low[2], high[0], high[1], high[2],
-                                processes.data(), &count, parts.data(), &part_count),
+                                processes.data(), &count, zoltan_->parts.data(), &part_count),
         "Zoltan_LB_Box_PP_Assign");
   processes.resize(static_cast<std::size_t>(count));
   std::erase(processes, except);
