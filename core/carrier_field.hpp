@@ -43,6 +43,9 @@ public:
   std::size_t set_count() const { return fields_.size(); }
   std::size_t owned_count(std::size_t set) const { return fields_[set]->count(); }
   std::size_t ghost_count(std::size_t set) const { return fields_[set]->ghost_count(); }
+  const distributed::GhostPlan* ghost_plan(std::size_t set) const {
+    return fields_[set]->ghost_plan();
+  }
 
   // Component c of one carrier, raw or as a physical value (what SlotLayout::build gathers into
   // slot order without a per-carrier copy).

@@ -1,4 +1,5 @@
 #include "core/neighbour_list.hpp"
+#include "core/interaction_reach.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -31,6 +32,7 @@ void find_neighbours(const CellList<D>& cells, const CoordinateView<D>& targets,
   if (radius > cells.cell_size()) {
     throw std::invalid_argument("find_neighbours: the radius exceeds the cell size");
   }
+  note_interaction_radius(radius);
   const std::size_t n = queries[0].size();
   const double radius_squared = radius * radius;
   const bool exclude_self = self_pairs == SelfPairs::excluded;

@@ -1,4 +1,5 @@
 #include "core/pair_list.hpp"
+#include "core/interaction_reach.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -71,6 +72,7 @@ void HalfPairList::build(const CellList<D>& cells, const CoordinateView<D>& x, d
   if (radius > cells.cell_size()) {
     throw std::invalid_argument("half pair list: the radius exceeds the cell size");
   }
+  note_interaction_radius(radius);
   const std::array<int, D>& per_axis = cells.cells_per_axis();
   const std::span<const std::uint32_t> cell_start = cells.cell_start();
   std::size_t cells_per_layer = 1;

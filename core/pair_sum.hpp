@@ -17,6 +17,10 @@
 //   void cross_pair(const PairGeometry<D>& p, std::array<double, width>& to_a) const;
 //                                                         // one-sided terms from fixed targets
 //                                                         // (a CrossPairs list: walls, say)
+//   auto slot_inputs() const;                             // the per-slot arrays pair() reads
+//                                                         // that the model fills itself, as a
+//                                                         // std::tie of spans or std::arrays of
+//                                                         // spans (a volume, a velocity)
 // The model names each summed quantity and gives its fixed-point scale (PairSums). Every term is
 // rounded once to that scale and added in integers (FixedArithmetic), so a sum is the same for
 // any order of its terms: any thread count, any cell size, any future domain decomposition. With
@@ -35,7 +39,10 @@
 #include <cmath>
 #include <concepts>
 #include <cstdint>
+#include <cstring>
 #include <span>
+#include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -97,7 +104,87 @@ concept HasCrossPairs = requires(const Term& term, const PairGeometry<D>& pair,
   term.cross_pair(pair, to_a);
 };
 
+template <class Term>
+concept HasSlotInputs = requires(const Term& term) {
+  term.slot_inputs();
+};
+
 namespace detail {
+
+// The spans of one entry of slot_inputs(): a span, or an array of them (a vector's components).
+template <class T, std::size_t E>
+std::array<std::span<T, E>, 1> spans_of(std::span<T, E> span) {
+  return {span};
+}
+template <class T, std::size_t E, std::size_t N>
+const std::array<std::span<T, E>, N>& spans_of(const std::array<std::span<T, E>, N>& spans) {
+  return spans;
+}
+template <class T, std::size_t N>
+std::array<std::span<const T>, N> spans_of(const std::array<std::vector<T>, N>& arrays) {
+  std::array<std::span<const T>, N> spans;
+  for (std::size_t k = 0; k < N; ++k) {
+    spans[k] = arrays[k];
+  }
+  return spans;
+}
+template <class T>
+std::array<std::span<const T>, 1> spans_of(const std::vector<T>& array) {
+  return {std::span<const T>(array)};
+}
+
+// In a distributed run, every ghost slot's entries of the term's slot inputs from the process
+// that owns its particle (a model fills them from its own particles' state only), before the
+// pass reads them at a partner b. Collective; the row width comes from the types alone, so that a
+// process without slots (empty arrays) still sends and receives rows of the same width.
+template <int D, class Term>
+void copy_slot_inputs_to_ghosts(const SlotLayout<D>& layout, const Term& term) {
+  if constexpr (HasSlotInputs<Term>) {
+    if (!layout.exchanges_ghost_sums()) {
+      return;
+    }
+    const auto inputs = term.slot_inputs();
+    std::size_t row_bytes = 0;
+    const auto for_each_span = [&inputs](const auto& visit) {
+      std::apply(
+          [&](const auto&... entry) {
+            (..., [&] {
+              for (const auto& span : spans_of(entry)) {
+                visit(span);
+              }
+            }());
+          },
+          inputs);
+    };
+    for_each_span([&](const auto& span) { row_bytes += sizeof(span[0]); });
+    layout.template copy_to_ghost_slots<std::byte>(
+        row_bytes,
+        [&](std::size_t slot, std::byte* row) {
+          for_each_span([&](const auto& span) {
+            const std::size_t size = sizeof(span[0]);
+            if (slot < span.size()) {
+              std::memcpy(row, &span[slot], size);
+            } else {
+              std::memset(row, 0, size);
+            }
+            row += size;
+          });
+        },
+        [&](std::size_t slot, const std::byte* row) {
+          for_each_span([&](const auto& span) {
+            const std::size_t size = sizeof(span[0]);
+            if (slot < span.size()) {
+              // The arrays are the model's own (non-const) vectors, lent to the term as const.
+              std::memcpy(
+                  const_cast<std::remove_const_t<std::remove_reference_t<decltype(span[0])>>*>(
+                      &span[slot]),
+                  row, size);
+            }
+            row += size;
+          });
+        });
+  }
+}
 
 template <class Term>
 bool receives(const Term& term, std::uint32_t slot) {
@@ -127,10 +214,14 @@ template <class Arith, int D, class Term, int K, class Then>
 void finish_in_team(const SlotLayout<D>& layout, const Term& term, PairSums<Arith, K>& sums,
                     FaultRecorder& faults, const Then& then) {
   const std::size_t n = layout.slot_count();
+  const bool ghosts_from_owners = layout.exchanges_ghost_sums();
   // nowait: the end of the parallel region that calls this is the barrier.
 #pragma omp for schedule(static) nowait
   for (std::size_t s = 0; s < n; ++s) {
     const auto slot = static_cast<std::uint32_t>(s);
+    if (ghosts_from_owners && layout.is_ghost_slot(s)) {
+      continue; // its sums are partial here: its owner's arrive in copy_ghost_sums
+    }
     if (!receives(term, slot)) {
       sums.clear_values(s);
     } else {
@@ -146,6 +237,23 @@ void finish_in_team(const SlotLayout<D>& layout, const Term& term, PairSums<Arit
     }
     then(slot);
   }
+}
+
+// In a distributed run, every ghost slot's sums from the process that owns its particle (its own
+// sums here lack the pairs beyond this process's ghosts), then then(slot) on it: a later pass
+// reads a ghost's per-slot values (a pressure) as it reads an own particle's. Collective.
+template <class Arith, int D, int K, class Then>
+void copy_ghost_sums(const SlotLayout<D>& layout, PairSums<Arith, K>& sums, const Then& then) {
+  if (!layout.exchanges_ghost_sums()) {
+    return;
+  }
+  using Row = typename PairSums<Arith, K>::SlotRow;
+  layout.template copy_to_ghost_slots<Row>(
+      1, [&](std::size_t slot, Row* row) { sums.row(slot, *row); },
+      [&](std::size_t slot, const Row* row) {
+        sums.set_row(slot, *row);
+        then(static_cast<std::uint32_t>(slot));
+      });
 }
 
 } // namespace detail
@@ -167,6 +275,7 @@ void sum_pairs_over(const SlotLayout<D>& layout, const HalfPairList& pairs, cons
                     PairSums<Arith, Term::width>& sums, const CrossPairs<D>& cross = {},
                     const Then& then = {}) {
   constexpr int K = Term::width;
+  detail::copy_slot_inputs_to_ghosts(layout, term);
   sums.resize(layout.slot_count());
   const CoordinateView<D> x = layout.position();
   FaultRecorder faults;
@@ -203,6 +312,7 @@ void sum_pairs_over(const SlotLayout<D>& layout, const HalfPairList& pairs, cons
     });
     detail::finish_in_team<Arith>(layout, term, sums, faults, then);
   }
+  detail::copy_ghost_sums(layout, sums, then);
   faults.throw_if_any();
 }
 
@@ -263,6 +373,7 @@ void sum_cross_pairs(const SlotLayout<D>& layout, const Term& term,
     }
     detail::finish_in_team<Arith>(layout, term, sums, faults, NothingAfter{});
   }
+  detail::copy_ghost_sums(layout, sums, NothingAfter{});
   faults.throw_if_any();
 }
 

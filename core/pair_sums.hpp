@@ -197,6 +197,30 @@ public:
       return true;
     }
   }
+  // A slot's totals and values, as a distributed run copies them from a particle's owner to its
+  // ghost slots (SlotLayout::copy_to_ghost_slots).
+  struct SlotRow {
+    std::array<Total, K> totals;
+    std::array<double, K> values;
+  };
+  void row(std::size_t slot, SlotRow& out) const {
+    for (int q = 0; q < K; ++q) {
+      out.totals[q] = totals_[slot * K + q];
+      out.values[q] = value(q, slot);
+    }
+  }
+  void set_row(std::size_t slot, const SlotRow& in) {
+    for (int q = 0; q < K; ++q) {
+      totals_[slot * K + q] = in.totals[q];
+      if constexpr (!values_are_totals) {
+        values_[q][slot] = in.values[q];
+      }
+    }
+    if constexpr (exact) {
+      invalid_[slot] = 0;
+    }
+  }
+
   void resize_values(std::size_t n) {
     if constexpr (!values_are_totals) {
       for (int q = 0; q < K; ++q) {

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstddef>
 #include <span>
+#include <stdexcept>
 
 namespace revsph {
 
@@ -30,6 +31,12 @@ public:
   template <int D, class Entry>
   void assemble(const SlotLayout<D>& layout, const Entry& f, std::size_t unknowns,
                 const Settings& settings) {
+    if (layout.exchanges_ghost_sums()) {
+      // Each process would solve its own rows alone: not the whole system's answer.
+      throw std::logic_error("a pair system (conjugate gradients over the pairs) is not solved "
+                             "across processes yet (docs/design/distributed.md): run it on one "
+                             "process");
+    }
     fill_pair_matrix<D>(layout, f, matrix_);
     const auto u = static_cast<Eigen::Index>(unknowns);
     block_ = matrix_.topLeftCorner(u, u);

@@ -4,8 +4,10 @@
 // model never implements this interface by hand.
 
 #include "core/arithmetic.hpp"
+#include "core/distributed/state_distribution.hpp"
 #include "core/energy.hpp"
 #include "core/fault.hpp"
+#include "core/interaction_reach.hpp"
 #include "core/particle_sets.hpp"
 #include "core/particle_view.hpp"
 #include "core/state_snapshot.hpp"
@@ -163,6 +165,11 @@ public:
   virtual std::vector<std::string> substep_names() const = 0;
   virtual void apply_substep(std::size_t index, double dt) = 0;
 
+  // In a distributed run (more than one process, docs/design/distributed.md), which rows of each
+  // set this process holds: capture_state() and borrow_state() give those rows only. Empty when
+  // this process holds the whole state.
+  virtual std::vector<SetRows> own_rows() const = 0;
+
   std::int64_t steps_taken() const { return steps_taken_; }
   double time() const { return time_at(steps_taken_); }
   // The simulated time after `step` steps: step * dt, or, in a run continued from a snapshot
@@ -203,6 +210,9 @@ public:
     require_complete(model_.state());
     info_.particles = set_sizes(model_.state());
     place_irreversible_operators();
+    if (distributed::process_count() > 1) {
+      distribute();
+    }
   }
 
   const SimulationInfo& info() const override { return info_; }
@@ -214,12 +224,16 @@ public:
         if constexpr (HasClock<M>) {
           model_.set_time(time_at(steps_taken_));
         }
-        apply_step<M>(model_, step_, dt);
+        for (const Substep<M>& substep : step_) {
+          (model_.*substep.apply)(substep.dt_fraction * dt);
+          refresh_pieces();
+        }
         for (const StepHook<M>& hook : step_hooks_of<M>()) {
           (model_.*hook.apply)(steps_taken_ + 1);
+          refresh_pieces();
         }
       } catch (const SimulationFault& fault) {
-        throw SimulationFault(fault.fault(), steps_taken_ + 1);
+        throw SimulationFault(with_global_index(fault.fault()), steps_taken_ + 1);
       }
       ++steps_taken_;
     }
@@ -231,12 +245,23 @@ public:
     } else {
       apply_time_reversal(model_.state());
     }
+    refresh_pieces();
   }
   StateSnapshot capture_state() override { return revsph::capture_state(model_.state()); }
   StateSnapshot borrow_state() override { return revsph::borrow_state(model_.state()); }
   void restore_state(const StateSnapshot& snapshot) override {
+    if (distribution_ && !holds_whole_state(snapshot)) {
+      throw std::logic_error("restoring one process's piece of a distributed state is not built "
+                             "yet (docs/design/distributed.md)");
+    }
     revsph::restore_state(model_.state(), snapshot);
+    if (distribution_) {
+      distribution_->redistribute(model_.state());
+    }
     model_.invalidate_derived();
+  }
+  std::vector<SetRows> own_rows() const override {
+    return distribution_ ? distribution_->own_rows() : std::vector<SetRows>{};
   }
   EnergyBudget energy() override {
     return attributing_faults([&] { return model_.energy(); });
@@ -283,6 +308,7 @@ public:
   }
   void apply_substep(std::size_t index, double dt) override {
     attributing_faults([&] { (model_.*step_.at(index).apply)(dt); });
+    refresh_pieces();
   }
 
   M& model() { return model_; }
@@ -332,13 +358,53 @@ private:
       if (fault.step() >= 0) {
         throw;
       }
-      throw SimulationFault(fault.fault(), steps_taken_ + 1);
+      throw SimulationFault(with_global_index(fault.fault()), steps_taken_ + 1);
     }
   }
 
+  // More than one process: each keeps its region's particles and ghosts of its neighbours'. The
+  // reach is the largest radius the setup's lists use, found by computing the energies once over
+  // the whole state (which builds every pair list); a later list over a larger radius is
+  // refused (core/interaction_reach.hpp).
+  void distribute() {
+    limit_interaction_radius(0.0);
+    (void)model_.energy();
+    const double reach = distributed::max_over_processes(largest_interaction_radius());
+    distribution_ = std::make_unique<distributed::StateDistribution<StateOf>>(
+        model_.state(), info_.dimension, reach);
+    limit_interaction_radius(reach);
+    model_.invalidate_derived();
+  }
+  // After every change of the state: migration and ghosts (nothing in a one-process run).
+  void refresh_pieces() {
+    if (distribution_ && distribution_->refresh(model_.state())) {
+      model_.invalidate_derived();
+    }
+  }
+  // A fault names its particle by its index on this process: in a distributed run, by its index
+  // in the whole state instead.
+  FaultDescription with_global_index(FaultDescription fault) const {
+    if (distribution_) {
+      fault.particle = distribution_->global_index(fault.particle_set, fault.particle);
+    }
+    return fault;
+  }
+  bool holds_whole_state(const StateSnapshot& snapshot) const {
+    for (const ParticleCount& set : info_.particles) {
+      for (const auto& field : snapshot.fields) {
+        if (field.info.particle_set == set.particle_set && field.count != set.count) {
+          return false;
+        }
+      }
+    }
+    return true;
+  }
+
+  using StateOf = std::remove_cvref_t<decltype(std::declval<M&>().state())>;
   M model_;
   SimulationInfo info_;
   std::vector<Substep<M>> step_;
+  std::unique_ptr<distributed::StateDistribution<StateOf>> distribution_;
 };
 
 } // namespace revsph

@@ -12,6 +12,7 @@
 
 #include "core/carrier_field.hpp"
 #include "core/cell_list.hpp"
+#include "core/distributed/ghost_plan.hpp"
 #include "core/fault.hpp"
 #include "core/geometry.hpp"
 #include "core/pair_list.hpp"
@@ -152,13 +153,15 @@ public:
     return {set_of_slot_, (own_and_ghosts(index_of(sets)) | ...)};
   }
   // The particle in slot s. With it a loop over slots reaches each particle's own set without
-  // asking which set an index falls in. (For a ghost slot: its set and its index among the set's
-  // ghosts.)
+  // asking which set an index falls in. A ghost slot's index is its set's own count plus its
+  // index among the ghosts: StateField::at reads it there (core/state_field.hpp).
   SetParticle particle_in_slot(std::size_t slot) const {
     const std::size_t carrier = cells_.sorted_points()[slot];
     const std::size_t part = set_of_slot_[slot];
-    return {static_cast<std::uint32_t>(part % sets_.size()),
-            static_cast<std::uint32_t>(carrier - first_carrier_[part])};
+    const std::size_t set = part % sets_.size();
+    const std::size_t before = part == set ? 0 : sets_[set].count;
+    return {static_cast<std::uint32_t>(set),
+            static_cast<std::uint32_t>(before + carrier - first_carrier_[part])};
   }
   // A per-slot array read in one set's particle order: values[i] is the value of the set's
   // particle i (a density or a mass for an output, without a copy in canonical order).
@@ -194,6 +197,15 @@ public:
   template <class T>
   void scatter(std::span<const T> by_slot, std::vector<T>& by_carrier) const;
 
+  // Whether this layout's ghosts came from other processes (a distributed run): a pair pass then
+  // leaves their sums to their owners and copies them over (copy_to_ghost_slots).
+  bool exchanges_ghost_sums() const { return exchanges_ghost_sums_; }
+  bool is_ghost_slot(std::size_t slot) const { return set_of_slot_[slot] >= sets_.size(); }
+  // Every ghost slot's row of `width` values from its owner's slot (collective):
+  // row_of(slot, T* row) writes an own slot's row, put(slot, const T* row) takes a ghost's.
+  template <class T, class RowOf, class Put>
+  void copy_to_ghost_slots(std::size_t width, const RowOf& row_of, const Put& put) const;
+
   // Records a fault of the particle in slot s (thread-safe, like FaultRecorder::record).
   void record_fault(FaultRecorder& faults, std::size_t slot, const char* variable,
                     const char* reason) const;
@@ -210,6 +222,8 @@ private:
   std::vector<std::uint32_t> slot_of_carrier_;
   std::vector<std::uint8_t> set_of_slot_;
   HalfPairList pairs_;
+  std::vector<const distributed::GhostPlan*> ghost_plans_; // per set; null without ghosts
+  bool exchanges_ghost_sums_ = false;
 };
 
 template <int D>
@@ -256,6 +270,37 @@ void SlotLayout<D>::resize_sets(const CarrierField<Arith>& field) {
     first_carrier_[sets_.size() + k + 1] = first_carrier_[sets_.size() + k] + field.ghost_count(k);
   }
   carrier_count_ = first_carrier_.back();
+  ghost_plans_.resize(sets_.size());
+  exchanges_ghost_sums_ = false;
+  for (std::size_t k = 0; k < sets_.size(); ++k) {
+    ghost_plans_[k] = field.ghost_plan(k);
+    exchanges_ghost_sums_ = exchanges_ghost_sums_ || ghost_plans_[k] != nullptr;
+  }
+}
+
+template <int D>
+template <class T, class RowOf, class Put>
+void SlotLayout<D>::copy_to_ghost_slots(std::size_t width, const RowOf& row_of,
+                                        const Put& put) const {
+  const std::size_t n = sets_.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    if (ghost_plans_[k] == nullptr) {
+      continue;
+    }
+    const std::span<const std::uint32_t> own = slots_of_set(k);
+    const std::vector<T> rows = ghost_plans_[k]->template exchange_from<T>(
+        width, [&](std::size_t particle, T* row) { row_of(own[particle], row); });
+    const std::size_t first = first_carrier_[n + k];
+    const std::size_t ghosts = first_carrier_[n + k + 1] - first;
+    if (rows.size() != ghosts * width) {
+      throw std::logic_error("ghost sums: " + std::to_string(rows.size() / width) +
+                             " rows arrived for " + std::to_string(ghosts) + " ghosts");
+    }
+#pragma omp parallel for schedule(static)
+    for (std::size_t g = 0; g < ghosts; ++g) {
+      put(std::size_t{slot_of_carrier_[first + g]}, rows.data() + g * width);
+    }
+  }
 }
 
 template <int D>

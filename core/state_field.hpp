@@ -18,6 +18,10 @@
 
 namespace revsph {
 
+namespace distributed {
+class GhostPlan;
+}
+
 // Behaviour under time reversal R: odd variables (velocities, fluxes) change sign.
 enum class Parity { even, odd };
 
@@ -77,20 +81,32 @@ public:
     assert(c >= 0 && c < info_.components);
     return {values_.data() + static_cast<std::size_t>(c) * count_, count_};
   }
-  Raw& at(int c, std::size_t i) { return values_[static_cast<std::size_t>(c) * count_ + i]; }
+  // Particle i's component c; i >= count() is ghost i - count() (what a loop over a layout's
+  // slots reaches through SlotLayout::particle_in_slot: it reads a ghost like an own particle,
+  // and what it writes there is replaced at the next refresh).
+  Raw& at(int c, std::size_t i) {
+    return i < count_ ? values_[static_cast<std::size_t>(c) * count_ + i]
+                      : ghost_values_[static_cast<std::size_t>(c) * ghost_count_ + i - count_];
+  }
   const Raw& at(int c, std::size_t i) const {
-    return values_[static_cast<std::size_t>(c) * count_ + i];
+    return i < count_ ? values_[static_cast<std::size_t>(c) * count_ + i]
+                      : ghost_values_[static_cast<std::size_t>(c) * ghost_count_ + i - count_];
   }
   std::span<Raw> all() { return values_; }
   std::span<const Raw> all() const { return values_; }
 
   std::size_t ghost_count() const { return ghost_count_; }
-  // `values`: component-major over `count` ghosts.
-  void set_ghosts(std::size_t count, std::vector<Raw> values) {
+  // `values`: component-major over `count` ghosts. `plan`: the exchange that brought them
+  // (core/distributed/ghost_plan.hpp), along which a pair pass sends its ghosts' sums; null in
+  // a test that places ghosts by hand.
+  void set_ghosts(std::size_t count, std::vector<Raw> values,
+                  const distributed::GhostPlan* plan = nullptr) {
     assert(values.size() == count * static_cast<std::size_t>(info_.components));
     ghost_count_ = count;
     ghost_values_ = std::move(values);
+    ghost_plan_ = plan;
   }
+  const distributed::GhostPlan* ghost_plan() const { return ghost_plan_; }
   const Raw& ghost_at(int c, std::size_t g) const {
     return ghost_values_[static_cast<std::size_t>(c) * ghost_count_ + g];
   }
@@ -102,6 +118,7 @@ private:
   std::vector<Raw> values_;
   std::size_t ghost_count_ = 0;
   std::vector<Raw> ghost_values_;
+  const distributed::GhostPlan* ghost_plan_ = nullptr;
 };
 
 } // namespace revsph

@@ -3,6 +3,7 @@
 // name, components, count, scale exponent, raw kind) followed by its raw integers in little-endian
 // byte order. Two states have the same hash exactly when they are bit for bit the same.
 
+#include "core/distributed/set_rows.hpp"
 #include "core/state_snapshot.hpp"
 
 #include <cstdint>
@@ -12,14 +13,6 @@
 namespace revsph {
 
 std::string state_hash(const StateSnapshot& state);
-
-// One particle set's rows on this process: their global indices (ascending) and the set's
-// particle count over every process.
-struct SetRows {
-  std::string set;
-  std::span<const std::uint64_t> indices;
-  std::uint64_t total = 0;
-};
 
 // The same hash of a state the processes hold in pieces (docs/design/distributed.md, piece 8):
 // `local` has this process's rows of every field, `sets` says which. Every process returns the

@@ -35,6 +35,18 @@ public:
                          std::span<const std::size_t>(sent_per_process_));
   }
 
+  // The same with each listed particle's row written by row_of(particle, T* row) straight into
+  // the send buffer (values kept in another order, a pair loop's slots say).
+  template <class T, class RowOf>
+  std::vector<T> exchange_from(std::size_t width, const RowOf& row_of) const {
+    std::vector<T> packed(sent_particles_.size() * width);
+    for (std::size_t n = 0; n < sent_particles_.size(); ++n) {
+      row_of(std::size_t{sent_particles_[n]}, packed.data() + n * width);
+    }
+    return exchange_packed_rows(std::span<const T>(packed), width,
+                                std::span<const std::size_t>(sent_per_process_));
+  }
+
   // How many ghosts this process receives, and how many particle copies it sends.
   std::size_t ghost_count() const { return ghost_count_; }
   std::size_t sent_count() const { return sent_particles_.size(); }

@@ -46,4 +46,9 @@ std::vector<std::byte> exchange_bytes(std::span<const std::byte> send,
                                       std::vector<std::size_t>& received_bytes);
 double min_over_processes(double local);
 
+// Ends every process at once with `status` (MPI_Abort; std::exit with one process): what a
+// process that met an error the others cannot know of (a fault in its own particles) does, so
+// that none waits for it in an exchange. The launcher reports the status.
+[[noreturn]] void end_every_process(int status);
+
 } // namespace revsph::distributed

@@ -1,6 +1,8 @@
 // MPI_COMM_WORLD's processes (processes.hpp), built with -DREVSPH_MPI=ON.
 #include "core/distributed/processes.hpp"
 
+#include <cstdlib>
+
 #include <mpi.h>
 
 #include <cstring>
@@ -52,6 +54,11 @@ ProcessSession::~ProcessSession() {
   MPI_Op_free(&int128_sum);
   MPI_Type_free(&int128_type);
   MPI_Finalize();
+}
+
+void end_every_process(int status) {
+  MPI_Abort(MPI_COMM_WORLD, status);
+  std::exit(status); // MPI_Abort does not return; for the compiler
 }
 
 int process_rank() {

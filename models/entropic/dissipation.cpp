@@ -65,8 +65,7 @@ void Model<D>::dissipate(double tau) {
   for (std::size_t s = 0; s < n; ++s) {
     conduction_temperature_[s] = is_gas(s) ? temperature_[s] : slot_held_temperature_[s];
   }
-  const bool mirror_temperature =
-      parameters_.heat_conductivity > 0.0 && state_.thermal.position.count() > 0;
+  const bool mirror_temperature = parameters_.heat_conductivity > 0.0 && has_thermal_walls_;
   const bool mirror_velocity = parameters_.no_slip_walls && parameters_.viscosity > 0.0;
   if (mirror_temperature || mirror_velocity) {
     // Each wall slot's own entries only: the pass reads the gas's temperatures and velocities.

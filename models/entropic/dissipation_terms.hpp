@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <tuple>
 
 namespace revsph::entropic {
 
@@ -60,6 +61,8 @@ struct WallMirrorTerm {
   std::span<const double> temperature; // by slot
   const CoordinateArrays<D>& velocity; // by slot
   SlotInSet gas;                       // by slot
+  // Filled from the gas's own momenta: a distributed run copies the ghosts' (core/pair_sum.hpp).
+  auto slot_inputs() const { return std::tie(velocity); }
 
   void pair(const PairGeometry<D>& p, std::array<double, D + 2>& to_a,
             std::array<double, D + 2>& to_b) const {
@@ -113,6 +116,9 @@ struct DissipationTerm {
   //   conductivity lambda_F, as eq. (54) is. One pass: a wall held at T_w acts at its surface.
   double pairwise_conductivity;
   std::span<const double> temperature; // by slot, for the pairwise conduction
+  // The gas's velocities are filled from its own momenta (the rest from per-slot sums, which a
+  // distributed run already has on its ghosts).
+  auto slot_inputs() const { return std::tie(velocity); }
 
   void pair(const PairGeometry<D>& p, std::array<double, D + 1>& to_a,
             std::array<double, D + 1>& to_b) const {

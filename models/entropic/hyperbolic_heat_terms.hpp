@@ -18,6 +18,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <tuple>
 
 namespace revsph::entropic {
 
@@ -58,6 +59,8 @@ struct EntropyExchangeTerm {
   std::span<const double> volume;
   const CoordinateArrays<D>& flux; // w by slot
   SlotInSet conducting;
+  // Filled from the gas's own entropy fluxes.
+  auto slot_inputs() const { return std::tie(flux); }
 
   void pair(const PairGeometry<D>& p, std::array<double, 1>& to_a,
             std::array<double, 1>& to_b) const {

@@ -95,7 +95,8 @@ Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state)
       wall_mirror_sums_(wall_mirror_quantities(parameters_, state_)),
       flux_sums_(components_of<D>("entropy_flux", parameters_.entropy_flux_scale)),
       entropy_exchange_sums_({SummedQuantity{"entropy", state_.gas.entropy.info().scale}}),
-      impulse_sums_(components_of<D>("momentum", parameters_.momentum_scale)) {}
+      impulse_sums_(components_of<D>("momentum", parameters_.momentum_scale)),
+      has_thermal_walls_(state_.thermal.position.count() > 0) {}
 
 // sum W T: 4 times the hottest wall over dr^D; sum W v: 4 times the sound speed over dr^D;
 // sum W: the number density; each with 48 bits.
@@ -448,7 +449,7 @@ EnergyBudget Model<D>::energy() {
                        {"internal", global_total(internal)},
                        {"gravitational", global_total(gravitational)},
                        {"wall", global_total(wall)}}};
-  if (state_.thermal.position.count() > 0) {
+  if (has_thermal_walls_) {
     // The heat the thermal walls took in: with it the total is kept.
     budget.terms.push_back({"thermal_walls", wall_heat_});
   }
@@ -513,7 +514,7 @@ std::vector<EnergyTerm> Model<D>::diagnostics() {
   }
   terms.push_back({"entropy", static_cast<double>(global_total(entropy)) *
                                   fixedpoint::to_real(1, state_.gas.entropy.info().scale)});
-  if (state_.thermal.position.count() > 0) {
+  if (has_thermal_walls_) {
     // Since the run (or its restart) began: the entropy the walls gained, sum Q / T_w (with the
     // gas's, it never decreases), and the heat the hot walls gave and the cold walls took.
     terms.push_back({"thermal_wall_entropy", wall_entropy_});

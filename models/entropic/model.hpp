@@ -103,13 +103,19 @@ private:
   std::span<const double> of_gas(const std::vector<double>& by_carrier) const {
     return layout_.part_of(std::span<const double>(by_carrier), state_.gas);
   }
-  // Each carrier's held temperature (a thermal wall's; 0 for the rest), for Gathered.
+  // Each carrier's held temperature (a thermal wall's, own or ghost; 0 for the rest), for
+  // Gathered (read while the layout builds, after it took the sets' new sizes).
   auto held_temperature() const {
-    return [this,
-            first = layout_.first_carrier(layout_.index_of(state_.thermal))](std::size_t carrier) {
+    return [this](std::size_t carrier) {
+      const std::size_t thermal = layout_.index_of(state_.thermal);
+      const std::size_t part = layout_.set_of_carrier(carrier);
       const auto& held = state_.thermal.temperature;
-      return carrier < first ? 0.0
-                             : fixedpoint::to_real(held.at(0, carrier - first), held.info().scale);
+      if (part % layout_.sets().size() != thermal) {
+        return 0.0;
+      }
+      const std::size_t index = carrier - layout_.first_carrier(part);
+      return fixedpoint::to_real(part == thermal ? held.at(0, index) : held.ghost_at(0, index),
+                                 held.info().scale);
     };
   }
   std::size_t gas_count() const { return state_.gas.position.count(); }
@@ -172,6 +178,9 @@ private:
   double impulse_dt_ = 0.0;
   bool impulses_valid_ = false;
   PairSums<FixedArithmetic, D> impulse_sums_;
+  // Whether the case has thermal walls, from the whole state at setup (in a distributed run a
+  // process's own share may hold none: what the passes do must not depend on it).
+  bool has_thermal_walls_;
 };
 
 extern template class Model<1>;

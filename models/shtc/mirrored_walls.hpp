@@ -20,6 +20,7 @@
 #include "models/shtc/kernel_sums.hpp"
 
 #include <span>
+#include <tuple>
 #include <vector>
 
 namespace revsph::shtc {
@@ -33,6 +34,8 @@ struct MirrorTerm {
   SlotInSet is_wall; // the boundary particles (SlotLayout::in)
   const CoordinateArrays<D>& velocity;
 
+  // Filled from own particles' state (a distributed run copies the ghosts' in, core/pair_sum.hpp).
+  auto slot_inputs() const { return std::tie(velocity); }
   bool receives(std::uint32_t s) const { return is_wall(s); }
   void pair(const PairGeometry<D>& p, std::array<double, D + 1>& to_a,
             std::array<double, D + 1>& to_b) const {

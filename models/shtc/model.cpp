@@ -306,9 +306,14 @@ void Model<D>::update_constants() {
   lambda_constant_ = CarrierField<FixedArithmetic>{&state_.material.carried.lambda_constant,
                                                    &state_.boundary.carried.lambda_constant}
                          .raws();
-  // Mirrored walls pretend velocities even at rest, and do work.
-  walls_work_ = any_wall_moves(state_) ||
-                (parameters_.mirrored_walls && state_.boundary.position.count() > 0);
+  // Mirrored walls pretend velocities even at rest, and do work. Decided once, from the whole
+  // state the setup made (a distributed run's process may hold no wall: what the passes do must
+  // not depend on it).
+  if (!walls_work_known_) {
+    walls_work_ = any_wall_moves(state_) ||
+                  (parameters_.mirrored_walls && state_.boundary.position.count() > 0);
+    walls_work_known_ = true;
+  }
   constants_valid_ = true;
 }
 
@@ -510,7 +515,7 @@ void Model<D>::derived_views(const ViewSink& sink) {
                       energies[layout_.index_of(state_.material)].kinetic});
   }
   const std::span<const std::uint32_t> walls = layout_.slots_of(state_.boundary);
-  if (!walls.empty() && walls_work()) {
+  if (walls_work()) { // on every process (its pass is collective), with or without own walls
     update_carrier_velocities();
     const CoordinateArrays<D>& seen = slot_velocity_seen();
     std::vector<double> velocity(walls.size() * D);

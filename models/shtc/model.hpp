@@ -74,7 +74,9 @@ public:
   // Per material particle, canonical order (for tests).
   const CoordinateArrays<D>& acceleration();
   std::size_t material_count() const { return state_.material.position.count(); }
-  std::size_t carrier_count() const { return material_count() + state_.boundary.position.count(); }
+  // The carriers of the pair passes: every slot of the layout (in a distributed run their ghosts
+  // too, which the loops over slots read through particle_in_slot like own particles).
+  std::size_t carrier_count() const { return carrier_position().count(); }
 
 private:
   // What each sub-step does irreversibly in this case ("" for nothing; step_composition.hpp).
@@ -153,6 +155,7 @@ private:
   std::vector<double> mass_;                                     // carriers
   std::vector<std::int64_t> density_constant_, lambda_constant_; // carriers, raw
   bool walls_work_ = false;
+  bool walls_work_known_ = false;
   // Derived from the positions.
   bool geometry_valid_ = false;
   SlotLayout<D> layout_; // carriers: material, then boundary particles

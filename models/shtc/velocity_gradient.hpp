@@ -13,6 +13,7 @@
 #include "models/shtc/kernel_sums.hpp"
 
 #include <span>
+#include <tuple>
 #include <vector>
 
 namespace revsph::shtc {
@@ -34,6 +35,8 @@ struct VelocityGradientTerm {
   std::span<const double> mass;
   SeenVelocities<D> v;
 
+  // Filled from own particles' state (a distributed run copies the ghosts' in, core/pair_sum.hpp).
+  auto slot_inputs() const { return std::tie(v.seen_by_material, v.seen_by_walls); }
   const CoordinateView<D>& view_of_slot(std::uint32_t s) const {
     return !v.is_wall.set_of_slot.empty() && v.is_wall(s) ? v.seen_by_walls : v.seen_by_material;
   }

@@ -97,7 +97,7 @@ void Model<D, Arith>::dissipate(double dt) {
   if (parameters_.viscosity == 0.0 && parameters_.heat_conductivity == 0.0) {
     return;
   }
-  const bool walls = state_.wall.position.count() > 0;
+  const bool walls = has_walls_;
   const double energy_before = walls ? energy().total() : 0.0;
   fill_rate_inputs(-1); // the mean of the copies: T, v_n, u = v - v_s, 1 / rho
   // Conducting walls: their own velocity as v_n, T0 as temperature (s = s0, no counterflow).

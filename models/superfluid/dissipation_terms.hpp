@@ -35,6 +35,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <tuple>
 
 namespace revsph::superfluid {
 
@@ -54,6 +55,8 @@ struct DissipationTerm {
   // +1 / -1: the side of the superleak's mid-plane a slot lies on within its width (0: outside);
   // no heat crosses between the two sides (sec. III.C).
   std::span<const std::int8_t> side;
+  // Filled from own particles' state: a distributed run copies the ghosts' in.
+  auto slot_inputs() const { return std::tie(inverse_density, temperature, normal_velocity, side); }
   bool no_slip_dummies = false;
   bool absorbing_walls = false;
   bool receives(std::uint32_t s) const { return fluid(s) || (absorbing_walls && wall(s)); }

@@ -48,7 +48,8 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
           increment_quantities<D>(parameters_.velocity_scale, parameters_.entropy_scale)),
       dissipation_sums_(
           dissipation_quantities<D>(parameters_.velocity_scale, parameters_.heat_scale)),
-      wall_work_sums_(SummedQuantity{"wall_work", parameters_.heat_scale}) {}
+      wall_work_sums_(SummedQuantity{"wall_work", parameters_.heat_scale}),
+      has_walls_(state_.wall.position.count() > 0) {}
 
 template <int D, class Arith>
 void Model<D, Arith>::initialise_density_constants() {

@@ -146,6 +146,9 @@ private:
   PairSums<Arith, 2 * D + 1> increment_sums_; // at the scales of v, v_s and s
   PairSums<Arith, D + 1> dissipation_sums_;   // velocity increments and heat
   PairSums<Arith, 1> wall_work_sums_;         // energy absorbing walls give each fluid particle
+  // Whether the case has walls, from the whole state at setup (in a distributed run a process's
+  // own share may hold none: what the passes do must not depend on it).
+  bool has_walls_;
 };
 
 extern template class Model<2, FixedArithmetic>;

@@ -37,6 +37,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <tuple>
 
 namespace revsph::superfluid {
 
@@ -62,7 +63,13 @@ struct RateTerm {
   // The slots that interact as fluid: the fluid's, and the absorbing walls' (else is_fluid).
   SlotInSet interacts;
   const RateInputs<D>& in;
-  double tau;     // the sub-step's length
+  double tau; // the sub-step's length
+  // What fill_rate_inputs computes from own particles' state (the rest follows from per-slot
+  // sums): a distributed run copies the ghosts' in (core/pair_sum.hpp).
+  auto slot_inputs() const {
+    return std::tie(in.flux_factor, in.entropy_over_density, in.temperature, in.relative,
+                    in.entropy_flux, in.normal_velocity);
+  }
   double gravity; // g along minus the last axis, on v and v_s (eq. 29)
   // chi_s = 0 everywhere (chi_n0 = 1, chi' = 0): v_s then enters nothing, and its own equation
   // amplifies u = v - v_s without bound in a shear flow (the classical cavity overflowed at step
@@ -160,6 +167,7 @@ struct WallWorkTerm {
   static constexpr int width = 1;
   RateTerm<D> rate;
 
+  auto slot_inputs() const { return rate.slot_inputs(); }
   bool receives(std::uint32_t s) const { return rate.is_fluid(s); }
 
   void pair(const PairGeometry<D>& p, std::array<double, width>& to_a,

@@ -15,6 +15,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -100,6 +101,12 @@ struct DissipationTerm {
   ContactInputs contact;
   double tau;
 
+  // The per-slot inputs pair() reads at a partner: a distributed run copies the ghosts' from
+  // their owners (core/pair_sum.hpp).
+  auto slot_inputs() const {
+    return std::tie(in.velocity, volume, phase_volume, normal_weight, contact.mass,
+                    contact.density);
+  }
   bool receives(std::uint32_t s) const { return !in.wall(s); }
 
   // K_ab of the exchange along v_a - v_b (eq. 34's viscosity, or the friction), and that of the

@@ -72,30 +72,21 @@ void Model<D, Arith>::update_constants() {
                      .reals();
   spin_ =
       CarrierField<Arith>{&state_.superfluid.spin, &state_.normal.spin, &state_.wall.spin}.reals();
-  const std::size_t n = mass_.size();
-  rest_density_.assign(n, parameters_.rest_density(false));
-  theta_factor_.assign(n, 0.0);
-  const std::span<double> superfluid_rest =
-      layout_.part_of(std::span(rest_density_), state_.superfluid);
-  std::fill(superfluid_rest.begin(), superfluid_rest.end(), parameters_.rest_density(true));
-  // Eq. (41): sigma = C_e S(T) / rho_ref; theta' / rho = sigma for the superfluid (28) and
-  // -sigma rho_s / rho_n for the normal fluid (sec. IV.3).
-  const Thermomechanical& t = parameters_.thermomechanical;
-  if (t.entropy_scale > 0.0) {
-    const std::size_t superfluid = layout_.index_of(state_.superfluid);
-    for (const std::size_t set : {superfluid, layout_.index_of(state_.normal)}) {
-      const double kind =
-          set == superfluid ? 1.0 : -parameters_.superfluid_density / parameters_.normal_density;
-      const std::span<const double> temperature =
-          layout_.part_of_set(std::span<const double>(temperature_), set);
-      const std::span<double> factor = layout_.part_of_set(std::span(theta_factor_), set);
-      for (std::size_t i = 0; i < factor.size(); ++i) {
-        factor[i] = kind * t.entropy_scale *
-                    phonon_roton_entropy(temperature[i], t.first_sound_speed) / t.reference_density;
-      }
-    }
-  }
   constants_valid_ = true;
+}
+
+template <int D, class Arith>
+double Model<D, Arith>::theta_factor(std::size_t carrier) const {
+  const Thermomechanical& t = parameters_.thermomechanical;
+  const std::size_t set = layout_.set_of_carrier(carrier) % layout_.sets().size();
+  const bool superfluid = set == layout_.index_of(state_.superfluid);
+  if (!(t.entropy_scale > 0.0) || !(superfluid || set == layout_.index_of(state_.normal))) {
+    return 0.0;
+  }
+  const double kind =
+      superfluid ? 1.0 : -parameters_.superfluid_density / parameters_.normal_density;
+  return kind * t.entropy_scale * phonon_roton_entropy(temperature_[carrier], t.first_sound_speed) /
+         t.reference_density;
 }
 
 template <int D, class Arith>
@@ -108,8 +99,9 @@ void Model<D, Arith>::update_density() {
   layout_.build(carrier_position(), parameters_.support_radius, Gathered<double>{mass_, &in.mass},
                 Gathered<double>{temperature_, &slot_temperature_},
                 Gathered<double>{spin_, &in.spin},
-                Gathered<double>{rest_density_, &slot_rest_density_},
-                Gathered<double>{theta_factor_, &slot_theta_factor_});
+                Gathered{[&](std::size_t c) { return parameters_.rest_density(is_superfluid(c)); },
+                         &slot_rest_density_},
+                Gathered{[&](std::size_t c) { return theta_factor(c); }, &slot_theta_factor_});
   in.moves = layout_.in(state_.superfluid, state_.normal);
   in.viscous = layout_.in(state_.normal, state_.wall);
   dissipation_inputs_.superfluid = layout_.in(state_.superfluid);

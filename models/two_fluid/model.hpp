@@ -169,7 +169,16 @@ private:
   SlotLayout<D> layout_;
 
   bool constants_valid_ = false;
-  std::vector<double> mass_, temperature_, spin_, rest_density_, theta_factor_;
+  std::vector<double> mass_, temperature_, spin_;
+  // A carrier's phase, from the layout's sets (own particles and ghosts alike; valid once the
+  // layout took the sets' sizes: while it builds).
+  bool is_superfluid(std::size_t carrier) const {
+    return layout_.set_of_carrier(carrier) % layout_.sets().size() ==
+           layout_.index_of(state_.superfluid);
+  }
+  // Eq. (41): sigma = C_e S(T) / rho_ref; theta' / rho = sigma for the superfluid (28) and
+  // -sigma rho_s / rho_n for the normal fluid (sec. IV.3); zero for the walls.
+  double theta_factor(std::size_t carrier) const;
   bool density_valid_ = false;
   PairSums<Arith, 1> number_density_sums_;
   ImpulseInputs inputs_; // by slot

@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <tuple>
 
 namespace revsph::two_fluid {
 
@@ -76,6 +77,13 @@ struct ImpulseTerm {
   bool spin_on;
   bool thermomechanical_difference = false;
   std::span<const double> temperature = {}; // T by slot, for the difference form
+  // The per-slot inputs pair() reads at a partner: a distributed run copies the ghosts' from
+  // their owners (core/pair_sum.hpp; those a per-slot sum made are there already, the rest the
+  // model fills from own particles' state).
+  auto slot_inputs() const {
+    return std::tie(in.mass, in.volume, in.phase_volume, in.density, in.pressure,
+                    in.temperature_term, in.thermomechanical, in.spin, temperature);
+  }
   // Rigid walls (rigid_walls.hpp) take their impulses too, never applied: the model counts the
   // work the turning walls do on the fluid through them.
   bool walls_receive = false;

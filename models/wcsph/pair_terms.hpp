@@ -18,6 +18,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <tuple>
 
 namespace revsph::wcsph {
 
@@ -89,6 +90,8 @@ struct ShepardTerm {
   const CoordinateArrays<D>& velocity; // by slot
   SlotInSet fluid;
 
+  // Filled from the fluid's own velocities: a distributed run copies the ghosts' in.
+  auto slot_inputs() const { return std::tie(velocity); }
   bool receives(std::uint32_t s) const { return fluid(s); }
   void pair(const PairGeometry<D>& p, std::array<double, D + 1>& to_a,
             std::array<double, D + 1>& to_b) const {

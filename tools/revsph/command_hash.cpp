@@ -1,3 +1,4 @@
+#include "core/distributed/processes.hpp"
 #include "core/progress.hpp"
 #include "core/run_loop.hpp"
 #include "core/snapshot_file.hpp"
@@ -32,14 +33,20 @@ int hash_command(const HashOptions& options) {
   ProgressReporter progress(stderr, "hash", simulation.steps_taken() + steps, simulation.info().dt,
                             loaded.settings.progress_interval);
   RunHooks hooks;
-  hooks.progress = steps > 0 ? &progress : nullptr;
+  hooks.progress = steps > 0 && distributed::process_rank() == 0 ? &progress : nullptr;
   try {
     run_steps(simulation, steps, hooks);
   } catch (const SimulationFault& fault) {
-    print_error(std::string("the run stopped: ") + fault.what());
-    return simulation_failed;
+    return stop_every_process(std::string("the run stopped: ") + fault.what(), simulation_failed);
   }
-  std::cout << state_hash(simulation.borrow_state()) << "\n";
+  // In a distributed run every process holds a piece; each gets the whole state's hash, process
+  // 0 prints it.
+  const std::vector<SetRows> pieces = simulation.own_rows();
+  const std::string hash = pieces.empty() ? state_hash(simulation.borrow_state())
+                                          : state_hash(simulation.borrow_state(), pieces);
+  if (distributed::process_rank() == 0) {
+    std::cout << hash << "\n";
+  }
   return success;
 }
 

@@ -1,5 +1,7 @@
 #include "tools/revsph/common.hpp"
 
+#include "core/distributed/processes.hpp"
+
 #include "core/threads.hpp"
 #include "verify/snapshot_check.hpp"
 
@@ -153,8 +155,21 @@ void apply_thread_count(int threads) {
   }
 }
 
+int stop_every_process(const std::string& message, int status) {
+  if (distributed::process_count() > 1) {
+    std::cerr << "revsph: error: " << message << "\n" << std::flush;
+    distributed::end_every_process(status);
+  }
+  print_error(message);
+  return status;
+}
+
 void print_error(const std::string& message) {
-  std::cerr << "revsph: error: " << message << "\n";
+  // Every process of a distributed run meets the same error (the same input, the same state):
+  // one line, from the first.
+  if (distributed::process_rank() == 0) {
+    std::cerr << "revsph: error: " << message << "\n";
+  }
 }
 
 void print_setup_report(const SimulationInfo& info) {

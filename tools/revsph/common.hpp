@@ -57,6 +57,10 @@ void apply_thread_count(int threads);
 
 // "revsph: error: <message>" on stderr.
 void print_error(const std::string& message);
+// A failure only this process may have met (a fault in its own particles): one line and, in a
+// distributed run, the end of every process at once with `status` (none must wait for this one
+// in an exchange); otherwise returns `status`.
+int stop_every_process(const std::string& message, int status);
 
 // "setup: NAME = VALUE" for each entry of SimulationInfo::setup_report (stdout).
 void print_setup_report(const SimulationInfo& info);

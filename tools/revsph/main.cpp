@@ -109,18 +109,8 @@ void record_given(const CaseOptionHandles& handles, CaseOptions& options) {
 } // namespace
 
 int main(int argc, char** argv) {
-  // The processes of an MPI launch (one without MPI). Until the distributed run is built
-  // (docs/design/distributed.md), more than one process would run the same case side by side
-  // into the same files: refused.
+  // The processes of an MPI launch (one without MPI).
   revsph::distributed::ProcessSession session(argc, argv);
-  if (revsph::distributed::process_count() > 1) {
-    if (revsph::distributed::process_rank() == 0) {
-      std::cerr << "revsph: error: started on " << revsph::distributed::process_count()
-                << " processes; distributed runs are not built yet (docs/design/distributed.md): "
-                   "start one process\n";
-    }
-    return bad_input;
-  }
   CLI::App app{"revsph: smoothed particle hydrodynamics whose simulations are bitwise reversible.\n"
                "Run forward, reverse the velocities, run forward again: every bit of the initial\n"
                "state comes back."};
@@ -235,6 +225,14 @@ int main(int argc, char** argv) {
     return status == 0 ? success : bad_input;
   }
 
+  // The distributed run (docs/design/distributed.md) is built for `hash` so far: the other
+  // commands would run the same case side by side on every process into the same files.
+  if (revsph::distributed::process_count() > 1 && !*hash_app && !*cases_app) {
+    print_error("started on " + std::to_string(revsph::distributed::process_count()) +
+                " processes; only `revsph hash` runs distributed so far "
+                "(docs/design/distributed.md): start one process");
+    return bad_input;
+  }
   try {
     revsph::fixedpoint::require_round_to_nearest();
     if (*run_app) {
@@ -274,11 +272,9 @@ int main(int argc, char** argv) {
     print_error(error.what());
     return bad_input;
   } catch (const revsph::SimulationFault& fault) {
-    print_error(std::string("the run stopped: ") + fault.what());
-    return simulation_failed;
+    return stop_every_process(std::string("the run stopped: ") + fault.what(), simulation_failed);
   } catch (const std::exception& error) {
-    print_error(error.what());
-    return simulation_failed;
+    return stop_every_process(error.what(), simulation_failed);
   }
   return success;
 }
