@@ -21,6 +21,8 @@ import subprocess
 import tempfile
 import time
 
+from markdown_record import emit
+
 
 def rate(binary, case, steps, threads, sets, work):
     out = os.path.join(work, "run")
@@ -73,11 +75,7 @@ def main():
     for case, threads, a, a_lo, a_hi, b, b_lo, b_hi, ratio, same in rows:
         lines.append(f"| {case} | {threads} | {a:.3e} ({a_lo:.2e}-{a_hi:.2e}) | {b:.3e} "
                      f"({b_lo:.2e}-{b_hi:.2e}) | {ratio:.3f} | {same} |")
-    text = "\n".join(lines) + "\n"
-    print(text)
-    if args.output:
-        with open(args.output, "w") as f:
-            f.write(text)
+    emit(lines, args.output)
 
 
 if __name__ == "__main__":

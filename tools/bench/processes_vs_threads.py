@@ -16,6 +16,8 @@ import statistics
 import subprocess
 import time
 
+from markdown_record import emit
+
 
 def timed(revsph, case, steps, processes, threads, sets):
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
@@ -67,11 +69,7 @@ def main():
                      f"{', '.join(f'{s:.3f}' for s in seconds[layout])} | {rate:.3g} | "
                      f"{first / median:.3f} |")
     lines += ["", f"final hashes over every run: {len(hashes)} distinct ({', '.join(h[:16] for h in sorted(hashes))})"]
-    text = "\n".join(lines) + "\n"
-    print(text)
-    if args.output:
-        with open(args.output, "w") as f:
-            f.write(text)
+    emit(lines, args.output)
 
 
 if __name__ == "__main__":
