@@ -254,6 +254,17 @@ public:
       throw std::logic_error("restoring one process's piece of a distributed state is not built "
                              "yet (docs/design/distributed.md)");
     }
+    if (distribution_) {
+      // The whole state back in every process's fields (sized as at setup), then each keeps its
+      // region's share again.
+      for_each_set(model_.state(), [&](auto& set) {
+        for (const ParticleCount& whole : info_.particles) {
+          if (whole.particle_set == std::remove_cvref_t<decltype(set)>::set.name) {
+            resize_set(set, whole.count);
+          }
+        }
+      });
+    }
     revsph::restore_state(model_.state(), snapshot);
     if (distribution_) {
       distribution_->redistribute(model_.state());

@@ -15,8 +15,12 @@ int hash_command(const HashOptions& options) {
   const bool snapshot_given =
       is_hdf5_file(case_options.case_path) || case_options.case_path.ends_with(".h5");
   if (snapshot_given && !options.steps && !options.t_end) {
-    // The hash of the snapshot itself (checked against the one recorded in it).
-    std::cout << state_hash(read_checked_snapshot(case_options.case_path).state) << "\n";
+    // The hash of the snapshot itself (checked against the one recorded in it); every process
+    // of a distributed launch reads it, the first prints it.
+    const std::string hash = state_hash(read_checked_snapshot(case_options.case_path).state);
+    if (distributed::process_rank() == 0) {
+      std::cout << hash << "\n";
+    }
     return success;
   }
   if (snapshot_given) {

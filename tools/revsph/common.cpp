@@ -157,7 +157,10 @@ void apply_thread_count(int threads) {
 
 int stop_every_process(const std::string& message, int status) {
   if (distributed::process_count() > 1) {
-    std::cerr << "revsph: error: " << message << "\n" << std::flush;
+    // One write of the whole line: several processes may fail in the same step.
+    const std::string line = "revsph: error: " + message + "\n";
+    std::fwrite(line.data(), 1, line.size(), stderr);
+    std::fflush(stderr);
     distributed::end_every_process(status);
   }
   print_error(message);
