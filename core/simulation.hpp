@@ -250,24 +250,10 @@ public:
   StateSnapshot capture_state() override { return revsph::capture_state(model_.state()); }
   StateSnapshot borrow_state() override { return revsph::borrow_state(model_.state()); }
   void restore_state(const StateSnapshot& snapshot) override {
-    if (distribution_ && !holds_whole_state(snapshot)) {
-      throw std::logic_error("restoring one process's piece of a distributed state is not built "
-                             "yet (docs/design/distributed.md)");
-    }
     if (distribution_) {
-      // The whole state back in every process's fields (sized as at setup), then each keeps its
-      // region's share again.
-      for_each_set(model_.state(), [&](auto& set) {
-        for (const ParticleCount& whole : info_.particles) {
-          if (whole.particle_set == std::remove_cvref_t<decltype(set)>::set.name) {
-            resize_set(set, whole.count);
-          }
-        }
-      });
-    }
-    revsph::restore_state(model_.state(), snapshot);
-    if (distribution_) {
-      distribution_->redistribute(model_.state());
+      distribution_->restore_whole(model_.state(), snapshot);
+    } else {
+      revsph::restore_state(model_.state(), snapshot);
     }
     model_.invalidate_derived();
   }
@@ -399,16 +385,6 @@ private:
       fault.particle = distribution_->global_index(fault.particle_set, fault.particle);
     }
     return fault;
-  }
-  bool holds_whole_state(const StateSnapshot& snapshot) const {
-    for (const ParticleCount& set : info_.particles) {
-      for (const auto& field : snapshot.fields) {
-        if (field.info.particle_set == set.particle_set && field.count != set.count) {
-          return false;
-        }
-      }
-    }
-    return true;
   }
 
   using StateOf = std::remove_cvref_t<decltype(std::declval<M&>().state())>;

@@ -33,11 +33,8 @@ SlotLayout<D>::SlotLayout(const Box<D>& domain, double cell_size, std::vector<Ca
 
 template <int D>
 std::pair<const char*, std::size_t> SlotLayout<D>::particle_of_carrier(std::size_t carrier) const {
-  // A ghost as particle_in_slot numbers it: its set's own count plus its index among the ghosts.
-  const std::size_t part = set_of_carrier(carrier);
-  const std::size_t set = part % sets_.size();
-  const std::size_t before = part == set ? 0 : sets_[set].count;
-  return {sets_[set].name.c_str(), before + carrier - first_carrier_[part]};
+  const SetParticle particle = particle_of(carrier);
+  return {sets_[particle.set].name.c_str(), particle.index};
 }
 
 template <int D>

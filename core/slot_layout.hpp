@@ -156,12 +156,11 @@ public:
   // asking which set an index falls in. A ghost slot's index is its set's own count plus its
   // index among the ghosts: StateField::at reads it there (core/state_field.hpp).
   SetParticle particle_in_slot(std::size_t slot) const {
-    const std::size_t carrier = cells_.sorted_points()[slot];
-    const std::size_t part = set_of_slot_[slot];
-    const std::size_t set = part % sets_.size();
-    const std::size_t before = part == set ? 0 : sets_[set].count;
-    return {static_cast<std::uint32_t>(set),
-            static_cast<std::uint32_t>(before + carrier - first_carrier_[part])};
+    return particle_in_part(set_of_slot_[slot], cells_.sorted_points()[slot]);
+  }
+  // The same for a carrier.
+  SetParticle particle_of(std::size_t carrier) const {
+    return particle_in_part(set_of_carrier(carrier), carrier);
   }
   // A per-slot array read in one set's particle order: values[i] is the value of the set's
   // particle i (a density or a mass for an output, without a copy in canonical order).
@@ -213,6 +212,14 @@ public:
   std::pair<const char*, std::size_t> particle_of_carrier(std::size_t carrier) const;
 
 private:
+  // `carrier` of part `part` (a set, or a set's ghosts) as its set and index in the set.
+  SetParticle particle_in_part(std::size_t part, std::size_t carrier) const {
+    const std::size_t set = part % sets_.size();
+    const std::size_t before = part == set ? 0 : sets_[set].count;
+    return {static_cast<std::uint32_t>(set),
+            static_cast<std::uint32_t>(before + carrier - first_carrier_[part])};
+  }
+
   std::vector<CarrierSet> sets_;
   // One per set, then one per set's ghosts, then the total.
   std::vector<std::size_t> first_carrier_;

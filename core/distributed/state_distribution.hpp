@@ -18,11 +18,13 @@
 #include "core/distributed/set_rows.hpp"
 #include "core/distributed/spatial_partition.hpp"
 #include "core/particle_sets.hpp"
+#include "core/state_snapshot.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -140,9 +142,21 @@ public:
     return remade;
   }
 
-  // The whole state was put back into every process's fields (a restored snapshot): each keeps
-  // its region's particles again, with fresh ghosts (collective).
-  void redistribute(State& state) {
+  // A snapshot of the whole state restored on every process: the fields take the whole state
+  // again, then each process keeps its region's share, with fresh ghosts (collective). Throws
+  // std::logic_error for a snapshot of one process's piece (not restorable yet).
+  void restore_whole(State& state, const StateSnapshot& snapshot) {
+    for (const FieldSnapshot& field : snapshot.fields) {
+      for (const Pieces& pieces : pieces_) {
+        if (field.info.particle_set == pieces.name && field.count != pieces.total) {
+          throw std::logic_error("restoring one process's piece of a distributed state is not "
+                                 "built yet (docs/design/distributed.md)");
+        }
+      }
+    }
+    std::size_t k = 0;
+    for_each_set(state, [&](auto& set) { resize_set(set, pieces_[k++].total); });
+    revsph::restore_state(state, snapshot);
     keep_own_particles(state);
     remake_ghost_lists(state);
     refresh_ghosts(state);
@@ -252,14 +266,17 @@ private:
     const auto d = static_cast<std::size_t>(dimension_);
     for_each_set(state, [&](auto& set) {
       const Pieces& pieces = pieces_[k++];
-      if (!pieces.has_position) {
+      const auto* position = detail::position_field(set);
+      if (position == nullptr) {
         return;
       }
-      const std::vector<double> now = detail::points_of(*detail::position_field(set));
-      for (std::size_t i = 0; i * d < now.size(); ++i) {
+      // Read in place: this runs after every sub-step.
+      for (std::size_t i = 0; i < position->count(); ++i) {
         double squared = 0.0;
         for (std::size_t a = 0; a < d; ++a) {
-          const double step = now[i * d + a] - pieces.points_at_lists[i * d + a];
+          const double now =
+              detail::real_value(position->at(static_cast<int>(a), i), position->info().scale);
+          const double step = now - pieces.points_at_lists[i * d + a];
           squared += step * step;
         }
         largest = std::max(largest, squared);

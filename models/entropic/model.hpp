@@ -107,15 +107,11 @@ private:
   // Gathered (read while the layout builds, after it took the sets' new sizes).
   auto held_temperature() const {
     return [this](std::size_t carrier) {
-      const std::size_t thermal = layout_.index_of(state_.thermal);
-      const std::size_t part = layout_.set_of_carrier(carrier);
+      const SetParticle particle = layout_.particle_of(carrier);
       const auto& held = state_.thermal.temperature;
-      if (part % layout_.sets().size() != thermal) {
-        return 0.0;
-      }
-      const std::size_t index = carrier - layout_.first_carrier(part);
-      return fixedpoint::to_real(part == thermal ? held.at(0, index) : held.ghost_at(0, index),
-                                 held.info().scale);
+      return particle.set != layout_.index_of(state_.thermal)
+                 ? 0.0
+                 : fixedpoint::to_real(held.at(0, particle.index), held.info().scale);
     };
   }
   std::size_t gas_count() const { return state_.gas.position.count(); }
