@@ -147,10 +147,15 @@ public:
   // and step if a value overflows, turns non-finite or leaves the domain.
   virtual void advance(std::int64_t steps) = 0;
   virtual void reverse_time() = 0;
+  // In a distributed run (more than one process, docs/design/distributed.md) a state snapshot
+  // holds this process's rows and says which (StateSnapshot::pieces); a hash, a comparison or a
+  // snapshot file of it sees the whole state.
   virtual StateSnapshot capture_state() = 0;
   // The state without a copy of its fixed-point fields (revsph::borrow_state): valid only until
   // the state changes (for a snapshot write or a hash).
   virtual StateSnapshot borrow_state() = 0;
+  // A whole state (a snapshot file's), or one captured by this run's processes in pieces (any
+  // decomposition: each process gets its region's particles again).
   virtual void restore_state(const StateSnapshot& snapshot) = 0;
   virtual EnergyBudget energy() = 0;
   // Hands the physical views to `sink` one by one (see ViewSink).
@@ -164,11 +169,6 @@ public:
   // Single sub-steps, to check each one's reversibility on its own.
   virtual std::vector<std::string> substep_names() const = 0;
   virtual void apply_substep(std::size_t index, double dt) = 0;
-
-  // In a distributed run (more than one process, docs/design/distributed.md), which rows of each
-  // set this process holds: capture_state() and borrow_state() give those rows only. Empty when
-  // this process holds the whole state.
-  virtual std::vector<SetRows> own_rows() const = 0;
 
   std::int64_t steps_taken() const { return steps_taken_; }
   double time() const { return time_at(steps_taken_); }
@@ -247,18 +247,22 @@ public:
     }
     refresh_pieces();
   }
-  StateSnapshot capture_state() override { return revsph::capture_state(model_.state()); }
-  StateSnapshot borrow_state() override { return revsph::borrow_state(model_.state()); }
+  StateSnapshot capture_state() override {
+    return with_pieces(revsph::capture_state(model_.state()));
+  }
+  StateSnapshot borrow_state() override {
+    return with_pieces(revsph::borrow_state(model_.state()));
+  }
   void restore_state(const StateSnapshot& snapshot) override {
     if (distribution_) {
-      distribution_->restore_whole(model_.state(), snapshot);
+      distribution_->restore(model_.state(), snapshot);
+    } else if (!snapshot.pieces.empty()) {
+      throw std::invalid_argument("a piece of a distributed state cannot be restored by one "
+                                  "process holding the whole state");
     } else {
       revsph::restore_state(model_.state(), snapshot);
     }
     model_.invalidate_derived();
-  }
-  std::vector<SetRows> own_rows() const override {
-    return distribution_ ? distribution_->own_rows() : std::vector<SetRows>{};
   }
   EnergyBudget energy() override {
     return attributing_faults([&] { return model_.energy(); });
@@ -377,6 +381,13 @@ private:
     if (distribution_ && distribution_->refresh(model_.state())) {
       model_.invalidate_derived();
     }
+  }
+  // In a distributed run, a snapshot of this process's rows says which they are.
+  StateSnapshot with_pieces(StateSnapshot snapshot) const {
+    if (distribution_) {
+      snapshot.pieces = distribution_->own_rows();
+    }
+    return snapshot;
   }
   // A fault names its particle by its index on this process: in a distributed run, by its index
   // in the whole state instead.

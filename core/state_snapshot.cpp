@@ -4,8 +4,7 @@
 
 namespace revsph {
 
-double FieldSnapshot::real(int component, std::size_t particle) const {
-  const std::int64_t raw = at(component, particle);
+double FieldSnapshot::real_of(std::int64_t raw) const {
   if (kind == RawKind::ieee_double) {
     return std::bit_cast<double>(raw);
   }
@@ -25,6 +24,26 @@ const FieldSnapshot* StateSnapshot::find(const std::string& particle_set,
 FieldSnapshot* StateSnapshot::find(const std::string& particle_set, const std::string& name) {
   const auto* self = this;
   return const_cast<FieldSnapshot*>(self->find(particle_set, name));
+}
+
+const SetRows* StateSnapshot::rows_of(const std::string& particle_set) const {
+  for (const SetRows& rows : pieces) {
+    if (rows.set == particle_set) {
+      return &rows;
+    }
+  }
+  return nullptr;
+}
+
+std::uint64_t whole_count(const StateSnapshot& state, const FieldSnapshot& field) {
+  if (state.pieces.empty()) {
+    return field.count;
+  }
+  const SetRows* rows = state.rows_of(field.info.particle_set);
+  if (rows == nullptr) {
+    throw std::invalid_argument("no rows of particle set " + field.info.particle_set);
+  }
+  return rows->total;
 }
 
 void require_same_layout(const FieldSnapshot& expected, const FieldSnapshot& found) {

@@ -6,6 +6,7 @@
 // (core/particle_sets.hpp).
 
 #include "core/arithmetic.hpp"
+#include "core/distributed/set_rows.hpp"
 #include "core/particle_sets.hpp"
 #include "core/state_field.hpp"
 
@@ -38,11 +39,23 @@ struct FieldSnapshot {
     return raw()[static_cast<std::size_t>(component) * count + particle];
   }
   // The physical value of one entry.
-  double real(int component, std::size_t particle) const;
+  double real(int component, std::size_t particle) const {
+    return real_of(at(component, particle));
+  }
+  // The physical value of a raw value of this field.
+  double real_of(std::int64_t raw) const;
 };
 
 struct StateSnapshot {
   std::vector<FieldSnapshot> fields;
+  // A state held in pieces (a distributed run, docs/design/distributed.md): which rows of each
+  // set this process's fields hold. Empty when the fields hold the whole state. Whatever takes a
+  // snapshot with pieces (a hash, a comparison, a snapshot file) sees the whole state through
+  // them, collectively.
+  std::vector<SetRows> pieces;
+
+  // This process's rows of `particle_set`, or null if the snapshot holds the whole state.
+  const SetRows* rows_of(const std::string& particle_set) const;
 
   const FieldSnapshot* find(const std::string& particle_set, const std::string& name) const;
   FieldSnapshot* find(const std::string& particle_set, const std::string& name);
@@ -94,6 +107,10 @@ StateSnapshot borrow_state(State& state) {
   });
   return snapshot;
 }
+
+// The particles of `field`'s set over every process: its count, or the set's total when `state`
+// holds this process's rows only (StateSnapshot::pieces).
+std::uint64_t whole_count(const StateSnapshot& state, const FieldSnapshot& field);
 
 // Throws std::invalid_argument if the snapshot does not have the same declared fields
 // (set, name, components, scale, raw kind) in the same order.

@@ -1,11 +1,14 @@
 #include "verify/state_compare.hpp"
 
+#include "core/distributed/records_of_every_process.hpp"
 #include "fixedpoint/exact_sum.hpp"
+#include "verify/aligned_states.hpp"
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 namespace revsph {
@@ -37,61 +40,128 @@ std::uint64_t units_in_last_place(const FieldSnapshot& field, std::int64_t a, st
   return magnitude > int128{largest} ? largest : static_cast<std::uint64_t>(magnitude);
 }
 
-StateComparison compare_states(const StateSnapshot& expected, const StateSnapshot& actual) {
-  StateComparison result;
-  if (expected.fields.size() != actual.fields.size()) {
-    result.identical = false;
-    result.layout_error = "the states have different numbers of variables";
-    return result;
-  }
-  for (std::size_t f = 0; f < expected.fields.size(); ++f) {
-    const FieldSnapshot& e = expected.fields[f];
-    const FieldSnapshot& a = actual.fields[f];
-    try {
-      require_same_layout(e, a);
-    } catch (const std::invalid_argument& error) {
-      result.identical = false;
-      result.layout_error = error.what();
-      return result;
-    }
-    VariableDifference difference{e.info.particle_set, e.info.name, 0, e.raw().size(), 0, 0.0,
-                                  e.info.unit,         {}};
-    for (std::size_t i = 0; i < e.count; ++i) {
-      for (int c = 0; c < e.info.components; ++c) {
-        const std::int64_t expected_bits = e.at(c, i);
-        const std::int64_t actual_bits = a.at(c, i);
-        if (expected_bits == actual_bits) {
-          continue;
-        }
-        const ValueLocation location{e.info.particle_set,
-                                     e.info.name + component_suffix(e, c),
-                                     i,
-                                     c,
-                                     expected_bits,
-                                     actual_bits,
-                                     e.real(c, i),
-                                     a.real(c, i),
-                                     e.info.unit};
-        if (!result.first_difference) {
-          result.first_difference = location;
-        }
-        ++difference.differing_values;
-        const std::uint64_t ulps = units_in_last_place(e, expected_bits, actual_bits);
-        if (ulps > difference.max_units_in_last_place) {
-          difference.max_units_in_last_place = ulps;
-          difference.worst = location;
-        }
-        const double abs_difference = std::fabs(e.real(c, i) - a.real(c, i));
-        if (abs_difference > difference.max_abs_difference || std::isnan(abs_difference)) {
-          difference.max_abs_difference = abs_difference;
-        }
+namespace {
+
+// What one process finds about one variable on its rows: numbers only, so that the processes of
+// a distributed run can send them to each other and combine them (`then`) in index order.
+struct RawLocation {
+  std::uint64_t particle = 0;
+  std::int64_t component = 0;
+  std::int64_t expected = 0;
+  std::int64_t actual = 0;
+};
+struct VariableFindings {
+  std::uint64_t differing_values = 0;
+  std::uint64_t max_units_in_last_place = 0;
+  double max_abs_difference = 0.0;
+  std::uint64_t has_first = 0;
+  RawLocation first;
+  RawLocation worst; // the first value reaching max_units_in_last_place
+};
+
+VariableFindings compare_variable(const FieldSnapshot& e, const FieldSnapshot& a,
+                                  std::uint64_t first_index) {
+  VariableFindings found;
+  for (std::size_t i = 0; i < e.count; ++i) {
+    for (int c = 0; c < e.info.components; ++c) {
+      const std::int64_t expected_bits = e.at(c, i);
+      const std::int64_t actual_bits = a.at(c, i);
+      if (expected_bits == actual_bits) {
+        continue;
+      }
+      const RawLocation location{first_index + i, c, expected_bits, actual_bits};
+      if (found.has_first == 0) {
+        found.has_first = 1;
+        found.first = location;
+      }
+      ++found.differing_values;
+      const std::uint64_t ulps = units_in_last_place(e, expected_bits, actual_bits);
+      if (ulps > found.max_units_in_last_place) {
+        found.max_units_in_last_place = ulps;
+        found.worst = location;
+      }
+      const double abs_difference = std::fabs(e.real(c, i) - a.real(c, i));
+      if (abs_difference > found.max_abs_difference || std::isnan(abs_difference)) {
+        found.max_abs_difference = abs_difference;
       }
     }
-    result.compared_values += e.raw().size();
-    if (difference.differing_values > 0) {
-      result.identical = false;
-      result.differences.push_back(std::move(difference));
+  }
+  return found;
+}
+
+// `earlier`'s rows all precede `later`'s in index order.
+void then(VariableFindings& earlier, const VariableFindings& later) {
+  if (earlier.has_first == 0 && later.has_first != 0) {
+    earlier.has_first = 1;
+    earlier.first = later.first;
+  }
+  earlier.differing_values += later.differing_values;
+  if (later.max_units_in_last_place > earlier.max_units_in_last_place) {
+    earlier.max_units_in_last_place = later.max_units_in_last_place;
+    earlier.worst = later.worst;
+  }
+  if (later.max_abs_difference > earlier.max_abs_difference ||
+      std::isnan(later.max_abs_difference)) {
+    earlier.max_abs_difference = later.max_abs_difference;
+  }
+}
+
+ValueLocation located(const FieldSnapshot& field, const RawLocation& at) {
+  const int c = static_cast<int>(at.component);
+  return ValueLocation{field.info.particle_set,
+                       field.info.name + component_suffix(field, c),
+                       at.particle,
+                       c,
+                       at.expected,
+                       at.actual,
+                       field.real_of(at.expected),
+                       field.real_of(at.actual),
+                       field.info.unit};
+}
+
+} // namespace
+
+StateComparison compare_states(const StateSnapshot& expected, const StateSnapshot& actual) {
+  StateComparison result;
+  std::optional<AlignedStates> aligned;
+  try {
+    aligned.emplace(expected, actual);
+  } catch (const std::invalid_argument& error) {
+    result.identical = false;
+    result.layout_error = error.what();
+    return result;
+  }
+  const std::vector<FieldSnapshot>& e = aligned->expected().fields;
+  const std::vector<FieldSnapshot>& a = aligned->actual().fields;
+  std::vector<VariableFindings> found;
+  for (std::size_t f = 0; f < e.size(); ++f) {
+    found.push_back(compare_variable(e[f], a[f], aligned->first_index(e[f])));
+  }
+  if (aligned->in_pieces()) {
+    // Every process's findings, combined in rank order: index order.
+    const std::vector<VariableFindings> all =
+        distributed::records_of_every_process(std::span<const VariableFindings>(found));
+    found.assign(e.size(), VariableFindings{});
+    for (std::size_t n = 0; n < all.size(); ++n) {
+      then(found[n % e.size()], all[n]);
     }
+  }
+  for (std::size_t f = 0; f < e.size(); ++f) {
+    const std::uint64_t values =
+        static_cast<std::uint64_t>(whole_count(aligned->expected(), e[f])) *
+        static_cast<std::uint64_t>(e[f].info.components);
+    result.compared_values += values;
+    const VariableFindings& v = found[f];
+    if (v.differing_values == 0) {
+      continue;
+    }
+    if (!result.first_difference) {
+      result.first_difference = located(e[f], v.first);
+    }
+    result.identical = false;
+    result.differences.push_back(VariableDifference{
+        e[f].info.particle_set, e[f].info.name, v.differing_values, values,
+        v.max_units_in_last_place, v.max_abs_difference, e[f].info.unit, located(e[f], v.worst)});
   }
   return result;
 }

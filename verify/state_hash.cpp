@@ -80,23 +80,19 @@ void add_values(Sha256& sha, std::span<const std::int64_t> values) {
 
 std::string state_hash(const StateSnapshot& state) {
   Sha256 sha;
-  for (const FieldSnapshot& field : state.fields) {
-    add_layout(sha, field, field.count);
-    add_values(sha, field.raw());
+  if (state.pieces.empty()) {
+    for (const FieldSnapshot& field : state.fields) {
+      add_layout(sha, field, field.count);
+      add_values(sha, field.raw());
+    }
+    return sha.hex_digest();
   }
-  return sha.hex_digest();
-}
-
-std::string state_hash(const StateSnapshot& local, std::span<const SetRows> sets) {
   // Component-major, like the one-process hash: each component streamed in index order to
   // process 0, which alone hashes (the others' digest is discarded).
   constexpr std::size_t chunk = std::size_t{1} << 16;
-  Sha256 sha;
-  for (const FieldSnapshot& field : local.fields) {
-    const auto rows = std::find_if(sets.begin(), sets.end(), [&field](const SetRows& candidate) {
-      return candidate.set == field.info.particle_set;
-    });
-    if (rows == sets.end() || rows->indices.size() != field.count) {
+  for (const FieldSnapshot& field : state.fields) {
+    const SetRows* rows = state.rows_of(field.info.particle_set);
+    if (rows == nullptr || rows->indices.size() != field.count) {
       throw std::invalid_argument("state_hash: no rows of particle set " + field.info.particle_set +
                                   " for field " + field.info.name);
     }

@@ -3,20 +3,15 @@
 // name, components, count, scale exponent, raw kind) followed by its raw integers in little-endian
 // byte order. Two states have the same hash exactly when they are bit for bit the same.
 
-#include "core/distributed/set_rows.hpp"
 #include "core/state_snapshot.hpp"
 
-#include <cstdint>
-#include <span>
 #include <string>
 
 namespace revsph {
 
+// A state held in pieces (StateSnapshot::pieces, a distributed run) hashes like the whole state:
+// every process returns the hash a one-process run computes (collective; each component is
+// streamed to process 0 in global-index order, so no process holds the whole state).
 std::string state_hash(const StateSnapshot& state);
-
-// The same hash of a state the processes hold in pieces (docs/design/distributed.md, piece 8):
-// `local` has this process's rows of every field, `sets` says which. Every process returns the
-// hash of the whole state, the one a one-process run computes (collective).
-std::string state_hash(const StateSnapshot& local, std::span<const SetRows> sets);
 
 } // namespace revsph

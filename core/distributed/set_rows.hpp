@@ -4,8 +4,8 @@
 // to put the pieces back in the run's canonical order.
 
 #include <cstdint>
-#include <span>
 #include <string>
+#include <vector>
 
 namespace revsph {
 
@@ -13,7 +13,7 @@ namespace revsph {
 // particle count over every process.
 struct SetRows {
   std::string set;
-  std::span<const std::uint64_t> indices;
+  std::vector<std::uint64_t> indices;
   std::uint64_t total = 0;
 };
 

@@ -142,22 +142,32 @@ public:
     return remade;
   }
 
-  // A snapshot of the whole state restored on every process: the fields take the whole state
-  // again, then each process keeps its region's share, with fresh ghosts (collective). Throws
-  // std::logic_error for a snapshot of one process's piece (not restorable yet).
-  void restore_whole(State& state, const StateSnapshot& snapshot) {
-    for (const FieldSnapshot& field : snapshot.fields) {
-      for (const Pieces& pieces : pieces_) {
-        if (field.info.particle_set == pieces.name && field.count != pieces.total) {
-          throw std::logic_error("restoring one process's piece of a distributed state is not "
-                                 "built yet (docs/design/distributed.md)");
-        }
-      }
-    }
+  // A snapshot restored (collective): either the whole state on every process (a snapshot
+  // file's) or pieces captured by this run's processes in any decomposition
+  // (StateSnapshot::pieces). Each process then keeps its region's particles, with fresh ghosts.
+  // Throws std::invalid_argument for a snapshot whose sets' sizes are not this state's.
+  void restore(State& state, const StateSnapshot& snapshot) {
     std::size_t k = 0;
-    for_each_set(state, [&](auto& set) { resize_set(set, pieces_[k++].total); });
+    for_each_set(state, [&](auto& set) {
+      Pieces& pieces = pieces_[k++];
+      std::size_t rows = pieces.total;
+      if (!snapshot.pieces.empty()) {
+        const SetRows* given = snapshot.rows_of(pieces.name);
+        if (given == nullptr || given->total != pieces.total) {
+          throw std::invalid_argument("the snapshot's pieces do not hold particle set " +
+                                      pieces.name + " of this state");
+        }
+        pieces.global = given->indices;
+        rows = given->indices.size();
+      }
+      resize_set(set, rows);
+    });
     revsph::restore_state(state, snapshot);
-    keep_own_particles(state);
+    if (snapshot.pieces.empty()) {
+      keep_own_particles(state);
+    } else {
+      migrate(state);
+    }
     remake_ghost_lists(state);
     refresh_ghosts(state);
   }

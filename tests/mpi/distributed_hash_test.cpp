@@ -1,4 +1,4 @@
-// The state hash of a state held in pieces (verify/state_hash.hpp, the SetRows overload) is the
+// The state hash of a state held in pieces (verify/state_hash.hpp, StateSnapshot::pieces) is the
 // one-process hash of the whole state, on whatever number of processes CTest starts (1, 2, 3):
 // two particle sets of different sizes, fixed-point and double fields of 1 and 2 components, the
 // rows dealt to the processes by a scrambled rule, in chunks smaller and larger than a set.
@@ -75,15 +75,15 @@ TEST(DistributedHash, PiecesHashLikeTheWholeState) {
   const std::vector<std::string> sets{"fluid", "wall"};
   std::vector<std::vector<std::uint64_t>> rows;
   StateSnapshot local = local_part(whole, rows, sets);
-  const std::vector<SetRows> described{{"fluid", rows[0], 150001}, {"wall", rows[1], 3001}};
+  local.pieces = {{"fluid", rows[0], 150001}, {"wall", rows[1], 3001}};
   const std::string expected = state_hash(whole);
-  EXPECT_EQ(state_hash(local, described), expected);
+  EXPECT_EQ(state_hash(local), expected);
   // One bit changed on the last process changes every process's hash.
   if (distributed::process_rank() == distributed::process_count() - 1 &&
       !local.fields[1].bits.empty()) {
     local.fields[1].bits.back() ^= 1;
   }
-  EXPECT_NE(state_hash(local, described), expected);
+  EXPECT_NE(state_hash(local), expected);
 }
 
 } // namespace

@@ -35,6 +35,7 @@ Usage: /usr/bin/python3 tools/plots/two_fluid_rotating_cylinder.py [--make-runs]
   cylinder-interp-grip      cylinder-interp with the wall's friction at L0 and the wall turning
                             rigidly (interpenetrating phases are undiluted already)
   cylinder-interp-grip-320  the same at 320 particles across (about 80 000 fluid particles)
+  cylinder-paper-320        cylinder-paper at 320 particles across (dr halved), to 5 s
 Writes into --out (default docs/figures):
   two_fluid_rotating_cylinder.png  the normal fluid alone against Navier-Stokes; |v| against r at
                                    0.5 s and 5 s; the slope against t; the scan: vortex strength
@@ -103,6 +104,8 @@ GRIP["cylinder-paper-s2"] = ["discretisation.support_radius_over_dr=2.0"]
 GRIP["cylinder-paper-s4"] = ["discretisation.support_radius_over_dr=4.0",
                              "particles[1].outer_radius=1.05e-3"]
 GRIP["cylinder-paper-s2-320"] = [*GRIP["cylinder-paper-s2"], "discretisation.dr=6.25e-6", "run.t_end=2.0"]
+# The case itself (3 dr) at 320 across to 5 s: does the separate phases' rate move with dr?
+GRIP["cylinder-paper-320"] = ["discretisation.dr=6.25e-6"]
 RUNS.update({name: (0.01, 4.76e-9) for name in GRIP})
 RHO_S = RHO - RHO_N
 ALPHA, KAPPA, L0, BETA_V = 0.0968, 9.9693e-8, 1.0e10, 4.76e-9  # the case's mutual friction

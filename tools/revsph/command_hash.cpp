@@ -45,9 +45,7 @@ int hash_command(const HashOptions& options) {
   }
   // In a distributed run every process holds a piece; each gets the whole state's hash, process
   // 0 prints it.
-  const std::vector<SetRows> pieces = simulation.own_rows();
-  const std::string hash = pieces.empty() ? state_hash(simulation.borrow_state())
-                                          : state_hash(simulation.borrow_state(), pieces);
+  const std::string hash = state_hash(simulation.borrow_state());
   if (distributed::process_rank() == 0) {
     std::cout << hash << "\n";
   }

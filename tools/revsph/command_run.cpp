@@ -1,4 +1,5 @@
 #include "core/diagnostics_log.hpp"
+#include "core/distributed/processes.hpp"
 #include "core/energy_log.hpp"
 #include "core/openmp_waiting.hpp"
 #include "core/progress.hpp"
@@ -50,8 +51,10 @@ int run_command(const RunOptions& options) {
   if (!options.out_dir.empty()) {
     // A bad --out is bad input: said before the set-up, which may take long.
     const CaseOptions& given = options.case_options;
-    RunOutput::check_creatable(options.out_dir,
-                               given.from_snapshot.empty() ? given.case_path : given.from_snapshot);
+    check_on_first_process([&] {
+      RunOutput::check_creatable(
+          options.out_dir, given.from_snapshot.empty() ? given.case_path : given.from_snapshot);
+    });
   }
   LoadedCase loaded = load_simulation(options.case_options);
   Simulation& simulation = *loaded.simulation;
@@ -60,7 +63,9 @@ int run_command(const RunOptions& options) {
                                               ? std::filesystem::path("out") / loaded.settings.name
                                               : std::filesystem::path(options.out_dir);
   // Every check is done before the first file is written.
-  RunOutput::check_directory(directory, options.force, loaded.case_file.source_name());
+  check_on_first_process([&] {
+    RunOutput::check_directory(directory, options.force, loaded.case_file.source_name());
+  });
 
   print_header(loaded, steps);
   // A restarted run measures energy against the original run's E(0); a new run's E(0) is its
@@ -69,8 +74,8 @@ int run_command(const RunOptions& options) {
       loaded.from_snapshot ? loaded.from_snapshot->metadata.reference_energy : std::nullopt;
   RunOutput output(directory, run_metadata(simulation, loaded.case_file, reference_energy),
                    loaded.settings.snapshot_every);
-  EnergyLog energy(output.energy_csv().string(), reference_energy);
-  DiagnosticsLog diagnostics((output.directory() / "diagnostics.csv").string());
+  EnergyLog energy(file_of_first_process(output.energy_csv()), reference_energy);
+  DiagnosticsLog diagnostics(file_of_first_process(output.directory() / "diagnostics.csv"));
   ProgressReporter progress(stdout, "run", simulation.steps_taken() + steps, simulation.info().dt,
                             loaded.settings.progress_interval);
   progress.set_time_at_step_zero(simulation.time_at(0));
@@ -84,6 +89,7 @@ int run_command(const RunOptions& options) {
   summary.start_step = simulation.steps_taken();
   summary.steps_requested = steps;
   summary.threads = thread_count();
+  summary.processes = distributed::process_count();
   summary.initial_hash = state_hash(simulation.borrow_state());
 
   RunHooks hooks;
@@ -111,6 +117,11 @@ int run_command(const RunOptions& options) {
   } catch (const SimulationFault& fault) {
     // The state is left half-updated by the failed step: no snapshot of it; the last one
     // written stays the last good state. (Faults carry their step: ModelSimulation.)
+    // In a distributed run the fault is this process's alone and the others may wait for it in
+    // an exchange: it ends them all (docs/design/distributed.md; no summary.json yet).
+    if (distributed::process_count() > 1) {
+      return stop_every_process(std::string("the run stopped: ") + fault.what(), simulation_failed);
+    }
     progress.finish(simulation.steps_taken());
     summary.failure = fault.what();
     print_error(std::string("the run stopped: ") + fault.what());
@@ -129,7 +140,9 @@ int run_command(const RunOptions& options) {
   }
   summary.diagnostics_maxima = diagnostics.maxima();
   summary.diagnostics_minima = diagnostics.minima();
-  write_summary(output.summary_json(), simulation, summary, energy);
+  if (distributed::process_rank() == 0) {
+    write_summary(output.summary_json(), simulation, summary, energy);
+  }
 
   const double steps_done = static_cast<double>(simulation.steps_taken() - summary.start_step);
   std::printf("energy: max |E(t) - E(0)| / max(|E(0)|, |terms|) = %.3e\n",

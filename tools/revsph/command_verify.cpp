@@ -6,6 +6,7 @@
 //     moved, and it passes if its energy budget (which counts what was dissipated and the work of
 //     driven walls) closes within --energy-tolerance over both halves.
 
+#include "core/distributed/processes.hpp"
 #include "core/energy_log.hpp"
 #include "core/progress.hpp"
 #include "core/threads.hpp"
@@ -88,7 +89,8 @@ int verify_command(const VerifyCommandOptions& options) {
   const std::int64_t steps = resolve_steps(loaded, options.steps, options.t_end, true);
   const fs::path out(options.out_dir);
   if (!options.out_dir.empty()) {
-    RunOutput::check_directory(out, options.force, loaded.case_file.source_name());
+    check_on_first_process(
+        [&] { RunOutput::check_directory(out, options.force, loaded.case_file.source_name()); });
   }
   const SimulationInfo& info = simulation.info();
   const bool reversible = info.irreversible_terms.empty();
@@ -121,15 +123,20 @@ int verify_command(const VerifyCommandOptions& options) {
         std::make_unique<RunOutput>(out / "backward", metadata, loaded.settings.snapshot_every);
   }
   output.forward_energy = std::make_unique<EnergyLog>(
-      out.empty() ? std::nullopt : std::optional((out / "forward" / "energy.csv").string()),
+      out.empty() ? std::nullopt : file_of_first_process(out / "forward" / "energy.csv"),
       reference_energy);
   output.backward_energy = std::make_unique<EnergyLog>(
-      out.empty() ? std::nullopt : std::optional((out / "backward" / "energy.csv").string()),
+      out.empty() ? std::nullopt : file_of_first_process(out / "backward" / "energy.csv"),
       reference_energy);
   std::unique_ptr<IrreversibleProbe> probe;
   if (!reversible) {
     probe = std::make_unique<IrreversibleProbe>();
-    probe->particle_set = moving_particle_set(simulation.capture_state());
+    if (distributed::process_count() > 1) {
+      std::cout << "note: no entropy: the speeds' histogram over several processes is not built "
+                   "yet (docs/design/distributed.md)\n";
+    } else {
+      probe->particle_set = moving_particle_set(simulation.capture_state());
+    }
   }
 
   ProgressReporter forward(stdout, "forward ", start + steps, info.dt,
@@ -193,8 +200,7 @@ int verify_command(const VerifyCommandOptions& options) {
   try {
     report = verify_reversibility(simulation, verify);
   } catch (const SimulationFault& fault) {
-    print_error(std::string("the run stopped: ") + fault.what());
-    return simulation_failed;
+    return stop_every_process(std::string("the run stopped: ") + fault.what(), simulation_failed);
   }
   std::cout << "initial state hash:   " << report.initial_hash << "\n"
             << "turning-point hash:   " << report.turning_point_hash << "\n"
@@ -243,7 +249,9 @@ int verify_command(const VerifyCommandOptions& options) {
     summary.irreversible = reversible ? nullptr : &findings;
     summary.verdict = verdict;
     summary.exit_status = status;
-    write_verify_summary(out / "summary.json", summary);
+    if (distributed::process_rank() == 0) {
+      write_verify_summary(out / "summary.json", summary);
+    }
     std::cout << "wrote " << out.string() << "/: forward/, backward/ (energy.csv, snapshots, "
               << "run.xdmf), summary.json\n";
   }

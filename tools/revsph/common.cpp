@@ -1,5 +1,6 @@
 #include "tools/revsph/common.hpp"
 
+#include "core/distributed/index_order_stream.hpp"
 #include "core/distributed/processes.hpp"
 
 #include "core/threads.hpp"
@@ -165,6 +166,35 @@ int stop_every_process(const std::string& message, int status) {
   }
   print_error(message);
   return status;
+}
+
+std::optional<std::string> file_of_first_process(const std::filesystem::path& path) {
+  if (distributed::process_rank() != 0) {
+    return std::nullopt;
+  }
+  return path.string();
+}
+
+void check_on_first_process(const std::function<void()>& check) {
+  constexpr char separator = '\0';
+  std::string refusal;
+  if (distributed::process_rank() == 0) {
+    try {
+      check();
+    } catch (const CaseError& error) {
+      refusal = error.file() + separator + error.key() + separator + error.reason();
+    }
+  }
+  if (distributed::process_count() > 1) {
+    refusal = distributed::broadcast_from_first(refusal);
+  }
+  if (refusal.empty()) {
+    return;
+  }
+  const std::size_t first = refusal.find(separator);
+  const std::size_t second = refusal.find(separator, first + 1);
+  throw CaseError(refusal.substr(0, first), refusal.substr(first + 1, second - first - 1),
+                  refusal.substr(second + 1));
 }
 
 void print_error(const std::string& message) {

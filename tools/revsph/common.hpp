@@ -9,6 +9,8 @@
 #include "core/snapshot_file.hpp"
 
 #include <cstdint>
+#include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -61,6 +63,13 @@ void print_error(const std::string& message);
 // distributed run, the end of every process at once with `status` (none must wait for this one
 // in an exchange); otherwise returns `status`.
 int stop_every_process(const std::string& message, int status);
+
+// In a distributed run, process 0 alone writes the run's files (the others take part in the
+// collective snapshot writes). `path` on that process, nothing on the others.
+std::optional<std::string> file_of_first_process(const std::filesystem::path& path);
+// Runs `check` (which may throw CaseError) on process 0 only, then every process throws what it
+// threw: checks of the output directory that must not race (--force removes files there).
+void check_on_first_process(const std::function<void()>& check);
 
 // "setup: NAME = VALUE" for each entry of SimulationInfo::setup_report (stdout).
 void print_setup_report(const SimulationInfo& info);

@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
 #include <exception>
 #include <iostream>
 
@@ -225,13 +226,22 @@ int main(int argc, char** argv) {
     return status == 0 ? success : bad_input;
   }
 
-  // The distributed run (docs/design/distributed.md) is built for `hash` so far: the other
-  // commands would run the same case side by side on every process into the same files.
-  if (revsph::distributed::process_count() > 1 && !*hash_app && !*cases_app) {
-    print_error("started on " + std::to_string(revsph::distributed::process_count()) +
-                " processes; only `revsph hash` runs distributed so far "
-                "(docs/design/distributed.md): start one process");
-    return bad_input;
+  // A distributed run (docs/design/distributed.md): `run`, `verify` and `hash` hold the state in
+  // pieces; `diff` and `entropy` read whole snapshot files and would only repeat each other.
+  if (revsph::distributed::process_count() > 1) {
+    if (*diff_app || *entropy_app) {
+      print_error("started on " + std::to_string(revsph::distributed::process_count()) +
+                  " processes; `revsph diff` and `revsph entropy` read snapshot files on one: "
+                  "start one process");
+      return bad_input;
+    }
+    // One process speaks for all: the others' reports are the same.
+    if (revsph::distributed::process_rank() != 0 &&
+        std::freopen("/dev/null", "w", stdout) == nullptr) {
+      return stop_every_process("cannot silence the output of process " +
+                                    std::to_string(revsph::distributed::process_rank()),
+                                simulation_failed);
+    }
   }
   try {
     revsph::fixedpoint::require_round_to_nearest();

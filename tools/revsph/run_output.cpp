@@ -2,6 +2,7 @@
 
 #include "core/build_info.hpp"
 #include "core/case_file.hpp"
+#include "core/distributed/processes.hpp"
 #include "verify/state_hash.hpp"
 
 #include <cstdio>
@@ -82,7 +83,10 @@ void RunOutput::check_directory(const fs::path& directory, bool force,
 
 RunOutput::RunOutput(fs::path directory, SnapshotMetadata base, std::int64_t snapshot_every)
     : directory_(std::move(directory)), base_(std::move(base)), snapshot_every_(snapshot_every) {
-  fs::create_directories(directory_ / "snapshots");
+  // In a distributed run process 0 writes the files (the others take part in the snapshots).
+  if (distributed::process_rank() == 0) {
+    fs::create_directories(directory_ / "snapshots");
+  }
 }
 
 bool RunOutput::snapshot_due(std::int64_t step) const {
@@ -108,7 +112,9 @@ void RunOutput::write_snapshot(Simulation& simulation) {
       revsph::write_snapshot(directory_ / relative, metadata, state,
                              [&](const ViewSink& sink) { simulation.derived_views(sink); });
   series_.push_back(std::move(entry));
-  write_xdmf(xdmf(), simulation.info().dimension, series_);
+  if (distributed::process_rank() == 0) {
+    write_xdmf(xdmf(), simulation.info().dimension, series_);
+  }
   last_step_ = step;
 }
 

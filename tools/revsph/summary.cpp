@@ -51,6 +51,7 @@ void write_summary(const std::filesystem::path& path, Simulation& simulation, co
   summary["stepping_particle_steps_per_second"] =
       run.stepping_seconds > 0 ? particle_steps / run.stepping_seconds : 0.0;
   summary["threads"] = run.threads;
+  summary["processes"] = run.processes;
   // How the threads waited at barriers (core/openmp_waiting.hpp: chosen from the machine's
   // load at start), which a benchmark's throughput depends on.
   summary["openmp_waiting"] = openmp_waiting_description();

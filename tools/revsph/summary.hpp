@@ -20,6 +20,7 @@ struct RunSummary {
   double wall_seconds = 0.0;     // the whole run: stepping, energy log and snapshot writes
   double stepping_seconds = 0.0; // the time steps alone (no initial or final snapshot)
   int threads = 1;
+  int processes = 1; // of a distributed run (MPI)
   std::string initial_hash;
   std::string final_hash;
   std::optional<std::string> failure; // the fault message if the run stopped early

@@ -2,6 +2,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/build_info.hpp"
+#include "core/distributed/processes.hpp"
 #include "core/threads.hpp"
 
 #include <nlohmann/json.hpp>
@@ -181,6 +182,7 @@ void write_verify_summary(const std::filesystem::path& path, const VerifySummary
                 static_cast<double>(info.moving_particle_count()) / report.wall_seconds
           : 0.0;
   summary["threads"] = thread_count();
+  summary["processes"] = distributed::process_count();
   const EnergyLog& forward = *input.forward_energy;
   const EnergyLog& backward = *input.backward_energy;
   summary["energy"]["initial_total"] = forward.initial_total();
