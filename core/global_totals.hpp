@@ -38,6 +38,20 @@ inline double global_max(double own) {
   return distributed::max_over_processes(own);
 }
 
+// The run's total of value(s) over the own slots s of a pair layout (core/slot_layout.hpp; its
+// ghost slots are other processes' particles, counted there): an energy account's increment
+// from a pair pass's sums, say.
+template <class Layout, class Value>
+double global_total_over_own_slots(const Layout& layout, const Value& value) {
+  ExactDoubleSum sum;
+  for (std::size_t s = 0; s < layout.slot_count(); ++s) {
+    if (!layout.is_ghost_slot(s)) {
+      sum.add(value(s));
+    }
+  }
+  return global_total(sum);
+}
+
 // The exact sum of per-particle values.
 inline ExactDoubleSum exact_sum_of(std::span<const double> values) {
   ExactDoubleSum sum;

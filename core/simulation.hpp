@@ -7,6 +7,7 @@
 #include "core/distributed/state_distribution.hpp"
 #include "core/energy.hpp"
 #include "core/fault.hpp"
+#include "core/global_totals.hpp"
 #include "core/interaction_reach.hpp"
 #include "core/particle_sets.hpp"
 #include "core/particle_view.hpp"
@@ -17,6 +18,7 @@
 #include <concepts>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -90,6 +92,20 @@ concept HasDiagnostics = requires(M& model) {
 template <class M>
 concept HasTimedDiagnostics = requires(M& model, double time) {
   { model.diagnostics(time) } -> std::same_as<std::vector<EnergyTerm>>;
+};
+
+// Optional: particles whose position diagnostics.csv follows (a probe point's nearest particle,
+// chosen at setup), as (set, index in the whole state). The core reports each as
+// PREFIX_x, PREFIX_y (, PREFIX_z) before the model's own diagnostics, read from whichever process
+// holds the particle, so that a model never looks a particle up by its index on a process.
+struct ProbeParticle {
+  std::string name; // the columns' prefix ("probe")
+  std::string particle_set;
+  std::size_t particle = 0;
+};
+template <class M>
+concept HasProbeParticles = requires(const M& model) {
+  { model.probe_particles() } -> std::convertible_to<std::vector<ProbeParticle>>;
 };
 
 // Optional: energy the model exchanged with the outside since the run began (a heater's input,
@@ -271,13 +287,15 @@ public:
     attributing_faults([&] { model_.derived_views(sink); });
   }
   std::vector<EnergyTerm> diagnostics() override {
+    std::vector<EnergyTerm> terms = probe_positions();
+    std::vector<EnergyTerm> own;
     if constexpr (HasTimedDiagnostics<M>) {
-      return attributing_faults([&] { return model_.diagnostics(time()); });
+      own = attributing_faults([&] { return model_.diagnostics(time()); });
     } else if constexpr (HasDiagnostics<M>) {
-      return attributing_faults([&] { return model_.diagnostics(); });
-    } else {
-      return {};
+      own = attributing_faults([&] { return model_.diagnostics(); });
     }
+    terms.insert(terms.end(), own.begin(), own.end());
+    return terms;
   }
 
   std::vector<EnergyTerm> energy_accounts() const override {
@@ -381,6 +399,40 @@ private:
     if (distribution_ && distribution_->refresh(model_.state())) {
       model_.invalidate_derived();
     }
+  }
+  // The probe particles' positions (HasProbeParticles): the holder's value, summed exactly with
+  // the others' zeros (collective).
+  std::vector<EnergyTerm> probe_positions() {
+    std::vector<EnergyTerm> terms;
+    if constexpr (HasProbeParticles<M>) {
+      static constexpr const char* axes[] = {"_x", "_y", "_z"};
+      for (const ProbeParticle& probe : model_.probe_particles()) {
+        std::vector<double> position(static_cast<std::size_t>(info_.dimension), 0.0);
+        for_each_set(model_.state(), [&](auto& set) {
+          if (std::string(std::remove_cvref_t<decltype(set)>::set.name) != probe.particle_set) {
+            return;
+          }
+          const std::optional<std::size_t> local =
+              distribution_ ? distribution_->local_index(probe.particle_set, probe.particle)
+                            : std::optional<std::size_t>(probe.particle);
+          for_each_field_of(set, [&](const auto& field) {
+            if (field.info().name != "position" || !local) {
+              return;
+            }
+            for (int k = 0; k < field.components() && k < info_.dimension; ++k) {
+              position[static_cast<std::size_t>(k)] =
+                  distributed::detail::real_value(field.at(k, *local), field.info().scale);
+            }
+          });
+        });
+        for (std::size_t k = 0; k < position.size(); ++k) {
+          ExactDoubleSum held;
+          held.add(position[k]);
+          terms.push_back({probe.name + axes[k], global_total(held)});
+        }
+      }
+    }
+    return terms;
   }
   // In a distributed run, a snapshot of this process's rows says which they are.
   StateSnapshot with_pieces(StateSnapshot snapshot) const {

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -181,6 +182,19 @@ public:
     return rows;
   }
   double reach() const { return reach_; }
+
+  // The own row of a set's particle given by its global index, if this process holds it.
+  std::optional<std::size_t> local_index(const std::string& set, std::uint64_t global) const {
+    for (const Pieces& pieces : pieces_) {
+      if (pieces.name == set) {
+        const auto found = std::lower_bound(pieces.global.begin(), pieces.global.end(), global);
+        if (found != pieces.global.end() && *found == global) {
+          return static_cast<std::size_t>(found - pieces.global.begin());
+        }
+      }
+    }
+    return std::nullopt;
+  }
 
   // A particle's global index from its index on this process (i >= the own count: ghost
   // i - count, as StateField::at numbers them), for fault reports; `local` itself for a set this

@@ -133,19 +133,24 @@ void Model<D>::dissipate(double tau) {
         return fits && fixedpoint::try_round_up_to_fixed(change, s_scale, increment) &&
                fixedpoint::try_add(entropy.at(0, i), increment, entropy.at(0, i));
       });
-  // The heat the thermal walls took in (a sum of exact per-particle totals, in slot order: the
-  // same for any thread count).
+  // The heat the thermal walls took in (exact sums of exact per-particle totals: the same for
+  // any thread or process count).
   const double reference = parameters_.initial_temperature();
+  ExactDoubleSum heat_in, entropy_in, hot_out, cold_in;
   for (const std::uint32_t s : layout_.slots_of(state_.thermal)) {
     const double heat = dissipation_sums_.value(D, s);
-    wall_heat_ += heat;
-    wall_entropy_ += heat / slot_held_temperature_[s];
+    heat_in.add(heat);
+    entropy_in.add(heat / slot_held_temperature_[s]);
     if (slot_held_temperature_[s] > reference) {
-      hot_wall_heat_out_ -= heat;
+      hot_out.add(-heat);
     } else if (slot_held_temperature_[s] < reference) {
-      cold_wall_heat_in_ += heat;
+      cold_in.add(heat);
     }
   }
+  wall_heat_ += global_total(heat_in);
+  wall_entropy_ += global_total(entropy_in);
+  hot_wall_heat_out_ += global_total(hot_out);
+  cold_wall_heat_in_ += global_total(cold_in);
   geometry_valid_ = false;
 }
 

@@ -478,10 +478,9 @@ void Model<D>::derived_views(const ViewSink& sink) {
   for (std::size_t set = 0; set < sets.size(); ++set) {
     const CarrierValues& of_set = values[set];
     const ParticleEnergies& e = energies[set];
+    // Every set's views, even where this process holds none of its particles (a distributed
+    // run's snapshot takes each view from every process).
     const std::size_t count = of_set.density.size();
-    if (count == 0) {
-      continue;
-    }
     const std::string& name = sets[set].name;
     std::vector<double> pressure_values(count);
     std::vector<double> distortion(count * D * D);
@@ -504,7 +503,7 @@ void Model<D>::derived_views(const ViewSink& sink) {
       sink(ParticleView{name, "dissipated_energy", energy_unit<D>, 1, e.dissipated});
     }
   }
-  if (material_count() > 0) {
+  {
     std::vector<double> acceleration_values;
     for (int k = 0; k < D; ++k) {
       acceleration_values.insert(acceleration_values.end(), acceleration_[k].begin(),
@@ -625,12 +624,6 @@ std::vector<EnergyTerm> Model<D>::diagnostics() {
     return fixedpoint::to_real(position.at(axis, a), position.info().scale);
   };
   std::vector<EnergyTerm> terms;
-  if (probe_particle_) {
-    static constexpr const char* names[] = {"probe_x", "probe_y", "probe_z"};
-    for (int k = 0; k < D; ++k) {
-      terms.push_back({names[k], x_of(k, *probe_particle_)});
-    }
-  }
   // Angular momentum of the material about the origin, eq. (26) (conserved without boundary
   // particles; the twisting column's changes sign when its rotation reverses). Exact sums: the
   // same for any thread or process count.

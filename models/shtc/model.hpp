@@ -56,9 +56,16 @@ public:
   // with relaxation also the energy it has removed ("dissipated"), so that the total is conserved.
   EnergyBudget energy();
   void derived_views(const ViewSink& sink);
-  // The probe particle's position (if the case names a probe point), the angular momentum and,
-  // with moving walls, the power they feed in.
+  // The angular momentum and, with moving walls, the power they feed in.
   std::vector<EnergyTerm> diagnostics();
+  // The material particle nearest the case's probe point at t = 0, if it names one: the core
+  // reports its position (probe_x, ...) in diagnostics.csv (core/simulation.hpp).
+  std::vector<ProbeParticle> probe_particles() const {
+    if (!probe_particle_) {
+      return {};
+    }
+    return {ProbeParticle{"probe", "material", *probe_particle_}};
+  }
   void invalidate_derived() {
     constants_valid_ = false;
     geometry_valid_ = false;

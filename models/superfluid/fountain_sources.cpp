@@ -122,7 +122,7 @@ void Model<D, Arith>::heat(std::int64_t step) {
   const std::span<const std::uint32_t> fluid = layout_.slots_of(state_.fluid);
   const auto& x_scale = state_.fluid.position.info().scale;
   FaultRecorder faults;
-  double given = 0.0;
+  ExactDoubleSum given;
   for (std::size_t i = 0; i < fluid_count(); ++i) {
     double r_squared = 0.0, u_squared = 0.0;
     for (int k = 0; k < D; ++k) {
@@ -147,11 +147,11 @@ void Model<D, Arith>::heat(std::int64_t step) {
         0.5 *
         (Arith::real(state_.fluid.entropy.at(0, i), state_.fluid.entropy.info().scale) +
          Arith::real(state_.fluid.entropy_copy.at(0, i), state_.fluid.entropy_copy.info().scale));
-    given +=
-        mass[i] * (he.thermal_energy(s_new) + he.counterflow_energy(s_new, u_squared) - before);
+    given.add(mass[i] *
+              (he.thermal_energy(s_new) + he.counterflow_energy(s_new, u_squared) - before));
   }
   faults.throw_if_any();
-  heater_energy_ += given;
+  heater_energy_ += global_total(given);
 }
 
 template class Model<2, FixedArithmetic>;

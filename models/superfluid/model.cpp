@@ -320,13 +320,13 @@ void Model<D, Arith>::count_wall_work(double tau) {
   const RateTerm<D> rate{kernel_, slot_mass_, layout_.in(state_.fluid), interacting(),
                          inputs_, tau,        parameters_.gravity,      false};
   sum_pairs_over<Arith>(layout_, wall_pairs_, WallWorkTerm<D>{rate}, wall_work_sums_);
-  // Summed in the particles' canonical order (slots_of_set), so the same for any thread count
-  // and cell size; the mean of the copies receives half of each copy's increments.
-  double total = 0.0;
+  // Summed exactly, so the same for any thread or process count and cell size; the mean of the
+  // copies receives half of each copy's increments.
+  ExactDoubleSum total;
   for (const std::uint32_t slot : layout_.slots_of(state_.fluid)) {
-    total += wall_work_sums_.value(0, slot);
+    total.add(wall_work_sums_.value(0, slot));
   }
-  exchanged_energy_ += 0.5 * total;
+  exchanged_energy_ += 0.5 * global_total(total);
 }
 
 template class Model<2, FixedArithmetic>;

@@ -107,10 +107,8 @@ void Model<D, Arith>::dissipate(double tau) {
   faults.throw_if_any();
   // The accounts: the walls' work, and as dissipated what the sub-step took beyond it, the
   // kinetic energy its applied (rounded) impulses changed.
-  double wall_work = 0.0;
-  for (std::size_t s = 0; s < layout_.slot_count(); ++s) {
-    wall_work += dissipation_sums_.value(D, s);
-  }
+  const double wall_work = global_total_over_own_slots(
+      layout_, [&](std::size_t s) { return dissipation_sums_.value(D, s); });
   const double kinetic_change = work_of_impulses(dissipation_sums_, 0);
   wall_work_ += wall_work;
   dissipated_ += wall_work - kinetic_change;

@@ -199,17 +199,17 @@ double Model<D, Arith>::rigid_wall_work(const Sums& sums) const {
   // step make the trapezoid rule over the step, second order as the integrator.
   const std::span<const std::uint32_t> slots = layout_.slots_of(state_.wall);
   const auto& v_scale = state_.wall.velocity.info().scale;
-  double work = 0.0;
+  ExactDoubleSum work;
   for (std::size_t i = 0; i < slots.size(); ++i) {
     for (int k = 0; k < D; ++k) {
       double impulse = sums.value(k, slots[i]);
       if constexpr (std::is_same_v<Sums, PairSums<Arith, 2 * D>>) {
         impulse -= sums.value(D + k, slots[i]);
       }
-      work -= impulse * Arith::real(state_.wall.velocity.at(k, i), v_scale);
+      work.add(-impulse * Arith::real(state_.wall.velocity.at(k, i), v_scale));
     }
   }
-  return work;
+  return global_total(work);
 }
 
 template <int D, class Arith>

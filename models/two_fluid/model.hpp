@@ -143,11 +143,11 @@ private:
   double rigid_wall_work(const Sums& sums) const;
   // After `sums`' impulses J (components 0..D-1) were added to the momenta: the sum over the
   // moving particles of w . (p_after - J / 2) / m, w the components weight..weight+D-1. With
-  // w = J it is the kinetic energy J changed, exactly; summed in particle order (independent
-  // of the threads).
+  // w = J it is the kinetic energy J changed; summed exactly over the run (independent of the
+  // threads and processes).
   template <class Sums>
   double work_of_impulses(const Sums& sums, int weight) {
-    double work = 0.0;
+    ExactDoubleSum work;
     for_each_moving([&](const auto& kind, std::size_t set) {
       const std::span<const std::uint32_t> slots = layout_.slots_of_set(set);
       const std::span<const double> mass = layout_.part_of_set(std::span<const double>(mass_), set);
@@ -159,10 +159,10 @@ private:
               Arith::real(kind.momentum.at(k, i), p_scale) - 0.5 * sums.value(k, slots[i]);
           particle += sums.value(weight + k, slots[i]) * middle;
         }
-        work += particle / mass[i];
+        work.add(particle / mass[i]);
       }
     });
-    return work;
+    return global_total(work);
   }
 
   WendlandQuintic<D> kernel_;

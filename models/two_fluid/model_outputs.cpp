@@ -10,7 +10,7 @@ EnergyBudget Model<D, Arith>::energy() {
   update_density();
   const ImpulseInputs& in = inputs_;
   // Exact sums (core/global_totals.hpp): the same value for any thread or process count.
-  ExactDoubleSum kinetic, internal, gravitational;
+  ExactDoubleSum kinetic, gravitational;
   for_each_moving([&](const auto& kind, std::size_t set) {
     const std::span<const double> mass = layout_.part_of_set(std::span<const double>(mass_), set);
     const auto& p_scale = kind.momentum.info().scale;
@@ -27,11 +27,11 @@ EnergyBudget Model<D, Arith>::energy() {
     }
   });
   // Every particle's m e(rho), walls included.
-  for (std::size_t s = 0; s < layout_.slot_count(); ++s) {
-    internal.add(in.mass[s] * internal_energy(in.density[s], slot_rest_density_[s]));
-  }
+  const double internal = global_total_over_own_slots(layout_, [&](std::size_t s) {
+    return in.mass[s] * internal_energy(in.density[s], slot_rest_density_[s]);
+  });
   return EnergyBudget{{{"kinetic", global_total(kinetic)},
-                       {"internal", global_total(internal)},
+                       {"internal", internal},
                        {"gravitational", global_total(gravitational)},
                        {"dissipated", dissipated_},
                        {"wall_work", -wall_work_},

@@ -1,18 +1,23 @@
-# A one-process run's snapshot continued on 1, 2 and 3 processes (`mpirun -np P revsph hash
-# SNAPSHOT --steps S`) ends with the hash of one uninterrupted run of twice S steps
-# (docs/design/distributed.md, piece 5: the whole state restored on every process, each keeping
-# its region's share). Run by CTest:
-# cmake -DMPIEXEC=... -DREVSPH=... -DCASE=... -DSTEPS=... -DWORK=dir -P restart_on_processes.cmake
+# A snapshot written by a run on WRITERS processes (1 unless given), continued on 1, 2 and 3
+# processes (`mpirun -np P revsph hash SNAPSHOT --steps S`), ends with the hash of one
+# uninterrupted run of twice S steps (docs/design/distributed.md, piece 5: the whole state
+# restored on every process, each keeping its region's share). Run by CTest:
+# cmake -DMPIEXEC=... -DREVSPH=... -DCASE=... -DSTEPS=... -DWORK=dir [-DWRITERS=3]
+# -P restart_on_processes.cmake
 include(${CMAKE_CURRENT_LIST_DIR}/revsph_hash_on.cmake)
 set(ENV{OMP_NUM_THREADS} 1)
 file(REMOVE_RECURSE ${WORK})
 math(EXPR twice "2 * ${STEPS}")
 revsph_hash_on(1 1 "${CASE}, ${twice} steps uninterrupted" whole ${CASE} --steps ${twice})
-execute_process(COMMAND ${REVSPH} run ${CASE} --steps ${STEPS} --threads 1 --out ${WORK}
+if(NOT DEFINED WRITERS)
+  set(WRITERS 1)
+endif()
+execute_process(COMMAND ${MPIEXEC} -np ${WRITERS} --oversubscribe -x OMP_NUM_THREADS=1
+                        ${REVSPH} run ${CASE} --steps ${STEPS} --threads 1 --out ${WORK}
                         --set output.snapshot_every=${STEPS}
                 OUTPUT_QUIET RESULT_VARIABLE status)
 if(NOT status EQUAL 0)
-  message(FATAL_ERROR "the first half failed: exit ${status}")
+  message(FATAL_ERROR "the first half on ${WRITERS} processes failed: exit ${status}")
 endif()
 file(GLOB snapshots ${WORK}/snapshots/step_*${STEPS}.h5)
 list(GET snapshots -1 snapshot)

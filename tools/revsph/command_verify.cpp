@@ -131,12 +131,7 @@ int verify_command(const VerifyCommandOptions& options) {
   std::unique_ptr<IrreversibleProbe> probe;
   if (!reversible) {
     probe = std::make_unique<IrreversibleProbe>();
-    if (distributed::process_count() > 1) {
-      std::cout << "note: no entropy: the speeds' histogram over several processes is not built "
-                   "yet (docs/design/distributed.md)\n";
-    } else {
-      probe->particle_set = moving_particle_set(simulation.capture_state());
-    }
+    probe->particle_set = moving_particle_set(simulation.capture_state());
   }
 
   ProgressReporter forward(stdout, "forward ", start + steps, info.dt,

@@ -17,10 +17,14 @@ struct ParticleSpeeds {
   std::vector<double> speeds;
   double kinetic_energy = 0.0; // Σ m v² / 2 (per unit depth in 2D)
   double mean_mass = 0.0;
+  // The speeds are this process's particles' of a state held in pieces (a distributed run):
+  // histograms of them are summed over the processes.
+  bool in_pieces = false;
 };
 
 // The speeds from the set's velocity field, or from its momentum over its mass where it has no
-// velocity (entropic SPH, the two-fluid model). Throws std::invalid_argument if the set has no
+// velocity (entropic SPH, the two-fluid model). For a state held in pieces, this process's
+// particles' speeds, and the kinetic energy and mean mass of the whole set (collective). Throws std::invalid_argument if the set has no
 // mass with a velocity or momentum field, is empty, or holds a non-finite velocity or a mass that
 // is not positive (the message names the set and particle).
 ParticleSpeeds particle_speeds(const StateSnapshot& state, const std::string& particle_set);
