@@ -40,7 +40,7 @@ class ColumnDataset {
 public:
   ColumnDataset(hid_t file, const std::string& group, const std::string& set,
                 const std::string& name, hid_t file_type, std::size_t rows, int components)
-      : name_(name), components_(components) {
+      : name_(name) {
     const Handle outer = open_or_create_group(file, group);
     const Handle inner = open_or_create_group(outer.id(), set);
     const std::array<hsize_t, 2> dims{rows, static_cast<hsize_t>(components)};
@@ -72,11 +72,9 @@ public:
     }
   }
   hid_t id() const { return dataset_.id(); }
-  int components() const { return components_; }
 
 private:
   std::string name_;
-  int components_;
   Handle dataset_;
 };
 

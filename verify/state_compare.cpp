@@ -139,12 +139,7 @@ StateComparison compare_states(const StateSnapshot& expected, const StateSnapsho
   }
   if (aligned->in_pieces()) {
     // Every process's findings, combined in rank order: index order.
-    const std::vector<VariableFindings> all =
-        distributed::records_of_every_process(std::span<const VariableFindings>(found));
-    found.assign(e.size(), VariableFindings{});
-    for (std::size_t n = 0; n < all.size(); ++n) {
-      then(found[n % e.size()], all[n]);
-    }
+    found = distributed::combined_in_rank_order(std::span<const VariableFindings>(found), then);
   }
   for (std::size_t f = 0; f < e.size(); ++f) {
     const std::uint64_t values =

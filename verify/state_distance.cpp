@@ -97,17 +97,7 @@ StateDistance state_distance(const StateSnapshot& from, const StateSnapshot& to)
   }
   if (aligned.in_pieces()) {
     // Every process's findings, combined in rank order: index order.
-    const std::vector<VariableFindings> all =
-        distributed::records_of_every_process(std::span<const VariableFindings>(found));
-    found.resize(a.size());
-    for (std::size_t n = 0; n < all.size(); ++n) {
-      VariableFindings& total = found[n % a.size()];
-      if (n < a.size()) {
-        total = all[n];
-      } else {
-        then(total, all[n]);
-      }
-    }
+    found = distributed::combined_in_rank_order(std::span<const VariableFindings>(found), then);
   }
   StateDistance result;
   for (std::size_t f = 0; f < a.size(); ++f) {

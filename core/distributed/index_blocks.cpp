@@ -81,36 +81,30 @@ StateSnapshot in_index_blocks(const StateSnapshot& snapshot) {
     }
     return result;
   }
+  // One migration per set (collective, in the pieces' order, the same on every process), then
+  // each field, in the snapshot's order, along its set's.
+  std::vector<Migration> migrations;
+  migrations.reserve(snapshot.pieces.size());
   for (const SetRows& rows : snapshot.pieces) {
     std::vector<int> owners(rows.indices.size());
     for (std::size_t i = 0; i < owners.size(); ++i) {
       owners[i] = block_of(rows.indices[i], rows.total);
     }
-    const Migration migration(owners, rows.indices);
-    for (const FieldSnapshot& field : snapshot.fields) {
-      if (field.info.particle_set != rows.set) {
-        continue;
-      }
-      if (field.count != rows.indices.size()) {
-        throw std::invalid_argument("in_index_blocks: field " + field.info.particle_set + "." +
-                                    field.info.name + " does not have its set's rows");
-      }
-      result.fields.push_back(moved(field, migration));
-    }
+    const Migration& migration = migrations.emplace_back(owners, rows.indices);
     result.pieces.push_back({rows.set, migration.global_indices_after(), rows.total});
   }
-  // The fields in the snapshot's order (above they came set by set).
-  StateSnapshot ordered;
-  ordered.pieces = std::move(result.pieces);
   for (const FieldSnapshot& field : snapshot.fields) {
-    FieldSnapshot* found = result.find(field.info.particle_set, field.info.name);
-    if (found == nullptr) {
-      throw std::invalid_argument("in_index_blocks: no rows of particle set " +
-                                  field.info.particle_set);
+    std::size_t k = 0;
+    while (k < snapshot.pieces.size() && snapshot.pieces[k].set != field.info.particle_set) {
+      ++k;
     }
-    ordered.fields.push_back(std::move(*found));
+    if (k == snapshot.pieces.size() || field.count != snapshot.pieces[k].indices.size()) {
+      throw std::invalid_argument("in_index_blocks: field " + field.info.particle_set + "." +
+                                  field.info.name + " does not have its set's rows");
+    }
+    result.fields.push_back(moved(field, migrations[k]));
   }
-  return ordered;
+  return result;
 }
 
 } // namespace revsph::distributed

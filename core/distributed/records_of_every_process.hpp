@@ -39,4 +39,17 @@ std::vector<Record> records_of_every_process(std::span<const Record> mine) {
   return records;
 }
 
+// Every process's `mine` combined record by record in rank order: combined[i] starts as
+// process 0's record i and then(combined[i], record) takes each later process's in turn
+// (collective; every process gets the same result).
+template <class Record, class Then>
+std::vector<Record> combined_in_rank_order(std::span<const Record> mine, const Then& then) {
+  const std::vector<Record> all = records_of_every_process(mine);
+  std::vector<Record> combined(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(mine.size()));
+  for (std::size_t n = mine.size(); n < all.size(); ++n) {
+    then(combined[n % mine.size()], all[n]);
+  }
+  return combined;
+}
+
 } // namespace revsph::distributed

@@ -113,12 +113,9 @@ analysis::SpeedHistogram histogram_of(const ParticleSpeeds& sample, int bins, do
   std::vector<std::int64_t> counts(histogram.counts.begin(), histogram.counts.end());
   counts.push_back(static_cast<std::int64_t>(histogram.samples));
   counts.push_back(static_cast<std::int64_t>(histogram.above_max));
-  const std::vector<std::int64_t> all =
-      distributed::records_of_every_process(std::span<const std::int64_t>(counts));
-  std::vector<std::int64_t> total(counts.size(), 0);
-  for (std::size_t n = 0; n < all.size(); ++n) {
-    total[n % counts.size()] += all[n];
-  }
+  const std::vector<std::int64_t> total = distributed::combined_in_rank_order(
+      std::span<const std::int64_t>(counts),
+      [](std::int64_t& sum, std::int64_t more) { sum += more; });
   const std::size_t bin_count = histogram.counts.size();
   for (std::size_t i = 0; i < bin_count; ++i) {
     histogram.counts[i] = static_cast<std::size_t>(total[i]);
