@@ -17,6 +17,7 @@
 
 #include <concepts>
 #include <cstdint>
+#include <cstdlib>
 #include <memory>
 #include <optional>
 #include <span>
@@ -186,6 +187,9 @@ public:
   virtual std::vector<std::string> substep_names() const = 0;
   virtual void apply_substep(std::size_t index, double dt) = 0;
 
+  // This process's share of a distributed run (zeros but the own particles on one process).
+  virtual distributed::DistributionCounts distribution_counts() const = 0;
+
   std::int64_t steps_taken() const { return steps_taken_; }
   double time() const { return time_at(steps_taken_); }
   // The simulated time after `step` steps: step * dt, or, in a run continued from a snapshot
@@ -330,6 +334,18 @@ public:
     refresh_pieces();
   }
 
+  distributed::DistributionCounts distribution_counts() const override {
+    if (distribution_) {
+      return distribution_->counts();
+    }
+    distributed::DistributionCounts counts;
+    counts.own_particles = 0;
+    for (const ParticleCount& set : info_.particles) {
+      counts.own_particles += set.count;
+    }
+    return counts;
+  }
+
   M& model() { return model_; }
 
 private:
@@ -389,8 +405,12 @@ private:
     limit_interaction_radius(0.0);
     (void)model_.energy();
     const double reach = distributed::max_over_processes(largest_interaction_radius());
+    // REVSPH_REBALANCE_ABOVE (docs/running.md): when the regions are cut again; 1: at every
+    // migration, which the tests use to check that a rebalance changes no bit.
+    const char* rebalance_above = std::getenv("REVSPH_REBALANCE_ABOVE");
     distribution_ = std::make_unique<distributed::StateDistribution<StateOf>>(
-        model_.state(), info_.dimension, reach);
+        model_.state(), info_.dimension, reach,
+        rebalance_above != nullptr ? std::strtod(rebalance_above, nullptr) : 1.05);
     limit_interaction_radius(reach);
     model_.invalidate_derived();
   }

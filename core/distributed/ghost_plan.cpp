@@ -30,9 +30,8 @@ GhostPlan::GhostPlan(const SpatialPartition& partition, std::span<const double> 
     }
   }
   // The receivers learn their ghost counts from one exchange of a byte per ghost.
-  std::vector<std::size_t> received;
   const std::vector<std::byte> marks(total, std::byte{1});
-  ghost_count_ = exchange_bytes(marks, sent_per_process_, received).size();
+  ghost_count_ = exchange_bytes(marks, sent_per_process_, ghosts_from_process_).size();
 }
 
 } // namespace revsph::distributed

@@ -32,7 +32,8 @@ public:
   template <class T>
   std::vector<T> exchange(std::span<const T> values, std::size_t width) const {
     return exchange_rows(values, width, std::span<const std::uint32_t>(sent_particles_),
-                         std::span<const std::size_t>(sent_per_process_));
+                         std::span<const std::size_t>(sent_per_process_),
+                         std::span<const std::size_t>(ghosts_from_process_));
   }
 
   // The same with each listed particle's row written by row_of(particle, T* row) straight into
@@ -44,16 +45,27 @@ public:
       row_of(std::size_t{sent_particles_[n]}, packed.data() + n * width);
     }
     return exchange_packed_rows(std::span<const T>(packed), width,
-                                std::span<const std::size_t>(sent_per_process_));
+                                std::span<const std::size_t>(sent_per_process_),
+                                std::span<const std::size_t>(ghosts_from_process_));
+  }
+
+  // The same with the rows already packed in the order of sent_particles().
+  template <class T>
+  std::vector<T> exchange_packed(std::span<const T> packed, std::size_t width) const {
+    return exchange_packed_rows(packed, width, std::span<const std::size_t>(sent_per_process_),
+                                std::span<const std::size_t>(ghosts_from_process_));
   }
 
   // How many ghosts this process receives, and how many particle copies it sends.
   std::size_t ghost_count() const { return ghost_count_; }
   std::size_t sent_count() const { return sent_particles_.size(); }
+  // The listed particles, grouped by destination (for a caller that packs rows itself).
+  std::span<const std::uint32_t> sent_particles() const { return sent_particles_; }
 
 private:
-  std::vector<std::uint32_t> sent_particles_; // grouped by destination, in particle order
-  std::vector<std::size_t> sent_per_process_; // one count per process
+  std::vector<std::uint32_t> sent_particles_;    // grouped by destination, in particle order
+  std::vector<std::size_t> sent_per_process_;    // one count per process
+  std::vector<std::size_t> ghosts_from_process_; // one count per process
   std::size_t ghost_count_ = 0;
 };
 

@@ -2,11 +2,13 @@
 // processes' index ranges, with the indices, and put in order there.
 #include "core/distributed/index_order_stream.hpp"
 
+#include "core/distributed/communication_tally.hpp"
 #include "core/distributed/processes.hpp"
 
 #include <mpi.h>
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -32,6 +34,8 @@ void stream_in_index_order(std::span<const std::uint64_t> indices,
         std::lower_bound(indices.begin() + static_cast<std::ptrdiff_t>(from), indices.end(), high) -
         indices.begin());
     const int mine = static_cast<int>(to - from);
+    std::optional<CommunicationTimer> timer(std::in_place,
+                                            first ? 0 : 16 * static_cast<std::uint64_t>(mine));
     MPI_Gather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
     int sum = 0;
     for (std::size_t p = 0; p < processes; ++p) {
@@ -46,6 +50,7 @@ void stream_in_index_order(std::span<const std::uint64_t> indices,
                 offsets.data(), MPI_UINT64_T, 0, MPI_COMM_WORLD);
     MPI_Gatherv(values.data() + from, mine, MPI_INT64_T, gathered_values.data(), counts.data(),
                 offsets.data(), MPI_INT64_T, 0, MPI_COMM_WORLD);
+    timer.reset();
     from = to;
     int complete = 1;
     if (first) {
@@ -63,7 +68,10 @@ void stream_in_index_order(std::span<const std::uint64_t> indices,
         ordered[index - low] = gathered_values[n];
       }
     }
-    MPI_Bcast(&complete, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    {
+      const CommunicationTimer verdict_timer(sizeof complete);
+      MPI_Bcast(&complete, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    }
     if (complete == 0) {
       throw std::invalid_argument("stream_in_index_order: the particles do not cover the run");
     }
@@ -78,6 +86,7 @@ void stream_in_index_order(std::span<const std::uint64_t> indices,
 
 std::string broadcast_from_first(const std::string& text) {
   auto size = static_cast<std::uint64_t>(text.size());
+  const CommunicationTimer timer(text.size());
   MPI_Bcast(&size, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
   std::string result = text;
   result.resize(size);

@@ -44,6 +44,13 @@ double max_over_processes(double local);
 std::vector<std::byte> exchange_bytes(std::span<const std::byte> send,
                                       std::span<const std::size_t> send_bytes,
                                       std::vector<std::size_t>& received_bytes);
+// The same when this process knows how many bytes each process sends it (`receive_bytes`, one
+// entry per process: a ghost plan's fixed lists), which saves the exchange of the counts.
+std::vector<std::byte> exchange_bytes(std::span<const std::byte> send,
+                                      std::span<const std::size_t> send_bytes,
+                                      std::span<const std::size_t> receive_bytes);
+// Bitwise or over every process (flags: which fields changed somewhere).
+std::uint64_t or_over_processes(std::uint64_t local);
 double min_over_processes(double local);
 
 // Ends every process at once with `status` (MPI_Abort; std::exit with one process): what a

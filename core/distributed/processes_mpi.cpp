@@ -1,6 +1,8 @@
 // MPI_COMM_WORLD's processes (processes.hpp), built with -DREVSPH_MPI=ON.
 #include "core/distributed/processes.hpp"
 
+#include "core/distributed/communication_tally.hpp"
+
 #include <cstdlib>
 
 #include <mpi.h>
@@ -32,6 +34,13 @@ void add_int128(void* in, void* inout, int* count, MPI_Datatype*) {
         static_cast<fixedpoint::int128>(static_cast<uint128>(a) + static_cast<uint128>(b));
     std::memcpy(static_cast<char*>(inout) + 16 * i, &total, 16);
   }
+}
+
+// Bytes a reduction hands to the other processes (none when there are none).
+std::uint64_t to_others(std::size_t bytes) {
+  int count = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &count);
+  return count > 1 ? bytes : 0;
 }
 
 void check(int status, const char* what) {
@@ -75,6 +84,7 @@ int process_count() {
 
 fixedpoint::int128 sum_over_processes(fixedpoint::int128 local) {
   fixedpoint::int128 total = 0;
+  const CommunicationTimer timer(to_others(sizeof local));
   check(MPI_Allreduce(&local, &total, 1, int128_type, int128_sum, MPI_COMM_WORLD),
         "MPI_Allreduce (int128 sum)");
   return total;
@@ -82,6 +92,7 @@ fixedpoint::int128 sum_over_processes(fixedpoint::int128 local) {
 
 std::int64_t sum_over_processes(std::int64_t local) {
   std::int64_t total = 0;
+  const CommunicationTimer timer(to_others(sizeof local));
   check(MPI_Allreduce(&local, &total, 1, MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD),
         "MPI_Allreduce (int64 sum)");
   return total;
@@ -93,6 +104,7 @@ fixedpoint::ExactDoubleSum sum_over_processes(const fixedpoint::ExactDoubleSum& 
   using Image = fixedpoint::ExactDoubleSum::Image;
   const Image mine = local.image();
   std::vector<Image> parts(static_cast<std::size_t>(process_count()));
+  const CommunicationTimer timer(to_others(mine.size()));
   check(MPI_Allgather(mine.data(), static_cast<int>(mine.size()), MPI_BYTE, parts.data(),
                       static_cast<int>(mine.size()), MPI_BYTE, MPI_COMM_WORLD),
         "MPI_Allgather (exact sum of doubles)");
@@ -103,34 +115,39 @@ fixedpoint::ExactDoubleSum sum_over_processes(const fixedpoint::ExactDoubleSum& 
   return total;
 }
 
-std::vector<std::byte> exchange_bytes(std::span<const std::byte> send,
-                                      std::span<const std::size_t> send_bytes,
-                                      std::vector<std::size_t>& received_bytes) {
-  const auto count = static_cast<std::size_t>(process_count());
-  // MPI's counts are int: a part above 2 GiB is refused rather than cut.
-  std::vector<int> send_counts(count), send_offsets(count), receive_counts(count),
-      receive_offsets(count);
+namespace {
+
+// MPI's counts and offsets (int: a part above 2 GiB is refused rather than cut).
+void to_counts(std::span<const std::size_t> bytes, std::vector<int>& counts,
+               std::vector<int>& offsets) {
+  counts.resize(bytes.size());
+  offsets.resize(bytes.size());
   std::size_t offset = 0;
-  for (std::size_t p = 0; p < count; ++p) {
-    if (send_bytes[p] > static_cast<std::size_t>(std::numeric_limits<int>::max()) ||
+  for (std::size_t p = 0; p < bytes.size(); ++p) {
+    if (bytes[p] > static_cast<std::size_t>(std::numeric_limits<int>::max()) ||
         offset > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
       throw std::runtime_error("MPI: a message of more than 2 GiB");
     }
-    send_counts[p] = static_cast<int>(send_bytes[p]);
-    send_offsets[p] = static_cast<int>(offset);
-    offset += send_bytes[p];
+    counts[p] = static_cast<int>(bytes[p]);
+    offsets[p] = static_cast<int>(offset);
+    offset += bytes[p];
   }
-  check(MPI_Alltoall(send_counts.data(), 1, MPI_INT, receive_counts.data(), 1, MPI_INT,
-                     MPI_COMM_WORLD),
-        "MPI_Alltoall (byte counts)");
-  received_bytes.resize(count);
+}
+
+std::vector<std::byte> all_to_all(std::span<const std::byte> send,
+                                  std::span<const std::size_t> send_bytes,
+                                  std::span<const std::size_t> receive_bytes) {
+  std::vector<int> send_counts, send_offsets, receive_counts, receive_offsets;
+  to_counts(send_bytes, send_counts, send_offsets);
+  to_counts(receive_bytes, receive_counts, receive_offsets);
   std::size_t total = 0;
-  for (std::size_t p = 0; p < count; ++p) {
-    receive_offsets[p] = static_cast<int>(total);
-    received_bytes[p] = static_cast<std::size_t>(receive_counts[p]);
-    total += received_bytes[p];
+  for (const std::size_t bytes : receive_bytes) {
+    total += bytes;
   }
   std::vector<std::byte> received(total);
+  const CommunicationTimer timer(send.size() -
+                                 send_bytes[static_cast<std::size_t>(process_rank())]);
+  ++communication_tally().exchanges;
   check(MPI_Alltoallv(send.data(), send_counts.data(), send_offsets.data(), MPI_BYTE,
                       received.data(), receive_counts.data(), receive_offsets.data(), MPI_BYTE,
                       MPI_COMM_WORLD),
@@ -138,8 +155,42 @@ std::vector<std::byte> exchange_bytes(std::span<const std::byte> send,
   return received;
 }
 
+} // namespace
+
+std::vector<std::byte> exchange_bytes(std::span<const std::byte> send,
+                                      std::span<const std::size_t> send_bytes,
+                                      std::vector<std::size_t>& received_bytes) {
+  const auto count = static_cast<std::size_t>(process_count());
+  std::vector<int> send_counts, send_offsets;
+  to_counts(send_bytes, send_counts, send_offsets);
+  std::vector<int> receive_counts(count);
+  {
+    const CommunicationTimer timer(sizeof(int) * (count - 1));
+    check(MPI_Alltoall(send_counts.data(), 1, MPI_INT, receive_counts.data(), 1, MPI_INT,
+                       MPI_COMM_WORLD),
+          "MPI_Alltoall (byte counts)");
+  }
+  received_bytes.assign(receive_counts.begin(), receive_counts.end());
+  return all_to_all(send, send_bytes, received_bytes);
+}
+
+std::vector<std::byte> exchange_bytes(std::span<const std::byte> send,
+                                      std::span<const std::size_t> send_bytes,
+                                      std::span<const std::size_t> receive_bytes) {
+  return all_to_all(send, send_bytes, receive_bytes);
+}
+
+std::uint64_t or_over_processes(std::uint64_t local) {
+  std::uint64_t result = 0;
+  const CommunicationTimer timer(to_others(sizeof local));
+  check(MPI_Allreduce(&local, &result, 1, MPI_UINT64_T, MPI_BOR, MPI_COMM_WORLD),
+        "MPI_Allreduce (or)");
+  return result;
+}
+
 double max_over_processes(double local) {
   double result = 0.0;
+  const CommunicationTimer timer(to_others(sizeof local));
   check(MPI_Allreduce(&local, &result, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD),
         "MPI_Allreduce (max)");
   return result;
@@ -147,6 +198,7 @@ double max_over_processes(double local) {
 
 double min_over_processes(double local) {
   double result = 0.0;
+  const CommunicationTimer timer(to_others(sizeof local));
   check(MPI_Allreduce(&local, &result, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD),
         "MPI_Allreduce (min)");
   return result;

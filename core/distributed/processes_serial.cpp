@@ -34,6 +34,15 @@ std::vector<std::byte> exchange_bytes(std::span<const std::byte> send,
   received_bytes.assign(1, send_bytes.empty() ? 0 : send_bytes[0]);
   return {send.begin(), send.begin() + static_cast<std::ptrdiff_t>(received_bytes[0])};
 }
+std::vector<std::byte> exchange_bytes(std::span<const std::byte> send,
+                                      std::span<const std::size_t> send_bytes,
+                                      std::span<const std::size_t>) {
+  std::vector<std::size_t> received_bytes;
+  return exchange_bytes(send, send_bytes, received_bytes);
+}
+std::uint64_t or_over_processes(std::uint64_t local) {
+  return local;
+}
 double max_over_processes(double local) {
   return local;
 }

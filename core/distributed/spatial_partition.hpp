@@ -34,11 +34,13 @@ public:
   SpatialPartition& operator=(const SpatialPartition&) = delete;
 
   // Cuts space into one region per process so that each owns about the same number of the
-  // particles that the processes hold now (collective). `coordinates` holds this process's
+  // particles that the processes hold now (collective), or the same total of their `weights`
+  // (one per particle: their estimated work) when given. `coordinates` holds this process's
   // particles point after point (dimension values each, metres), `global_indices` their indices
   // in the run's canonical order. Returns the rank that owns each of them from now on.
   std::vector<int> balance(std::span<const double> coordinates,
-                           std::span<const std::uint64_t> global_indices);
+                           std::span<const std::uint64_t> global_indices,
+                           std::span<const float> weights = {});
 
   // The process whose region holds the point (after balance).
   int owner_of(std::span<const double> point) const;

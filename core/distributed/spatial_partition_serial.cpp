@@ -9,7 +9,8 @@ SpatialPartition::SpatialPartition(int dimension, PartitionMethod) : dimension_(
 SpatialPartition::~SpatialPartition() = default;
 
 std::vector<int> SpatialPartition::balance(std::span<const double>,
-                                           std::span<const std::uint64_t> global_indices) {
+                                           std::span<const std::uint64_t> global_indices,
+                                           std::span<const float>) {
   return std::vector<int>(global_indices.size(), 0);
 }
 

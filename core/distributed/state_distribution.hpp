@@ -12,17 +12,20 @@
 // no bit of any result, only the speed.
 
 #include "core/arithmetic.hpp"
+#include "core/distributed/distribution_counts.hpp"
 #include "core/distributed/ghost_plan.hpp"
 #include "core/distributed/migration.hpp"
 #include "core/distributed/processes.hpp"
 #include "core/distributed/set_rows.hpp"
 #include "core/distributed/spatial_partition.hpp"
+#include "core/distributed/work_estimate.hpp"
 #include "core/particle_sets.hpp"
 #include "core/state_snapshot.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -111,19 +114,23 @@ class StateDistribution {
 public:
   // Every process holds the whole state (each ran the setup): the regions are cut, and each
   // process keeps the particles its region holds and receives its ghosts (collective).
-  StateDistribution(State& state, int dimension, double reach)
+  // `rebalance_above`: the regions are cut again when the largest process's estimated work
+  // exceeds the mean by this factor at a migration (and by more than right after the last cut);
+  // 1 or less: at every migration.
+  StateDistribution(State& state, int dimension, double reach, double rebalance_above = 1.05)
       : partition_(dimension, PartitionMethod::coordinate_bisection), dimension_(dimension),
-        reach_(reach), skin_(0.25 * reach) {
+        reach_(reach), skin_(0.25 * reach), rebalance_above_(rebalance_above) {
     for_each_set(state, [&](auto& set) {
       Pieces& pieces = pieces_.emplace_back();
       pieces.name = std::string(std::remove_cvref_t<decltype(set)>::set.name);
       pieces.total = set_size(set);
       pieces.has_position = detail::position_field(set) != nullptr;
     });
-    cut_regions(state);
+    cut_regions(state, /*whole_state_held=*/true);
     keep_own_particles(state);
     remake_ghost_lists(state);
-    refresh_ghosts(state);
+    refresh_ghosts(state, /*every_field=*/true);
+    imbalance_after_cut_ = measure_work(state);
   }
   StateDistribution(const StateDistribution&) = delete;
   StateDistribution& operator=(const StateDistribution&) = delete;
@@ -135,12 +142,22 @@ public:
   // have changed owner (the model's layouts must then be rebuilt).
   bool refresh(State& state) {
     const bool remade = moved_beyond_skin(state);
-    if (remade) {
-      migrate(state);
-      remake_ghost_lists(state);
+    if (!remade) {
+      refresh_ghosts(state, /*every_field=*/false);
+      return false;
     }
-    refresh_ghosts(state);
-    return remade;
+    const bool rebalance = work_drifted_apart(state);
+    if (rebalance) {
+      cut_regions(state, /*whole_state_held=*/false);
+      ++rebalances_;
+    }
+    migrate(state);
+    remake_ghost_lists(state);
+    refresh_ghosts(state, /*every_field=*/true);
+    if (rebalance) {
+      imbalance_after_cut_ = measure_work(state);
+    }
+    return true;
   }
 
   // A snapshot restored (collective): either the whole state on every process (a snapshot
@@ -170,7 +187,7 @@ public:
       migrate(state);
     }
     remake_ghost_lists(state);
-    refresh_ghosts(state);
+    refresh_ghosts(state, /*every_field=*/true);
   }
 
   // This process's rows of every set, for the whole state's hash and snapshots.
@@ -182,6 +199,20 @@ public:
     return rows;
   }
   double reach() const { return reach_; }
+
+  // This process's share of the run (summary.json's "distribution").
+  DistributionCounts counts() const {
+    DistributionCounts counts{
+        .ghost_lists_made = ghost_lists_made_, .rebalances = rebalances_, .work = work_};
+    for (const Pieces& pieces : pieces_) {
+      counts.own_particles += pieces.global.size();
+      if (pieces.plan) {
+        counts.ghosts += pieces.plan->ghost_count();
+        counts.copies_sent += pieces.plan->sent_count();
+      }
+    }
+    return counts;
+  }
 
   // The own row of a set's particle given by its global index, if this process holds it.
   std::optional<std::size_t> local_index(const std::string& set, std::uint64_t global) const {
@@ -218,36 +249,105 @@ private:
     std::string name;
     bool has_position = false;
     std::uint64_t total = 0;
-    std::vector<std::uint64_t> global;       // own particles' global indices, ascending
-    std::vector<std::uint64_t> ghost_global; // the ghosts' (for fault reports)
-    std::vector<double> points_at_lists;     // own positions when the ghost lists were made
-    std::unique_ptr<GhostPlan> plan;         // null for a set without positions
+    std::vector<std::uint64_t> global;             // own particles' global indices, ascending
+    std::vector<std::uint64_t> ghost_global;       // the ghosts' (for fault reports)
+    std::vector<double> points_at_lists;           // own positions when the ghost lists were made
+    std::unique_ptr<GhostPlan> plan;               // null for a set without positions
+    std::vector<std::vector<std::byte>> last_sent; // each field's rows at its last exchange
   };
 
-  // Zoltan's regions from a share of every positioned particle (each process passes a slice of
-  // the whole state it holds, so that the work is spread).
-  void cut_regions(State& state) {
+  // Every positioned particle this process holds, own ones first, then the ghosts; whether its
+  // set moves, and its index in the run (the sets' indices one after the other).
+  struct HeldPoints {
     std::vector<double> points;
-    std::vector<std::uint64_t> ids;
+    std::vector<unsigned char> moving;
+    std::vector<std::uint64_t> ids; // own particles only
+  };
+  HeldPoints held_points(State& state, bool with_ghosts) {
+    HeldPoints held;
+    std::vector<double> ghost_points;
+    std::vector<unsigned char> ghost_moving;
     std::uint64_t offset = 0;
-    const auto d = static_cast<std::size_t>(dimension_);
-    const auto rank = static_cast<std::uint64_t>(process_rank());
-    const auto count = static_cast<std::uint64_t>(process_count());
+    std::size_t k = 0;
     for_each_set(state, [&](auto& set) {
+      const Pieces& pieces = pieces_[k++];
       const auto* position = detail::position_field(set);
-      if (position == nullptr) {
-        return;
+      const bool moves = std::remove_cvref_t<decltype(set)>::set.motion == Motion::moving;
+      if (position != nullptr) {
+        const std::vector<double> own = detail::points_of(*position);
+        held.points.insert(held.points.end(), own.begin(), own.end());
+        held.moving.insert(held.moving.end(), position->count(), moves ? 1 : 0);
+        for (std::size_t i = 0; i < position->count(); ++i) {
+          held.ids.push_back(offset + (pieces.global.empty() ? i : pieces.global[i]));
+        }
+        const std::size_t ghosts = with_ghosts && pieces.plan ? pieces.plan->ghost_count() : 0;
+        for (std::size_t g = 0; g < ghosts; ++g) {
+          for (int a = 0; a < dimension_; ++a) {
+            ghost_points.push_back(
+                detail::real_value(position->at(a, position->count() + g), position->info().scale));
+          }
+        }
+        ghost_moving.insert(ghost_moving.end(), ghosts, moves ? 1 : 0);
       }
-      const std::vector<double> all = detail::points_of(*position);
-      const std::uint64_t n = position->count();
-      for (std::uint64_t i = n * rank / count; i < n * (rank + 1) / count; ++i) {
-        points.insert(points.end(), all.begin() + static_cast<std::ptrdiff_t>(i * d),
-                      all.begin() + static_cast<std::ptrdiff_t>((i + 1) * d));
-        ids.push_back(offset + i);
-      }
-      offset += n;
+      offset += pieces.total;
     });
-    partition_.balance(points, ids);
+    held.points.insert(held.points.end(), ghost_points.begin(), ghost_points.end());
+    held.moving.insert(held.moving.end(), ghost_moving.begin(), ghost_moving.end());
+    return held;
+  }
+
+  // Zoltan's regions, each with about the same estimated work (collective). At setup every
+  // process holds the whole state and passes a slice of it, so that the work is spread; at a
+  // rebalance each passes its own particles, with its ghosts as their neighbours.
+  void cut_regions(State& state, bool whole_state_held) {
+    const HeldPoints held = held_points(state, !whole_state_held);
+    std::vector<float> work =
+        estimated_work(held.points, held.moving, held.ids.size(), dimension_, reach_);
+    const auto d = static_cast<std::size_t>(dimension_);
+    // The own particles only (the ghosts were their neighbours in the estimate).
+    std::span<const double> points =
+        std::span<const double>(held.points).first(held.ids.size() * d);
+    std::span<const std::uint64_t> ids(held.ids);
+    std::span<const float> weights(work);
+    if (whole_state_held) {
+      const auto rank = static_cast<std::uint64_t>(process_rank());
+      const auto count = static_cast<std::uint64_t>(process_count());
+      const std::uint64_t n = held.ids.size();
+      const std::uint64_t first = n * rank / count;
+      const std::uint64_t end = n * (rank + 1) / count;
+      points = points.subspan(first * d, (end - first) * d);
+      ids = ids.subspan(first, end - first);
+      weights = weights.subspan(first, end - first);
+    }
+    partition_.balance(points, ids, weights);
+  }
+
+  // This process's estimated work (with its ghosts as neighbours), kept for the summary; returns
+  // the largest process's over the mean (collective).
+  double measure_work(State& state) {
+    const HeldPoints held = held_points(state, /*with_ghosts=*/true);
+    double mine = 0.0;
+    for (const float w :
+         estimated_work(held.points, held.moving, held.ids.size(), dimension_, reach_)) {
+      mine += w;
+    }
+    work_ = mine;
+    const double largest = max_over_processes(mine);
+    // The mean from an exact integer total (work rounded to whole pairs).
+    const double mean =
+        static_cast<double>(sum_over_processes(static_cast<std::int64_t>(std::llround(mine)))) /
+        process_count();
+    return mean > 0.0 ? largest / mean : 1.0;
+  }
+
+  // Whether the largest process's estimated work now exceeds the mean by the factor given, and
+  // by more than right after the last cut (which RCB may not have evened further). Collective.
+  bool work_drifted_apart(State& state) {
+    const double imbalance = measure_work(state);
+    if (rebalance_above_ <= 1.0) {
+      return true; // at every migration (tests)
+    }
+    return imbalance > std::max(rebalance_above_, imbalance_after_cut_ + 0.03);
   }
 
   void keep_own_particles(State& state) {
@@ -336,6 +436,7 @@ private:
 
   // Which own particles each other process needs within the reach and the skin (collective).
   void remake_ghost_lists(State& state) {
+    ++ghost_lists_made_;
     std::size_t k = 0;
     for_each_set(state, [&](auto& set) {
       Pieces& pieces = pieces_[k++];
@@ -349,25 +450,102 @@ private:
     });
   }
 
-  // Every field's ghosts from their owners' rows (collective).
-  void refresh_ghosts(State& state) {
+  // Every field's ghosts from their owners' rows (collective). After the ghost lists were made
+  // every field goes; otherwise only the fields whose rows to send changed, on some process,
+  // since they were last sent (a kick changes the velocities, a drift the positions, a fixed
+  // set nothing), all of a set's in one exchange.
+  void refresh_ghosts(State& state, bool every_field) {
+    // Each field's rows to send, as bytes in the plan's order, and a bit for each that changed
+    // (fields beyond the 64th always go).
+    std::vector<std::vector<std::vector<std::byte>>> rows(pieces_.size());
+    std::vector<std::vector<std::size_t>> row_bytes(pieces_.size());
+    std::uint64_t changed = 0;
+    unsigned bit = 0;
     std::size_t k = 0;
     for_each_set(state, [&](auto& set) {
-      const Pieces& pieces = pieces_[k++];
+      Pieces& pieces = pieces_[k];
+      auto& set_rows = rows[k];
+      auto& set_row_bytes = row_bytes[k++];
       if (!pieces.plan) {
         return;
       }
+      const std::span<const std::uint32_t> sent = pieces.plan->sent_particles();
+      std::size_t f = 0;
       for_each_field_of(set, [&](auto& field) {
         using Raw = typename std::remove_cvref_t<decltype(field)>::value_type;
         const auto width = static_cast<std::size_t>(field.components());
-        const std::vector<Raw> rows =
-            pieces.plan->template exchange_from<Raw>(width, [&](std::size_t i, Raw* row) {
-              for (std::size_t c = 0; c < width; ++c) {
-                row[c] = field.at(static_cast<int>(c), i);
-              }
-            });
-        field.set_ghosts(pieces.plan->ghost_count(), detail::components_of_rows(rows, width),
-                         pieces.plan.get());
+        std::vector<Raw> values(sent.size() * width);
+        for (std::size_t n = 0; n < sent.size(); ++n) {
+          for (std::size_t c = 0; c < width; ++c) {
+            values[n * width + c] = field.at(static_cast<int>(c), sent[n]);
+          }
+        }
+        std::vector<std::byte> bytes(values.size() * sizeof(Raw));
+        std::memcpy(bytes.data(), values.data(), bytes.size());
+        if (pieces.last_sent.size() <= f || pieces.last_sent[f] != bytes) {
+          changed |= bit < 64 ? std::uint64_t{1} << bit : 0;
+        }
+        set_rows.push_back(std::move(bytes));
+        set_row_bytes.push_back(width * sizeof(Raw));
+        ++f;
+        ++bit;
+      });
+      pieces.last_sent.resize(f);
+    });
+    if (!every_field) {
+      changed = or_over_processes(changed);
+    }
+    bit = 0;
+    k = 0;
+    for_each_set(state, [&](auto& set) {
+      Pieces& pieces = pieces_[k];
+      auto& set_rows = rows[k];
+      const auto& set_row_bytes = row_bytes[k++];
+      if (!pieces.plan) {
+        return;
+      }
+      // The chosen fields side by side in each particle's row.
+      std::vector<std::size_t> offsets;
+      std::size_t row = 0;
+      for (const std::size_t bytes : set_row_bytes) {
+        const bool goes = every_field || bit >= 64 || ((changed >> bit) & 1U) != 0;
+        offsets.push_back(goes ? row : SIZE_MAX);
+        row += goes ? bytes : 0;
+        ++bit;
+      }
+      if (row == 0) {
+        return;
+      }
+      const std::size_t sent = pieces.plan->sent_count();
+      std::vector<std::byte> packed(sent * row);
+      for (std::size_t f = 0; f < offsets.size(); ++f) {
+        if (offsets[f] != SIZE_MAX) {
+          for (std::size_t n = 0; n < sent; ++n) {
+            std::memcpy(packed.data() + n * row + offsets[f],
+                        set_rows[f].data() + n * set_row_bytes[f], set_row_bytes[f]);
+          }
+        }
+      }
+      const std::vector<std::byte> received =
+          pieces.plan->exchange_packed(std::span<const std::byte>(packed), row);
+      const std::size_t ghosts = pieces.plan->ghost_count();
+      std::size_t f = 0;
+      for_each_field_of(set, [&](auto& field) {
+        using Raw = typename std::remove_cvref_t<decltype(field)>::value_type;
+        const std::size_t offset = offsets[f];
+        if (offset != SIZE_MAX) {
+          const auto width = static_cast<std::size_t>(field.components());
+          std::vector<Raw> values(ghosts * width);
+          for (std::size_t g = 0; g < ghosts; ++g) {
+            for (std::size_t c = 0; c < width; ++c) {
+              std::memcpy(&values[c * ghosts + g],
+                          received.data() + g * row + offset + c * sizeof(Raw), sizeof(Raw));
+            }
+          }
+          field.set_ghosts(ghosts, std::move(values), pieces.plan.get());
+          pieces.last_sent[f] = std::move(set_rows[f]);
+        }
+        ++f;
       });
     });
   }
@@ -376,6 +554,11 @@ private:
   int dimension_;
   double reach_;
   double skin_;
+  double rebalance_above_;
+  double imbalance_after_cut_ = 1.0; // largest / mean estimated work after the last cut
+  double work_ = 0.0;                // this process's estimated work at the last migration
+  std::uint64_t ghost_lists_made_ = 0;
+  std::uint64_t rebalances_ = 0;
   std::vector<Pieces> pieces_; // one per set, in the state's order
 };
 

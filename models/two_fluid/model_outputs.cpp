@@ -90,33 +90,34 @@ template <int D, class Arith>
 void Model<D, Arith>::viscosity_views(const ViewSink& sink) {
   // Eq. (34)'s viscosity term (with eq. 39's eta_bar + eta_r, as the dissipate sub-step applies
   // it) on each fluid particle, as an acceleration (Fig. 5(b)): the dissipation's pair term over
-  // a unit time with the friction and the contact terms off. Summed in floating point for the
-  // output only.
-  PairSums<FloatArithmetic, D + 1> sums(
-      components_of<D + 1>("viscous_acceleration", fixedpoint::Scale()));
-  sum_pairs<FloatArithmetic>(layout_, dissipation_term(1.0, 0.0, 0.0, /*contacts=*/false), sums);
+  // one time step with the friction and the contact terms off, summed exactly at the momentum's
+  // scale like the sub-step's own sums (the same bits for any decomposition), divided by dt.
+  const double dt = this->info_.dt;
+  PairSums<Arith, D + 1> sums(dissipation_sums_.quantities());
+  sum_pairs<Arith>(layout_, dissipation_term(dt, 0.0, 0.0, /*contacts=*/false), sums);
   moving_vector_views(sink, "viscous_acceleration", "m/s^2",
                       [&](const auto&, int k, std::size_t, std::uint32_t slot, double mass) {
-                        return sums.value(k, slot) / mass;
+                        return sums.value(k, slot) / (mass * dt);
                       });
 }
 
 template <int D, class Arith>
 void Model<D, Arith>::spin_force_views(const ViewSink& sink) {
   // Eq. (40)'s spin force on each fluid particle (Fig. 10): the accounted components of the
-  // impulses over a unit time with only the spin term among the non-gradient forces. Summed in
-  // floating point for the output only: the state never sees these sums.
+  // impulses over one time step with only the spin term among the non-gradient forces, summed
+  // exactly at the momentum's scale like the kick's own sums (the same bits for any
+  // decomposition), divided by dt. The state never sees these sums.
   const Parameters<D>& p = parameters_;
-  PairSums<FloatArithmetic, 2 * D> sums(components_of<2 * D>("spin_force", fixedpoint::Scale()));
-  sum_pairs<FloatArithmetic>(layout_,
-                             ImpulseTerm<D, true>{kernel_, inputs_, p.pressure_form,
-                                                  p.rotational_viscosity, p.gravity, 1.0,
-                                                  /*thermomechanical_on=*/false,
-                                                  /*spin_on=*/true},
-                             sums);
+  const double dt = this->info_.dt;
+  PairSums<Arith, 2 * D> sums(counted_impulse_sums_.quantities());
+  sum_pairs<Arith>(layout_,
+                   ImpulseTerm<D, true>{kernel_, inputs_, p.pressure_form, p.rotational_viscosity,
+                                        p.gravity, dt, /*thermomechanical_on=*/false,
+                                        /*spin_on=*/true},
+                   sums);
   moving_vector_views(sink, "spin_force", D == 2 ? "N/m" : "N",
                       [&](const auto&, int k, std::size_t, std::uint32_t slot, double) {
-                        return sums.value(D + k, slot);
+                        return sums.value(D + k, slot) / dt;
                       });
 }
 

@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <random>
+#include <span>
 #include <vector>
 
 namespace {
@@ -82,6 +83,47 @@ TEST(Processes, MaximumAndMinimumAreTheOneProcessOnes) {
   }
   EXPECT_EQ(revsph::distributed::max_over_processes(my_largest), largest);
   EXPECT_EQ(revsph::distributed::min_over_processes(my_smallest), smallest);
+}
+
+// Each process sets the bits of the flags i with i % count == rank among a fixed random set:
+// the or over the processes is the whole set, as one process would have it.
+TEST(Processes, BitwiseOrIsTheOneProcessOr) {
+  std::mt19937_64 generator(777);
+  const std::uint64_t all = generator();
+  std::uint64_t mine = 0;
+  for (int bit = 0; bit < 64; ++bit) {
+    if (bit % process_count() == process_rank()) {
+      mine |= all & (std::uint64_t{1} << bit);
+    }
+  }
+  EXPECT_EQ(revsph::distributed::or_over_processes(mine), all);
+}
+
+// Bytes whose counts each process knows in advance (each sends rank + p + 1 bytes to process p,
+// the byte value the sender's rank) arrive as with the exchange that sends the counts first.
+TEST(Processes, ExchangeWithKnownCountsIsTheExchangeWithCounts) {
+  const auto count = static_cast<std::size_t>(process_count());
+  const auto me = static_cast<std::size_t>(process_rank());
+  std::vector<std::size_t> send_bytes(count), receive_bytes(count);
+  std::vector<std::byte> send;
+  for (std::size_t p = 0; p < count; ++p) {
+    send_bytes[p] = me + p + 1;
+    receive_bytes[p] = p + me + 1;
+    send.insert(send.end(), send_bytes[p], static_cast<std::byte>(me));
+  }
+  std::vector<std::size_t> received_bytes;
+  const std::vector<std::byte> with_counts =
+      revsph::distributed::exchange_bytes(send, send_bytes, received_bytes);
+  const std::vector<std::byte> known = revsph::distributed::exchange_bytes(
+      send, send_bytes, std::span<const std::size_t>(receive_bytes));
+  EXPECT_EQ(received_bytes, receive_bytes);
+  EXPECT_EQ(known, with_counts);
+  std::size_t at = 0;
+  for (std::size_t p = 0; p < count; ++p) {
+    for (std::size_t b = 0; b < receive_bytes[p]; ++b) {
+      ASSERT_EQ(known[at++], static_cast<std::byte>(p));
+    }
+  }
 }
 
 } // namespace

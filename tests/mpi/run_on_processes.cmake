@@ -2,12 +2,10 @@
 # (docs/design/distributed.md, pieces 3 and 5): energy.csv and diagnostics.csv to the last digit,
 # run.xdmf, and every snapshot's datasets bit for bit (tests/mpi/same_run_files.py). Run by CTest:
 # cmake -DMPIEXEC=... -DREVSPH=... -DPYTHON=... -DCASE=... -DSTEPS=... -DCOUNTS=2,3 -DWORK=dir
-# [-DFLOAT_VIEWS=SET/NAME,...] -P run_on_processes.cmake (FLOAT_VIEWS: views a model sums in
-# floating point for the output only, compared to 1e-12: same_run_files.py)
+# -P run_on_processes.cmake
 set(ENV{OMPI_ALLOW_RUN_AS_ROOT} 1)
 set(ENV{OMPI_ALLOW_RUN_AS_ROOT_CONFIRM} 1)
 string(REPLACE "," ";" COUNTS "${COUNTS}")
-string(REPLACE "," ";" FLOAT_VIEWS "${FLOAT_VIEWS}")
 file(REMOVE_RECURSE ${WORK})
 math(EXPR every "${STEPS} / 2")
 foreach(count 1 ${COUNTS})
@@ -22,7 +20,6 @@ foreach(count 1 ${COUNTS})
   if(NOT count EQUAL 1)
     execute_process(
       COMMAND ${PYTHON} ${CMAKE_CURRENT_LIST_DIR}/same_run_files.py ${WORK}/np1 ${WORK}/np${count}
-              ${FLOAT_VIEWS}
       OUTPUT_VARIABLE report RESULT_VARIABLE status)
     message(STATUS "${CASE} on ${count} processes: ${report}")
     if(NOT status EQUAL 0)

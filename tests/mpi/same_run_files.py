@@ -2,17 +2,13 @@
 for byte the same energy.csv, diagnostics.csv (if any) and run.xdmf, and snapshot files with the
 same datasets, bit for bit, and the same attributes (but the build's git commit).
 
-usage: /usr/bin/python3 same_run_files.py ONE_PROCESS_RUN OTHER_RUN [FLOAT_VIEW ...]
-FLOAT_VIEW (SET/NAME): a derived view a model sums in floating point for the output only
-(two_fluid's spin_force and viscous_acceleration); the order of its pair sums follows the
-decomposition, so it may differ in the last bits: it must agree to 1e-12 of its largest value.
+usage: /usr/bin/python3 same_run_files.py ONE_PROCESS_RUN OTHER_RUN
 Prints what differs and exits 1, or prints a summary and exits 0."""
 
 import sys
 from pathlib import Path
 
 import h5py
-import numpy as np
 
 
 def objects(f):
@@ -21,7 +17,7 @@ def objects(f):
     return set(names)
 
 
-def same_snapshot(a_path, b_path, float_views):
+def same_snapshot(a_path, b_path):
     differences = []
     with h5py.File(a_path) as a, h5py.File(b_path) as b:
         if objects(a) != objects(b):
@@ -30,13 +26,8 @@ def same_snapshot(a_path, b_path, float_views):
             x, y = a[name], b[name]
             if isinstance(x, h5py.Dataset):
                 u, v = x[()], y[()]
-                if u.dtype != v.dtype or u.shape != v.shape:
+                if u.dtype != v.dtype or u.shape != v.shape or u.tobytes() != v.tobytes():
                     differences.append(f"{b_path.name}: dataset {name}")
-                elif u.tobytes() != v.tobytes():
-                    view = name.removeprefix("particles/")
-                    scale = np.max(np.abs(u)) if u.size else 0.0
-                    if view not in float_views or np.max(np.abs(u - v)) > 1e-12 * scale:
-                        differences.append(f"{b_path.name}: dataset {name}")
             for key in x.attrs:
                 if str(x.attrs[key]) != str(y.attrs.get(key)):
                     differences.append(f"{b_path.name}: {name} attribute {key}")
@@ -48,7 +39,6 @@ def same_snapshot(a_path, b_path, float_views):
 
 def main():
     one, other = Path(sys.argv[1]), Path(sys.argv[2])
-    float_views = set(sys.argv[3:])
     differences = []
     for name in ("energy.csv", "diagnostics.csv", "run.xdmf"):
         if (one / name).exists() or (other / name).exists():
@@ -59,8 +49,7 @@ def main():
         differences.append("the snapshot files")
     else:
         for name in snapshots:
-            differences += same_snapshot(one / "snapshots" / name, other / "snapshots" / name,
-                                         float_views)
+            differences += same_snapshot(one / "snapshots" / name, other / "snapshots" / name)
     if not snapshots:
         differences.append("no snapshots")
     for line in differences:

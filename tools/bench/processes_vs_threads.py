@@ -1,74 +1,96 @@
 #!/usr/bin/python3
 """Stepping throughput of a case on P processes x T threads, for the distributed run (issue 32).
 
-Times `mpirun -np P revsph hash CASE --steps N` and `--steps 2N` for each layout and takes the
-difference, so that the set-up (the same on every process) drops out: the rate is moving particles
-x N steps / that time difference. Every layout runs in turn, --repeats rounds, alternating, and the
-median is kept (the machines are shared and noisy: read the ratios, measured in one run).
+Runs `mpirun -np P revsph run CASE --steps N --threads T` for each layout and reads its
+summary.json: the stepping time alone (set-up and snapshot writes excluded), the final hash and,
+on more than one process, the "distribution" record (seconds inside MPI, bytes sent, ghosts,
+rebalances). Every layout runs in turn, --repeats rounds, alternating, and the median is kept
+(the machines are shared and noisy: read the ratios, measured in one run).
 
   /usr/bin/python3 tools/bench/processes_vs_threads.py --revsph build-mpi/bin/revsph \
-      --case dambreak --steps 100 --layouts 1x2 2x1 --repeats 3 --output tools/bench/results/X.md
+      --case dambreak --steps 200 --layouts 1x2 2x1 --repeats 3 --output tools/bench/results/X.md
 """
 
 import argparse
+import json
 import os
 import statistics
 import subprocess
-import time
+import tempfile
 
 from markdown_record import emit
 
 
-def timed(revsph, case, steps, processes, threads, sets):
+def run(revsph, case, steps, processes, threads, sets, directory):
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
                OMP_NUM_THREADS=str(threads))
+    out = os.path.join(directory, f"{processes}x{threads}")
     command = ["mpirun", "-np", str(processes), "--oversubscribe", "--bind-to", "none",
-               "-x", "OMP_NUM_THREADS", revsph, "hash", case, "--steps", str(steps),
-               "--threads", str(threads)]
+               "-x", "OMP_NUM_THREADS", revsph, "run", case, "--steps", str(steps),
+               "--threads", str(threads), "--out", out, "--force"]
     for s in sets:
         command += ["--set", s]
-    start = time.perf_counter()
-    result = subprocess.run(command, env=env, capture_output=True, text=True, check=True)
-    return time.perf_counter() - start, result.stdout.strip().splitlines()[-1]
+    subprocess.run(command, env=env, capture_output=True, text=True, check=True)
+    with open(os.path.join(out, "summary.json")) as f:
+        return json.load(f)
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--revsph", required=True)
     parser.add_argument("--case", required=True)
-    parser.add_argument("--steps", type=int, default=100)
+    parser.add_argument("--steps", type=int, default=200)
     parser.add_argument("--layouts", nargs="+", default=["1x2", "2x1"],
                         help="PROCESSESxTHREADS each")
     parser.add_argument("--repeats", type=int, default=3)
-    parser.add_argument("--particles", type=int, default=0,
-                        help="moving particles of the case (for particle-steps/s)")
     parser.add_argument("--set", action="append", default=[], dest="sets")
     parser.add_argument("--output")
     args = parser.parse_args()
 
     layouts = [tuple(int(x) for x in layout.split("x")) for layout in args.layouts]
-    seconds = {layout: [] for layout in layouts}
+    rates = {layout: [] for layout in layouts}
+    last = {}
     hashes = set()
-    for _ in range(args.repeats):
-        for layout in layouts:
-            short, first = timed(args.revsph, args.case, args.steps, *layout, args.sets)
-            long, second = timed(args.revsph, args.case, 2 * args.steps, *layout, args.sets)
-            seconds[layout].append(long - short)
-            hashes.add(second)
+    with tempfile.TemporaryDirectory() as directory:
+        for _ in range(args.repeats):
+            for layout in layouts:
+                summary = run(args.revsph, args.case, args.steps, *layout, args.sets, directory)
+                rates[layout].append(summary["stepping_particle_steps_per_second"])
+                hashes.add(summary["final_hash"])
+                last[layout] = summary
+    command = ["tools/bench/processes_vs_threads.py", "--case", args.case, "--steps",
+               str(args.steps), "--layouts", *args.layouts, "--repeats", str(args.repeats)]
+    for s in args.sets:
+        command += ["--set", s]
+    particles = sum(last[layouts[0]]["particles"].values())
     lines = [f"# {args.case}: {args.steps} steps, processes x threads",
              "",
-             f"`{' '.join(['tools/bench/processes_vs_threads.py', '--case', args.case, '--steps', str(args.steps), '--layouts'] + args.layouts + ['--repeats', str(args.repeats)] + sum((['--set', s] for s in args.sets), []))}`",
+             f"    /usr/bin/python3 {' '.join(command)}",
              "",
-             "| layout | median s per " + str(args.steps) + " steps | all | particle-steps/s | rate / first layout |",
-             "|---|---|---|---|---|"]
-    first = statistics.median(seconds[layouts[0]])
+             f"{particles} particles. Rates: moving particle-steps per second of stepping "
+             "(summary.json's stepping_particle_steps_per_second); in MPI: the smallest and "
+             "largest process's seconds inside MPI calls over the steps (the difference is "
+             "mostly waiting), from the last round.",
+             "",
+             "| layout | median particle-steps/s | all | rate / first layout | in MPI (s) | "
+             "stepping (s) | ghost fraction | bytes sent / step | MPI calls / step | "
+             "work imbalance | rebalances |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    first = statistics.median(rates[layouts[0]])
     for layout in layouts:
-        median = statistics.median(seconds[layout])
-        rate = args.particles * args.steps / median if args.particles else float("nan")
-        lines.append(f"| {layout[0]} x {layout[1]} | {median:.3f} | "
-                     f"{', '.join(f'{s:.3f}' for s in seconds[layout])} | {rate:.3g} | "
-                     f"{first / median:.3f} |")
-    lines += ["", f"final hashes over every run: {len(hashes)} distinct ({', '.join(h[:16] for h in sorted(hashes))})"]
+        median = statistics.median(rates[layout])
+        d = last[layout].get("distribution", {})
+        in_mpi = (f"{d['communication_seconds_min']:.3f}-{d['communication_seconds_max']:.3f}"
+                  if layout[0] > 1 else "-")
+        lines.append(
+            f"| {layout[0]} x {layout[1]} | {median:.3g} | "
+            f"{', '.join(f'{r:.3g}' for r in rates[layout])} | {median / first:.3f} | {in_mpi} | "
+            f"{last[layout]['stepping_seconds']:.2f} | {d.get('ghost_fraction', 0):.4f} | "
+            f"{d.get('bytes_sent_per_step', 0):.4g} | {d.get('mpi_calls_per_step', 0):.1f} | "
+            f"{d.get('estimated_work_imbalance', 1):.3f} | {d.get('rebalances', 0)} |")
+    lines += ["", f"final hashes over every run: {len(hashes)} distinct "
+              f"({', '.join(h[:16] for h in sorted(hashes))}); commit "
+              f"{last[layouts[0]]['build']['git_commit']}"]
     emit(lines, args.output)
 
 

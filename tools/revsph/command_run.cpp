@@ -110,9 +110,13 @@ int run_command(const RunOptions& options) {
     }
     output.write_snapshot(simulation);
     const auto stepping_start = std::chrono::steady_clock::now();
+    const distributed::CommunicationTally tally_before = distributed::communication_tally();
     run_steps(simulation, steps, hooks);
     summary.stepping_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - stepping_start).count();
+    summary.distribution = summarise_distribution(
+        simulation, distributed::communication_tally() - tally_before, summary.stepping_seconds,
+        simulation.steps_taken() - summary.start_step, summary.threads);
     output.write_snapshot(simulation);
   } catch (const SimulationFault& fault) {
     // The state is left half-updated by the failed step: no snapshot of it; the last one
@@ -157,6 +161,9 @@ int run_command(const RunOptions& options) {
               summary.wall_seconds);
   for (const EnergyTerm& maximum : diagnostics.maxima()) {
     std::printf("%s: max %.6g\n", maximum.name.c_str(), maximum.value);
+  }
+  if (summary.distribution && summary.processes > 1) {
+    std::cout << distribution_line(*summary.distribution) << "\n";
   }
   std::cout << "state hash: " << summary.final_hash << "\n";
   std::cout << "wrote " << output.directory().string() << "/: energy.csv, summary.json, run.xdmf, "

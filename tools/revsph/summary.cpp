@@ -52,6 +52,24 @@ void write_summary(const std::filesystem::path& path, Simulation& simulation, co
       run.stepping_seconds > 0 ? particle_steps / run.stepping_seconds : 0.0;
   summary["threads"] = run.threads;
   summary["processes"] = run.processes;
+  if (const auto& d = run.distribution) {
+    // docs/running.md, "Several processes".
+    summary["distribution"] = {{"processes", d->processes},
+                               {"threads_per_process", d->threads},
+                               {"partition", "Zoltan RCB weighted by estimated work"},
+                               {"stepping_seconds", d->stepping_seconds},
+                               {"communication_seconds_min", d->communication_seconds_min},
+                               {"communication_seconds_max", d->communication_seconds_max},
+                               {"bytes_sent_per_step", d->bytes_sent_per_step},
+                               {"mpi_calls_per_step", d->calls_per_step},
+                               {"mpi_exchanges_per_step", d->exchanges_per_step},
+                               {"own_particles_min", d->own_particles_min},
+                               {"own_particles_max", d->own_particles_max},
+                               {"ghost_fraction", d->ghost_fraction},
+                               {"estimated_work_imbalance", d->work_imbalance},
+                               {"ghost_lists_made", d->ghost_lists_made},
+                               {"rebalances", d->rebalances}};
+  }
   // How the threads waited at barriers (core/openmp_waiting.hpp: chosen from the machine's
   // load at start), which a benchmark's throughput depends on.
   summary["openmp_waiting"] = openmp_waiting_description();

@@ -3,6 +3,7 @@
 
 #include "core/energy_log.hpp"
 #include "core/simulation.hpp"
+#include "tools/revsph/distribution_summary.hpp"
 
 #include <filesystem>
 #include <optional>
@@ -28,6 +29,7 @@ struct RunSummary {
   std::vector<EnergyTerm> diagnostics_maxima; // the largest value of each diagnostic
   std::vector<EnergyTerm> diagnostics_minima; // and the smallest
   std::optional<std::string> last_snapshot;
+  std::optional<DistributionSummary> distribution; // after the steps (not after a fault)
 };
 
 // Written atomically (temporary file, then rename).
