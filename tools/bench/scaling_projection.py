@@ -3,18 +3,25 @@
 
 Measured on this machine, then modelled beyond it. The inputs are summary.json files of `revsph
 run` (tools/revsph/summary.cpp):
-  --single       a one-process, one-thread run of the 3D case: the compute time per particle-step;
-  --distributed  the same case on P >= 2 processes, one thread each: its "distribution" record
-                 gives the bytes sent per ghost and step, the exchanges and the other MPI calls
-                 (reductions) per step.
+  --single       a one-process run of the 3D case with as many threads as the distributed run
+                 has processes (every core busy in both, so that sharing the memory costs both
+                 alike): the compute time per particle-step and core, t_c;
+  --distributed  the same case and steps on P >= 2 processes, one thread each: its
+                 "distribution" record gives the bytes sent per ghost and exchange, the exchanges
+                 and the other MPI calls (reductions) per step, and the work a ghost adds, kappa:
+                 the processes' compute time (stepping minus the mean time inside MPI, times P)
+                 over t_c x particle-steps is 1 + kappa x ghost fraction.
 
 The model (each assumption is printed with the record):
   * a case of N particles on P processes; each process owns n = N / P particles in a near-cubic
     region (recursive coordinate bisection of a bulk 3D domain) of side n^(1/3) particle spacings;
-  * its ghosts fill a band of `--band` spacings around it (the reach plus the skin of a quarter
-    of it, in particle spacings dr): G = (n^(1/3) + 2 band)^3 - n, capped at N - n;
-  * compute per step = t_c (n + kappa G): ghosts are built into the cell list and their pairs
-    with own particles are computed on both sides (kappa = 1: an upper bound);
+  * its ghosts fill a band of `--band` spacings around its inner faces (the reach plus the skin of
+    a quarter of it, in particle spacings dr): with m = P^(1/3) regions along each axis a share
+    f = 1 - 1/m of the faces is inner, and G = (n^(1/3) + 2 f band)^3 - n;
+  * compute per step = t_c (n + kappa G), kappa measured (above): a ghost is built into the
+    cell list and the pair list, its pairs with own particles are computed on both sides, and the
+    distributed layer's own work (refreshes, migration checks) is counted in it;
+  * the work is balanced (the imbalance seen on 2 processes is not carried over);
   * each exchange per step costs an all-to-all of the counts (one message per other process:
     (P - 1) latencies, OpenMPI's linear algorithm; removed where the plan knows the counts), and
     the values to each neighbour region (up to 26): 26 latencies + bytes / bandwidth;
@@ -37,18 +44,19 @@ from markdown_record import emit
 LATENCY = 1.0e-6      # s per message (InfiniBand HDR, MPI small-message latency)
 BANDWIDTH = 25.0e9    # bytes/s (200 Gb/s HDR link)
 NEIGHBOURS = 26       # regions around a cubic region in 3D
-KAPPA = 1.0           # ghost work relative to an own particle's (upper bound)
 
 
-def ghosts(n, band, total):
-    side = n ** (1.0 / 3.0)
-    return min((side + 2.0 * band) ** 3 - n, total - n)
+def ghosts(n, band, processes):
+    if processes == 1:
+        return 0.0
+    inner = 1.0 - processes ** (-1.0 / 3.0)
+    return (n ** (1.0 / 3.0) + 2.0 * inner * band) ** 3 - n
 
 
 def step_seconds(total, processes, measured):
     n = total / processes
-    g = ghosts(n, measured["band"], total) if processes > 1 else 0.0
-    compute = measured["t_c"] * (n + KAPPA * g)
+    g = ghosts(n, measured["band"], processes)
+    compute = measured["t_c"] * (n + measured["kappa"] * g)
     if processes == 1:
         return compute, 0.0, g / n
     neighbours = min(NEIGHBOURS, processes - 1)
@@ -79,8 +87,18 @@ def main():
     particles_measured = sum(distributed["particles"].values())
     ghost_total = record["ghost_fraction"] * particles_measured
     exchanges = record["mpi_exchanges_per_step"]
+    processes = record["processes"]
+    if single["threads"] != processes or single["steps"] != distributed["steps"]:
+        raise SystemExit("--single must have as many threads as --distributed has processes, "
+                         "and the same steps")
+    t_c = single["threads"] / single["stepping_particle_steps_per_second"]
+    particle_steps = (distributed["stepping_particle_steps_per_second"]
+                      * distributed["stepping_seconds"])
+    compute = processes * (record["stepping_seconds"] - record["communication_seconds_mean"])
+    kappa = max(0.0, (compute / (t_c * particle_steps) - 1.0) / record["ghost_fraction"])
     measured = {
-        "t_c": 1.0 / single["stepping_particle_steps_per_second"],
+        "t_c": t_c,
+        "kappa": kappa,
         "band": args.band,
         "exchanges": exchanges,
         "reductions": record["mpi_calls_per_step"] - exchanges,
@@ -97,9 +115,12 @@ def main():
         "",
         "Measured here (inputs):",
         "",
-        f"- compute: {measured['t_c'] * 1e6:.3f} us per particle-step on one core "
-        f"({single['stepping_particle_steps_per_second']:.3g} particle-steps/s, "
-        f"{sum(single['particles'].values())} particles, commit {single['build']['git_commit']});",
+        f"- compute: t_c = {t_c * 1e6:.3f} us per particle-step and core "
+        f"({single['stepping_particle_steps_per_second']:.3g} particle-steps/s on 1 process x "
+        f"{single['threads']} threads, {sum(single['particles'].values())} particles, "
+        f"{single['steps']} steps, commit {single['build']['git_commit']});",
+        f"- the work a ghost adds: kappa = {kappa:.2f} of an own particle's (the {processes} "
+        f"processes computed {compute:.2f} s in all, {t_c * particle_steps:.2f} s at t_c);",
         f"- on {record['processes']} processes: ghost fraction {record['ghost_fraction']:.4f}, "
         f"{record['bytes_sent_per_step']:.4g} bytes sent a step in "
         f"{exchanges:.2f} exchanges ({measured['bytes_per_ghost_exchange']:.1f} bytes per ghost "
@@ -108,7 +129,7 @@ def main():
         "",
         "Assumed (see the script's docstring): InfiniBand HDR, latency "
         f"{LATENCY * 1e6:.1f} us, bandwidth {BANDWIDTH / 1e9:.0f} GB/s; near-cubic regions; "
-        f"ghost work kappa = {KAPPA}; no overlap of communication and computation; an all-to-all "
+        "the work balanced; no overlap of communication and computation; an all-to-all "
         "of the counts before each exchange costs one latency per process.",
         "",
     ]

@@ -22,6 +22,10 @@ DistributionSummary summarise_distribution(const Simulation& simulation,
   summary.threads = threads;
   summary.communication_seconds_min = min_over_processes(stepping.seconds);
   summary.communication_seconds_max = max_over_processes(stepping.seconds);
+  fixedpoint::ExactDoubleSum seconds;
+  seconds.add(stepping.seconds);
+  summary.communication_seconds_mean =
+      sum_over_processes(seconds).value() / static_cast<double>(summary.processes);
   summary.stepping_seconds = max_over_processes(stepping_seconds);
   const double per_step = steps > 0 ? 1.0 / static_cast<double>(steps) : 0.0;
   summary.bytes_sent_per_step = static_cast<double>(total(stepping.bytes_sent)) * per_step;

@@ -18,6 +18,7 @@ struct DistributionSummary {
   // transfers themselves, the largest adds the waiting for the slowest process.
   double communication_seconds_min = 0.0;
   double communication_seconds_max = 0.0;
+  double communication_seconds_mean = 0.0;
   double stepping_seconds = 0.0;
   double bytes_sent_per_step = 0.0; // by every process together
   double calls_per_step = 0.0;      // MPI calls of one process (the same on each)
