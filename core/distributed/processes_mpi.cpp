@@ -49,6 +49,15 @@ void check(int status, const char* what) {
   }
 }
 
+// One value reduced over every process with `op`, timed.
+template <class T>
+T all_reduce(T local, MPI_Datatype type, MPI_Op op, const char* what) {
+  T result{};
+  const CommunicationTimer timer(to_others(sizeof local));
+  check(MPI_Allreduce(&local, &result, 1, type, op, MPI_COMM_WORLD), what);
+  return result;
+}
+
 } // namespace
 
 ProcessSession::ProcessSession(int& argc, char**& argv) {
@@ -83,19 +92,11 @@ int process_count() {
 }
 
 fixedpoint::int128 sum_over_processes(fixedpoint::int128 local) {
-  fixedpoint::int128 total = 0;
-  const CommunicationTimer timer(to_others(sizeof local));
-  check(MPI_Allreduce(&local, &total, 1, int128_type, int128_sum, MPI_COMM_WORLD),
-        "MPI_Allreduce (int128 sum)");
-  return total;
+  return all_reduce(local, int128_type, int128_sum, "MPI_Allreduce (int128 sum)");
 }
 
 std::int64_t sum_over_processes(std::int64_t local) {
-  std::int64_t total = 0;
-  const CommunicationTimer timer(to_others(sizeof local));
-  check(MPI_Allreduce(&local, &total, 1, MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD),
-        "MPI_Allreduce (int64 sum)");
-  return total;
+  return all_reduce(local, MPI_INT64_T, MPI_SUM, "MPI_Allreduce (int64 sum)");
 }
 
 fixedpoint::ExactDoubleSum sum_over_processes(const fixedpoint::ExactDoubleSum& local) {
@@ -181,27 +182,15 @@ std::vector<std::byte> exchange_bytes(std::span<const std::byte> send,
 }
 
 std::uint64_t or_over_processes(std::uint64_t local) {
-  std::uint64_t result = 0;
-  const CommunicationTimer timer(to_others(sizeof local));
-  check(MPI_Allreduce(&local, &result, 1, MPI_UINT64_T, MPI_BOR, MPI_COMM_WORLD),
-        "MPI_Allreduce (or)");
-  return result;
+  return all_reduce(local, MPI_UINT64_T, MPI_BOR, "MPI_Allreduce (or)");
 }
 
 double max_over_processes(double local) {
-  double result = 0.0;
-  const CommunicationTimer timer(to_others(sizeof local));
-  check(MPI_Allreduce(&local, &result, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD),
-        "MPI_Allreduce (max)");
-  return result;
+  return all_reduce(local, MPI_DOUBLE, MPI_MAX, "MPI_Allreduce (max)");
 }
 
 double min_over_processes(double local) {
-  double result = 0.0;
-  const CommunicationTimer timer(to_others(sizeof local));
-  check(MPI_Allreduce(&local, &result, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD),
-        "MPI_Allreduce (min)");
-  return result;
+  return all_reduce(local, MPI_DOUBLE, MPI_MIN, "MPI_Allreduce (min)");
 }
 
 } // namespace revsph::distributed
