@@ -54,8 +54,10 @@ void CellList<D>::build(const CoordinateView<D>& points) {
 template <int D>
 void CellList<D>::throw_outside(int axis, std::size_t i, double x) const {
   std::ostringstream where;
-  where << "point " << i << " is outside the domain on axis " << axis << " (coordinate " << x
-        << ", domain [" << domain_.min[axis] << ", " << domain_.max[axis] << "])";
+  // The point's index is the exception's, not the message's: the message must read the same
+  // for any decomposition of a distributed run (core/slot_layout.hpp).
+  where << "outside the domain on axis " << axis << " (coordinate " << x << ", domain ["
+        << domain_.min[axis] << ", " << domain_.max[axis] << "])";
   throw PointOutsideDomain(i, where.str());
 }
 

@@ -24,14 +24,21 @@ struct FaultDescription {
 
 class SimulationFault : public std::runtime_error {
 public:
-  SimulationFault(FaultDescription fault, std::int64_t step);
+  // `shared`: in a distributed run, every process threw it at the same point (FaultRecorder),
+  // so that they can agree on one report (ModelSimulation); a fault without it was met by one
+  // process alone, which must end the others (tools/revsph: stop_every_process).
+  SimulationFault(FaultDescription fault, std::int64_t step, bool shared = false);
   const FaultDescription& fault() const { return fault_; }
   // The step during which the fault happened (steps completed before it + 1), -1 if unknown.
   std::int64_t step() const { return step_; }
+  bool shared() const { return shared_; }
+  // A shared fault that another process found (this one has nothing to report).
+  bool found_elsewhere() const { return shared_ && fault_.particle_set.empty(); }
 
 private:
   FaultDescription fault_;
   std::int64_t step_;
+  bool shared_;
 };
 
 class FaultRecorder {
@@ -40,7 +47,9 @@ public:
   void record(std::size_t particle, const char* particle_set, const char* variable,
               const char* reason);
   bool any() const { return any_.load(std::memory_order_relaxed); }
-  // Throws SimulationFault (step unknown) if a fault was recorded, and clears the recorder.
+  // Throws SimulationFault (step unknown) if a fault was recorded, and clears the recorder. In a
+  // distributed run every process calls it at the same point of a step (collective): if any
+  // process recorded a fault, every process throws, a shared fault.
   void throw_if_any();
 
 private:

@@ -4,6 +4,7 @@
 // model never implements this interface by hand.
 
 #include "core/arithmetic.hpp"
+#include "core/distributed/agreed_fault.hpp"
 #include "core/distributed/state_distribution.hpp"
 #include "core/energy.hpp"
 #include "core/fault.hpp"
@@ -253,7 +254,7 @@ public:
           refresh_pieces();
         }
       } catch (const SimulationFault& fault) {
-        throw SimulationFault(with_global_index(fault.fault()), steps_taken_ + 1);
+        throw SimulationFault(reported(fault), steps_taken_ + 1, fault.shared());
       }
       ++steps_taken_;
     }
@@ -393,7 +394,7 @@ private:
       if (fault.step() >= 0) {
         throw;
       }
-      throw SimulationFault(with_global_index(fault.fault()), steps_taken_ + 1);
+      throw SimulationFault(reported(fault), steps_taken_ + 1, fault.shared());
     }
   }
 
@@ -460,6 +461,15 @@ private:
       snapshot.pieces = distribution_->own_rows();
     }
     return snapshot;
+  }
+  // What a fault reports: its particle by its index in the whole state; a fault every process
+  // threw together (a shared one) the one all agree on (collective).
+  FaultDescription reported(const SimulationFault& fault) const {
+    if (!fault.shared()) {
+      return with_global_index(fault.fault());
+    }
+    return distributed::agreed_fault(
+        fault.found_elsewhere() ? std::nullopt : std::optional(with_global_index(fault.fault())));
   }
   // A fault names its particle by its index on this process: in a distributed run, by its index
   // in the whole state instead.

@@ -237,13 +237,17 @@ template <int D>
 template <class Coordinate, class... T, class... Source>
 void SlotLayout<D>::build(const Coordinate& coordinate, double radius,
                           Gathered<T, Source>... gathered) {
+  // Every process of a distributed run builds its layout at the same point: the fault goes
+  // through a recorder, so that they all throw it together (FaultRecorder::throw_if_any).
+  FaultRecorder faults;
   try {
     cells_.build(carrier_count_, coordinate);
   } catch (const PointOutsideDomain& outside) {
     const auto [set, index] = particle_of_carrier(outside.index());
-    throw SimulationFault(
-        {set, index, "position", "left the domain: " + std::string(outside.what())}, -1);
+    const std::string reason = "left the domain: " + std::string(outside.what());
+    faults.record(index, std::string(set).c_str(), "position", reason.c_str());
   }
+  faults.throw_if_any();
   const std::span<const std::uint32_t> carrier = cells_.sorted_points();
   for (int k = 0; k < D; ++k) {
     slot_position_[k].resize(carrier_count_);

@@ -41,7 +41,7 @@ int hash_command(const HashOptions& options) {
   try {
     run_steps(simulation, steps, hooks);
   } catch (const SimulationFault& fault) {
-    return stop_every_process(std::string("the run stopped: ") + fault.what(), simulation_failed);
+    return stop_on_fault(fault);
   }
   // In a distributed run every process holds a piece; each gets the whole state's hash, process
   // 0 prints it.

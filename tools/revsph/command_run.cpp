@@ -121,14 +121,17 @@ int run_command(const RunOptions& options) {
   } catch (const SimulationFault& fault) {
     // The state is left half-updated by the failed step: no snapshot of it; the last one
     // written stays the last good state. (Faults carry their step: ModelSimulation.)
-    // In a distributed run the fault is this process's alone and the others may wait for it in
-    // an exchange: it ends them all (docs/design/distributed.md; no summary.json yet).
-    if (distributed::process_count() > 1) {
-      return stop_every_process(std::string("the run stopped: ") + fault.what(), simulation_failed);
+    // In a distributed run a fault met by one process alone (not shared) may leave the others
+    // waiting for it in an exchange: it ends them all (docs/design/distributed.md). A shared
+    // one, the same on every process, ends the run as on one process, with summary.json.
+    if (distributed::process_count() > 1 && !fault.shared()) {
+      return stop_on_fault(fault);
     }
     progress.finish(simulation.steps_taken());
     summary.failure = fault.what();
-    print_error(std::string("the run stopped: ") + fault.what());
+    if (distributed::process_rank() == 0) {
+      print_error(std::string("the run stopped: ") + fault.what());
+    }
     status = simulation_failed;
   } catch (const SnapshotError& error) {
     summary.failure = error.what();

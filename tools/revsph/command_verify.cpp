@@ -195,7 +195,7 @@ int verify_command(const VerifyCommandOptions& options) {
   try {
     report = verify_reversibility(simulation, verify);
   } catch (const SimulationFault& fault) {
-    return stop_every_process(std::string("the run stopped: ") + fault.what(), simulation_failed);
+    return stop_on_fault(fault);
   }
   std::cout << "initial state hash:   " << report.initial_hash << "\n"
             << "turning-point hash:   " << report.turning_point_hash << "\n"

@@ -168,6 +168,17 @@ int stop_every_process(const std::string& message, int status) {
   return status;
 }
 
+int stop_on_fault(const SimulationFault& fault) {
+  const std::string message = std::string("the run stopped: ") + fault.what();
+  if (fault.shared()) {
+    if (distributed::process_rank() == 0) {
+      print_error(message);
+    }
+    return simulation_failed;
+  }
+  return stop_every_process(message, simulation_failed);
+}
+
 std::optional<std::string> file_of_first_process(const std::filesystem::path& path) {
   if (distributed::process_rank() != 0) {
     return std::nullopt;

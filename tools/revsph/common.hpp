@@ -3,6 +3,7 @@
 // error output.
 
 #include "core/case_file.hpp"
+#include "core/fault.hpp"
 #include "core/model_registry.hpp"
 #include "core/run_settings.hpp"
 #include "core/simulation.hpp"
@@ -63,6 +64,10 @@ void print_error(const std::string& message);
 // distributed run, the end of every process at once with `status` (none must wait for this one
 // in an exchange); otherwise returns `status`.
 int stop_every_process(const std::string& message, int status);
+// A fault that stopped the steps: one that every process threw together (SimulationFault::shared,
+// the same agreed report on each) is printed by process 0 and every process returns the status;
+// one met by this process alone ends every process (stop_every_process).
+int stop_on_fault(const SimulationFault& fault);
 
 // In a distributed run, process 0 alone writes the run's files (the others take part in the
 // collective snapshot writes). `path` on that process, nothing on the others.

@@ -282,7 +282,7 @@ int main(int argc, char** argv) {
     print_error(error.what());
     return bad_input;
   } catch (const revsph::SimulationFault& fault) {
-    return stop_every_process(std::string("the run stopped: ") + fault.what(), simulation_failed);
+    return stop_on_fault(fault);
   } catch (const std::exception& error) {
     return stop_every_process(error.what(), simulation_failed);
   }
