@@ -114,6 +114,7 @@ RUNS["cavity-ra1e4-s4.5-hydro"] = wider_kernel("cavity-ra1e4.toml", 0.025, 4.5, 
 RUNS["cavity-ra1e4-s6.5-hydro"] = wider_kernel("cavity-ra1e4.toml", 0.025, 6.5, 2, 5.8)
 # The same at Ra 1e5 (80 x 80), and Ra 1e4 at 80 x 80: does the gap at Ra 1e4 close with dr?
 RUNS["cavity-ra1e5-s4.5-hydro"] = wider_kernel("cavity-ra1e5.toml", 0.0125, 4.5, 2, 4.8)
+RUNS["cavity-ra1e5-s6.5-hydro"] = wider_kernel("cavity-ra1e5.toml", 0.0125, 6.5, 2, 5.8)
 RUNS["cavity-ra1e4-s4.5-hydro-n80"] = wider_kernel("cavity-ra1e4.toml", 0.0125, 4.5, 2, 4.8,
                                                      refine=True)
 
@@ -177,7 +178,7 @@ REFERENCE.update({f"cavity-ra1e{k}-s{s}": REFERENCE[f"cavity-ra1e{k}"]
                   for k in (4, 5) for s in (4.5, 6.5)})
 REFERENCE.update({f"cavity-ra1e4-s{s}-thick": REFERENCE["cavity-ra1e4"] for s in (3.0, 4.5)})
 REFERENCE.update({f"cavity-ra1e4-s{s}-hydro": REFERENCE["cavity-ra1e4"] for s in (4.5, 6.5)})
-REFERENCE["cavity-ra1e5-s4.5-hydro"] = REFERENCE["cavity-ra1e5"]
+REFERENCE.update({f"cavity-ra1e5-s{s}-hydro": REFERENCE["cavity-ra1e5"] for s in (4.5, 6.5)})
 REFERENCE["cavity-ra1e4-s4.5-hydro-n80"] = REFERENCE["cavity-ra1e4"]
 # The Rayleigh-Benard case (paper 4 Fig. 12) has no reference number: its Nu is reported only.
 

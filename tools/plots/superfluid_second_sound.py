@@ -12,7 +12,7 @@ Usage: /usr/bin/python3 tools/plots/superfluid_second_sound.py [--make-runs] [--
 M N steps of about N^2 particles. Runs:
   eps1-cosine-N{50,100,200}-A{0.001,0.01,0.1}, eps1-cosine-N300-A0.01
                                                M = 50, the adiabatic mode cos(pi x/L) cos(pi y/L)
-  eps1-cosine-N{50,100}-A0.01-2h               the same with support 6 dr
+  eps1-cosine-N{50,100,200}-A0.01-2h           the same with support 6 dr
   eps1-sine-N100-A0.01                         M = 50, eq. (26) as printed (sine)
   eps2-sine-N200-M{12.5,25,50,100}-A{0.01,0.1} the energy error against M (Fig. 5 right)
   probe-sine-N300-A0.01                        Fig. 6 with the sine start
@@ -71,7 +71,7 @@ RUNS = {}
 for n in (50, 100, 200, 300):
     for a in ((0.001, 0.01, 0.1) if n < 300 else (0.01,)):
         RUNS[f"eps1-cosine-N{n}-A{a}"] = ("cosine", n, 50, a, 3.0)
-for n in (50, 100):
+for n in (50, 100, 200):
     RUNS[f"eps1-cosine-N{n}-A0.01-2h"] = ("cosine", n, 50, 0.01, 6.0)
 RUNS["eps1-sine-N100-A0.01"] = ("sine", 100, 50, 0.01, 3.0)
 for m in (12.5, 25, 50, 100):
