@@ -18,7 +18,7 @@ std::string_view name_of(DiscontinuityVolume volume) {
 }
 
 std::string_view name_of(RightEntropy right) {
-  static constexpr std::string_view names[] = {"spacing", "left_value", "zero"};
+  static constexpr std::string_view names[] = {"spacing", "left_value", "zero", "mass_volume"};
   return names[static_cast<int>(right)];
 }
 
@@ -61,6 +61,18 @@ DiscontinuityProfiles entropic_discontinuity(RightEntropy right, double left_spa
   std::array<std::vector<double>, 3> by_carrier;
   for (int q = 0; q < 3; ++q) {
     layout.scatter(sums.values(q), by_carrier[q]);
+  }
+  if (right == RightEntropy::mass_volume) {
+    // S_a = the mass volume m / sum m W (s = 1 through it), then the sums again with these S.
+    for (std::size_t c = 0; c < n; ++c) {
+      entropy[c] = mass / by_carrier[0][c];
+    }
+    layout.gather(std::span<const double>(entropy), slot_entropy);
+    sum_pairs<FixedArithmetic>(
+        layout, entropic::KernelSumsTerm<1>{kernel, slot_mass, slot_entropy}, sums);
+    for (int q = 0; q < 3; ++q) {
+      layout.scatter(sums.values(q), by_carrier[q]);
+    }
   }
   // The implicit volume: W V = 1 over all particles.
   PairSystem w;

@@ -33,10 +33,13 @@ struct DiscontinuityProfiles {
 // spacing and says nothing of the right part; the three readings: the right part's own spacing
 // (s about 1 everywhere, the stated aim: the default), the left part's value continued (S the
 // same on every particle), zero (only the left part carries entropy, as a code that starts every
-// S at 0 would have it).
-enum class RightEntropy { spacing, left_value, zero };
-inline constexpr std::array<RightEntropy, 3> right_entropies = {
-    RightEntropy::spacing, RightEntropy::left_value, RightEntropy::zero};
+// S at 0 would have it). A fourth reading sets both parts alike: s = 1 as an entropy density
+// read through the mass volume, S_a = 1 * m_a / sum_b m_b W_ab (a code that starts S from the
+// density field it has, the mass volume's), so S follows the mass volume's smoothed step.
+enum class RightEntropy { spacing, left_value, zero, mass_volume };
+inline constexpr std::array<RightEntropy, 4> right_entropies = {
+    RightEntropy::spacing, RightEntropy::left_value, RightEntropy::zero,
+    RightEntropy::mass_volume};
 std::string_view name_of(RightEntropy right);
 
 // The profiles; `left_spacing` 1e-4 and h 1e-3 are the paper's (right spacing: half the left).

@@ -1,7 +1,7 @@
 // revsph_entropic_discontinuity [OUT.csv]: the discontinuity test of paper 4 (§3.5, Figs. 3-7),
 // the particles within 5 h of the jump, as CSV (stdout without an argument), for each reading of
 // the right part's entropies (entropic_discontinuity.hpp):
-//   right_entropy (spacing | left_value | zero), x, volume (mass | entropic | direct | implicit |
+//   right_entropy (spacing | left_value | zero | mass_volume), x, volume (mass | entropic | direct | implicit |
 //   mixed), density, entropy_density (inf or nan where a volume divides by S = 0)
 // Plot: /usr/bin/python3 tools/plots/entropic_discontinuity.py OUT.csv OUT.png
 

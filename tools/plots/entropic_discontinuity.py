@@ -3,7 +3,8 @@
 entropy density s across a jump in particle spacing (equal masses, S = the spacing in the left
 part), one panel per particle volume, the particles within 5 h of the jump; one row per reading of
 the right part's entropies S (the paper does not give them): its own spacing (s about 1
-everywhere, the paper's stated aim), the left part's value continued, zero.
+everywhere, the paper's stated aim), the left part's value continued, zero; and a fourth that
+sets both parts alike: S = the mass volume m / sum m W (s = 1 read through it).
 
 Usage: /usr/bin/python3 tools/plots/entropic_discontinuity.py IN.csv OUT.png
 
@@ -21,7 +22,7 @@ import numpy as np  # noqa: E402
 
 VOLUMES = ["mass", "entropic", "direct", "implicit", "mixed"]
 READINGS = {"spacing": "right S = its spacing", "left_value": "right S = the left's 1e-4",
-            "zero": "right S = 0"}
+            "zero": "right S = 0", "mass_volume": "S = m / sum m W"}
 FIGURE = {"mass": 3, "entropic": 4, "implicit": 5, "mixed": 6, "direct": 7}
 
 
@@ -50,7 +51,8 @@ def main():
         axes[0].set_ylabel("rho, s")
     grid[0, 0].legend(fontsize=8)
     fig.suptitle("Discontinuity test (paper 4, §3.5): spacing 1e-4 | 0.5e-4, equal masses, "
-                 "S = the left spacing on the left, h = 1e-3; rows: the right part's S")
+                 "S = the left spacing on the left, h = 1e-3; rows: the right part's S "
+                 "(last row: both parts')")
     fig.tight_layout()
     fig.savefig(sys.argv[2], dpi=120)
 

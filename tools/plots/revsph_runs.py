@@ -29,8 +29,10 @@ def run_exists(run):
     return (run / "summary.json").is_file() or any((run / "snapshots").glob("step_*.h5"))
 
 
-def make_missing_runs(runs, commands, revsph, threads=None):
-    """Runs `revsph ARGS --out RUNS/NAME --force` for each NAME that does not exist yet."""
+def make_missing_runs(runs, commands, revsph, threads=None, may_stop=()):
+    """Runs `revsph ARGS --out RUNS/NAME --force` for each NAME that does not exist yet. A run
+    named in `may_stop` may end on a model's fault (exit 3: where and why it stopped is the
+    measurement, in its summary.json); any other failure stops the script."""
     for name, arguments in commands.items():
         if run_exists(runs / name):
             continue
@@ -38,7 +40,9 @@ def make_missing_runs(runs, commands, revsph, threads=None):
         if threads:
             command += ["--threads", threads]
         print("+", shlex.join(command), flush=True)
-        subprocess.run(command, check=True)
+        status = subprocess.run(command).returncode
+        if status != 0 and not (status == 3 and name in may_stop):
+            raise subprocess.CalledProcessError(status, command)
 
 
 def missing_runs(runs, names):
@@ -149,13 +153,14 @@ def chosen_runs(parser, args, runs_table):
     return [n for n in runs_table if n in args.only]
 
 
-def figure_script_main(args, runs_table, makers, report_name):
-    """Makes the missing runs if asked, calls each maker(runs, out, report) whose runs all
-    exist, writes the report. Returns the exit status: 0 only if every maker ran."""
+def figure_script_main(args, runs_table, makers, report_name, may_stop=()):
+    """Makes the missing runs if asked (make_missing_runs, `may_stop` as there), calls each
+    maker(runs, out, report) whose runs all exist, writes the report. Returns the exit status:
+    0 only if every maker ran."""
     runs, out = Path(args.runs), Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     if args.make_runs:
-        make_missing_runs(runs, runs_table, find_revsph(args.revsph), args.threads)
+        make_missing_runs(runs, runs_table, find_revsph(args.revsph), args.threads, may_stop)
     report = []
     made = True
     for needed, make in makers:
