@@ -210,6 +210,14 @@ public:
                     const char* reason) const;
   // The set name and index in the set of a carrier.
   std::pair<const char*, std::size_t> particle_of_carrier(std::size_t carrier) const;
+  // A carrier's set (an index into sets()) and its index in the whole set, the same for any
+  // decomposition: in a distributed run from its set's ghost plan, in one process its own.
+  SetParticle global_particle_of_carrier(std::size_t carrier) const {
+    const SetParticle local = particle_in_part(set_of_carrier(carrier), carrier);
+    const distributed::GhostPlan* plan = ghost_plans_[local.set];
+    return {local.set, plan == nullptr ? local.index
+                                       : static_cast<std::uint32_t>(plan->global_index(local.index))};
+  }
 
 private:
   // `carrier` of part `part` (a set, or a set's ghosts) as its set and index in the set.

@@ -62,7 +62,20 @@ public:
   // The listed particles, grouped by destination (for a caller that packs rows itself).
   std::span<const std::uint32_t> sent_particles() const { return sent_particles_; }
 
+  // The particles' global indices in their set, own ones then the ghosts (as StateField numbers
+  // them: ghost g at own count + g), for what orders rows by the whole run's numbering (a solve
+  // gathered on one process, core/pair_system.hpp). Set by the distribution that made the plan.
+  void set_global_indices(std::vector<std::uint64_t> own, std::vector<std::uint64_t> ghosts) {
+    own_global_ = std::move(own);
+    ghost_global_ = std::move(ghosts);
+  }
+  std::uint64_t global_index(std::size_t particle) const {
+    return particle < own_global_.size() ? own_global_[particle]
+                                         : ghost_global_.at(particle - own_global_.size());
+  }
+
 private:
+  std::vector<std::uint64_t> own_global_, ghost_global_;
   std::vector<std::uint32_t> sent_particles_;    // grouped by destination, in particle order
   std::vector<std::size_t> sent_per_process_;    // one count per process
   std::vector<std::size_t> ghosts_from_process_; // one count per process

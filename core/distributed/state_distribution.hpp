@@ -447,6 +447,7 @@ private:
       pieces.plan = std::make_unique<GhostPlan>(partition_, pieces.points_at_lists, reach_ + skin_);
       pieces.ghost_global = pieces.plan->template exchange_from<std::uint64_t>(
           1, [&pieces](std::size_t i, std::uint64_t* row) { row[0] = pieces.global[i]; });
+      pieces.plan->set_global_indices(pieces.global, pieces.ghost_global);
     });
   }
 

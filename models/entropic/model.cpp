@@ -335,7 +335,7 @@ void Model<D>::update_implicit_volume() {
       implicit_pressure_[carrier[s]] = pressure_[s];
     }
   }
-  implicit_y_.resize(gas);
+  implicit_y_.assign(n, 0.0); // the gas's entries solved (in a distributed run its ghosts' too)
   if (!implicit_system_.solve_unknowns(implicit_pressure_, implicit_y_)) { // (45): y = W^-1 p
     throw SimulationFault({"gas", 0, "pressure",
                            "the implicit volume's solve W y = p did not converge (residual " +
@@ -343,7 +343,7 @@ void Model<D>::update_implicit_volume() {
                           -1);
   }
   for (std::size_t s = 0; s < slots; ++s) {
-    alpha_[s] = carrier[s] < static_cast<std::uint32_t>(gas) ? implicit_y_[carrier[s]] : 0.0;
+    alpha_[s] = implicit_system_.is_unknown(carrier[s]) ? implicit_y_[carrier[s]] : 0.0;
   }
 }
 
