@@ -215,6 +215,10 @@ class FaultTest(unittest.TestCase):
         self.assertIs(summary["completed"], False)
         self.assertIn(message, summary["failure"])
         self.assertEqual(summary["final_step"], fault_step - 1)
+        if fault_step > 1 + summary["start_step"]:
+            # The steps taken before the fault were timed (it read 0 for a stopped run).
+            self.assertGreater(summary["stepping_seconds"], 0.0)
+            self.assertGreater(summary["stepping_particle_steps_per_second"], 0.0)
         snapshots = sorted(glob.glob(os.path.join(out, "snapshots", "step_*.h5")))
         self.assertEqual(glob.glob(os.path.join(out, "snapshots", "*.tmp")), [])
         self.assertIn("last_snapshot", summary)

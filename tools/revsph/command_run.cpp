@@ -11,6 +11,7 @@
 #include "verify/state_hash.hpp"
 
 #include <chrono>
+#include <optional>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -103,17 +104,25 @@ int run_command(const RunOptions& options) {
     }
   };
   const auto start = std::chrono::steady_clock::now();
+  // Until a fault, if one stops the run: summary.json's stepping time and speed then cover the
+  // steps taken.
+  std::optional<std::chrono::steady_clock::time_point> stepping_start;
+  const auto stepped_seconds = [&stepping_start] {
+    return stepping_start ? std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                                          *stepping_start)
+                                .count()
+                          : 0.0;
+  };
   int status = success;
   try {
     if (!reference_energy) {
       output.set_reference_energy(simulation.energy().total());
     }
     output.write_snapshot(simulation);
-    const auto stepping_start = std::chrono::steady_clock::now();
+    stepping_start = std::chrono::steady_clock::now();
     const distributed::CommunicationTally tally_before = distributed::communication_tally();
     run_steps(simulation, steps, hooks);
-    summary.stepping_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - stepping_start).count();
+    summary.stepping_seconds = stepped_seconds();
     summary.distribution = summarise_distribution(
         simulation, distributed::communication_tally() - tally_before, summary.stepping_seconds,
         simulation.steps_taken() - summary.start_step, summary.threads);
@@ -127,6 +136,7 @@ int run_command(const RunOptions& options) {
     if (distributed::process_count() > 1 && !fault.shared()) {
       return stop_on_fault(fault);
     }
+    summary.stepping_seconds = stepped_seconds();
     progress.finish(simulation.steps_taken());
     summary.failure = fault.what();
     if (distributed::process_rank() == 0) {
