@@ -62,13 +62,9 @@ public:
 
   // x over every carrier: its held entries are read, the unknowns solved from M x = b on their
   // rows (b: one entry per unknown of this process's own). False if the solve did not converge.
-  bool solve_with_held(std::span<const double> b, std::span<double> x) {
-    return solve(b, x, true);
-  }
+  bool solve_with_held(std::span<const double> b, std::span<double> x) { return solve(b, x, true); }
   // The unknowns alone from M_uu x = b (the held entries taken as zero).
-  bool solve_unknowns(std::span<const double> b, std::span<double> x) {
-    return solve(b, x, false);
-  }
+  bool solve_unknowns(std::span<const double> b, std::span<double> x) { return solve(b, x, false); }
 
   // max over the unknowns' rows of |(M x)_i - b_i|, x over every carrier: how well x solves the
   // system (collective in a distributed run; computed there on process 0's whole system, so
@@ -197,7 +193,8 @@ private:
     if (distributed::process_rank() == 0) {
       const bool converged = solve_here(whole.b, whole.x, with_held);
       outcome = {error_, iterations_, converged ? 1 : 0};
-      solution.assign(whole.x.begin(), whole.x.begin() + static_cast<std::ptrdiff_t>(total_unknowns_));
+      solution.assign(whole.x.begin(),
+                      whole.x.begin() + static_cast<std::ptrdiff_t>(total_unknowns_));
     }
     const Outcome agreed = distributed::sent_from_first(std::span<const Outcome>(&outcome, 1))[0];
     solution = distributed::sent_from_first(std::span<const double>(solution));

@@ -214,9 +214,11 @@ public:
   // decomposition: in a distributed run from its set's ghost plan, in one process its own.
   SetParticle global_particle_of_carrier(std::size_t carrier) const {
     const SetParticle local = particle_in_part(set_of_carrier(carrier), carrier);
-    const distributed::GhostPlan* plan = ghost_plans_[local.set];
-    return {local.set, plan == nullptr ? local.index
-                                       : static_cast<std::uint32_t>(plan->global_index(local.index))};
+    const distributed::GhostPlan* plan =
+        local.set < ghost_plans_.size() ? ghost_plans_[local.set] : nullptr;
+    return {local.set, plan == nullptr
+                           ? local.index
+                           : static_cast<std::uint32_t>(plan->global_index(local.index))};
   }
 
 private:

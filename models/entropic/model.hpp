@@ -165,7 +165,7 @@ private:
   // colder ones took in (for Nusselt numbers).
   double wall_heat_ = 0.0, wall_entropy_ = 0.0, hot_wall_heat_out_ = 0.0, cold_wall_heat_in_ = 0.0;
   PairSystem implicit_system_; // implicit volume: W_ab over all carriers, the gas's rows solved
-  std::vector<double> implicit_volume_;                // carriers
+  std::vector<double> implicit_volume_;   // carriers
   std::vector<double> implicit_pressure_; // the gas
   std::vector<double> implicit_y_;        // carriers: the gas's entries solved, the rest 0
   // The hyperbolic heat conduction: w per slot, the w and S exchanges of a sub-step.

@@ -68,8 +68,8 @@ DiscontinuityProfiles entropic_discontinuity(RightEntropy right, double left_spa
       entropy[c] = mass / by_carrier[0][c];
     }
     layout.gather(std::span<const double>(entropy), slot_entropy);
-    sum_pairs<FixedArithmetic>(
-        layout, entropic::KernelSumsTerm<1>{kernel, slot_mass, slot_entropy}, sums);
+    sum_pairs<FixedArithmetic>(layout, entropic::KernelSumsTerm<1>{kernel, slot_mass, slot_entropy},
+                               sums);
     for (int q = 0; q < 3; ++q) {
       layout.scatter(sums.values(q), by_carrier[q]);
     }

@@ -38,8 +38,7 @@ struct DiscontinuityProfiles {
 // density field it has, the mass volume's), so S follows the mass volume's smoothed step.
 enum class RightEntropy { spacing, left_value, zero, mass_volume };
 inline constexpr std::array<RightEntropy, 4> right_entropies = {
-    RightEntropy::spacing, RightEntropy::left_value, RightEntropy::zero,
-    RightEntropy::mass_volume};
+    RightEntropy::spacing, RightEntropy::left_value, RightEntropy::zero, RightEntropy::mass_volume};
 std::string_view name_of(RightEntropy right);
 
 // The profiles; `left_spacing` 1e-4 and h 1e-3 are the paper's (right spacing: half the left).

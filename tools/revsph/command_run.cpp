@@ -11,10 +11,10 @@
 #include "verify/state_hash.hpp"
 
 #include <chrono>
-#include <optional>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 namespace revsph::cli {
 
@@ -108,10 +108,10 @@ int run_command(const RunOptions& options) {
   // steps taken.
   std::optional<std::chrono::steady_clock::time_point> stepping_start;
   const auto stepped_seconds = [&stepping_start] {
-    return stepping_start ? std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                                          *stepping_start)
-                                .count()
-                          : 0.0;
+    return stepping_start
+               ? std::chrono::duration<double>(std::chrono::steady_clock::now() - *stepping_start)
+                     .count()
+               : 0.0;
   };
   int status = success;
   try {
