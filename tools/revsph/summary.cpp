@@ -60,7 +60,7 @@ void write_summary(const std::filesystem::path& path, Simulation& simulation, co
                                {"stepping_seconds", d->stepping_seconds},
                                {"communication_seconds_min", d->communication_seconds_min},
                                {"communication_seconds_max", d->communication_seconds_max},
-        {"communication_seconds_mean", d->communication_seconds_mean},
+                               {"communication_seconds_mean", d->communication_seconds_mean},
                                {"bytes_sent_per_step", d->bytes_sent_per_step},
                                {"mpi_calls_per_step", d->calls_per_step},
                                {"mpi_exchanges_per_step", d->exchanges_per_step},
