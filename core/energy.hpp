@@ -1,5 +1,8 @@
 #pragma once
-// An energy budget: named terms (kinetic, gravitational, …) and their total.
+// An energy budget: named terms (kinetic, gravitational, …) and their total. A term's value is a
+// RunTotal (core/run_total.hpp): the run's, whichever process computes it.
+
+#include "core/run_total.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,14 +13,14 @@ namespace revsph {
 
 struct EnergyTerm {
   std::string name;
-  double value = 0.0;
+  RunTotal value;
 };
 
 struct EnergyBudget {
   std::vector<EnergyTerm> terms;
 
-  double total() const {
-    double sum = 0.0;
+  RunTotal total() const {
+    RunTotal sum;
     for (const EnergyTerm& term : terms) {
       sum += term.value;
     }

@@ -14,6 +14,7 @@
 
 #include "core/distributed/on_first_process.hpp"
 #include "core/distributed/processes.hpp"
+#include "core/global_totals.hpp"
 #include "core/pair_matrix.hpp"
 #include "core/slot_layout.hpp"
 
@@ -69,13 +70,13 @@ public:
   // max over the unknowns' rows of |(M x)_i - b_i|, x over every carrier: how well x solves the
   // system (collective in a distributed run; computed there on process 0's whole system, so
   // that the number is the one-process run's).
-  double max_residual(std::span<const double> x, std::span<const double> b) {
+  RunTotal max_residual(std::span<const double> x, std::span<const double> b) {
     if (!gathered_) {
-      return residual_of(x, b);
+      return RunTotal::same_on_every_process(residual_of(x, b));
     }
     const Whole whole = gather_vectors(b, x);
     const double local = distributed::process_rank() == 0 ? residual_of(whole.x, whole.b) : 0.0;
-    return distributed::max_over_processes(local);
+    return global_max(local);
   }
 
   // Of the last solve.

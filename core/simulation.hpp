@@ -119,7 +119,7 @@ concept HasProbeParticles = requires(const M& model) {
 template <class M>
 struct EnergyAccount {
   const char* name;
-  double M::*value;
+  RunTotal M::*value;
 };
 template <class M>
 concept HasEnergyAccounts = requires {
@@ -314,7 +314,7 @@ public:
   }
   void restore_energy_accounts(const std::vector<EnergyTerm>& accounts) override {
     for (const EnergyTerm& given : accounts) {
-      double* kept = account_named(given.name);
+      RunTotal* kept = account_named(given.name);
       if (kept == nullptr) {
         throw std::invalid_argument("unknown energy account '" + given.name + "' (model " +
                                     info_.model + ")");
@@ -353,7 +353,7 @@ private:
   // The step: the palindrome with the operators that act in this case placed by the case's
   // splitting; their terms first in the irreversible terms, each with its placement.
   // The member keeping the energy account `name`, or nullptr.
-  double* account_named(const std::string& name) {
+  RunTotal* account_named(const std::string& name) {
     if constexpr (HasEnergyAccounts<M>) {
       for (const EnergyAccount<M>& account : M::energy_accounts()) {
         if (name == account.name) {

@@ -212,6 +212,11 @@ public:
   std::pair<const char*, std::size_t> particle_of_carrier(std::size_t carrier) const;
   // A carrier's set (an index into sets()) and its index in the whole set, the same for any
   // decomposition: in a distributed run from its set's ghost plan, in one process its own.
+  // Particle i of `set` held here, by its index in the whole set: its identity in the run.
+  template <class Set>
+  std::uint64_t run_index(const Set& set, std::size_t i) const {
+    return global_particle_of_carrier(first_carrier(index_of(set)) + i).index;
+  }
   SetParticle global_particle_of_carrier(std::size_t carrier) const {
     const SetParticle local = particle_in_part(set_of_carrier(carrier), carrier);
     const distributed::GhostPlan* plan =

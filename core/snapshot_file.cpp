@@ -65,7 +65,9 @@ SnapshotMetadata read_metadata(hid_t file) {
   }
   if (has_attribute(file, "energy_accounts")) {
     for (const std::string& name : read_strings_attribute(file, "energy_accounts")) {
-      m.energy_accounts.push_back({name, read_double_attribute(file, "energy_account:" + name)});
+      // Every process reads the same file.
+      m.energy_accounts.push_back({name, RunTotal::same_on_every_process(read_double_attribute(
+                                             file, "energy_account:" + name))});
     }
   }
   m.state_hash = read_string_attribute(file, "state_hash");

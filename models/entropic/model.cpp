@@ -503,8 +503,8 @@ std::vector<EnergyTerm> Model<D>::diagnostics() {
     for (const std::int64_t raw : momentum.component(k)) {
       total += raw;
     }
-    terms.push_back({names[k], static_cast<double>(global_total(total)) *
-                                   fixedpoint::to_real(1, momentum.info().scale)});
+    terms.push_back(
+        {names[k], global_total_real(total, fixedpoint::to_real(1, momentum.info().scale))});
   }
   // The total entropy of the gas, summed exactly: the reversible part keeps it bit for bit, the
   // dissipation and the relaxation raise it.
@@ -512,8 +512,8 @@ std::vector<EnergyTerm> Model<D>::diagnostics() {
   for (const std::int64_t raw : state_.gas.entropy.component(0)) {
     entropy += raw;
   }
-  terms.push_back({"entropy", static_cast<double>(global_total(entropy)) *
-                                  fixedpoint::to_real(1, state_.gas.entropy.info().scale)});
+  terms.push_back(
+      {"entropy", global_total_real(entropy, fixedpoint::to_real(1, state_.gas.entropy.info().scale))});
   if (has_thermal_walls_) {
     // Since the run (or its restart) began: the entropy the walls gained, sum Q / T_w (with the
     // gas's, it never decreases), and the heat the hot walls gave and the cold walls took.

@@ -163,7 +163,7 @@ private:
   // The heat the thermal walls took in since the run (or restart) began, in total, as the entropy
   // they gained (sum Q / T_w), and split into what walls hotter than the initial gas gave out and
   // colder ones took in (for Nusselt numbers).
-  double wall_heat_ = 0.0, wall_entropy_ = 0.0, hot_wall_heat_out_ = 0.0, cold_wall_heat_in_ = 0.0;
+  RunTotal wall_heat_, wall_entropy_, hot_wall_heat_out_, cold_wall_heat_in_;
   PairSystem implicit_system_; // implicit volume: W_ab over all carriers, the gas's rows solved
   std::vector<double> implicit_volume_;   // carriers
   std::vector<double> implicit_pressure_; // the gas

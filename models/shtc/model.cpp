@@ -571,7 +571,7 @@ void Model<D>::wall_forces(WallForces& forces) {
 }
 
 template <int D>
-double Model<D>::wall_power() {
+RunTotal Model<D>::wall_power() {
   update_carrier_velocities();
   WallForces forces;
   wall_forces(forces);

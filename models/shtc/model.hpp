@@ -129,7 +129,7 @@ private:
   // mirrored walls the material's L sees a wall move with its mirrored velocity and the wall's
   // own L with v_w: the part of F_b from the material's stress pairs with the first, the part
   // from the walls' stress with the second.
-  double wall_power();
+  RunTotal wall_power();
   // The shear stress's accelerations per slot, of the current geometry and distortions, from
   // the stress of all carriers, of the material only or of the walls only.
   enum class StressOf { all, material, walls };

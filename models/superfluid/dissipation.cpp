@@ -98,7 +98,7 @@ void Model<D, Arith>::dissipate(double dt) {
     return;
   }
   const bool walls = has_walls_;
-  const double energy_before = walls ? energy().total() : 0.0;
+  const RunTotal energy_before = walls ? energy().total() : RunTotal();
   fill_rate_inputs(-1); // the mean of the copies: T, v_n, u = v - v_s, 1 / rho
   // Conducting walls: their own velocity as v_n, T0 as temperature (s = s0, no counterflow).
   // Absorbing walls got theirs, with their v_s, from fill_rate_inputs; no-slip dummies are at rest.

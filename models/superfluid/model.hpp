@@ -136,8 +136,8 @@ private:
   std::vector<Raw> slot_density_constant_;
   // Energy the walls gave the fluid in dissipation sub-steps since the run began (lid work, heat
   // from or to a cooler): the energy budget's wall_exchange term is minus this.
-  double exchanged_energy_ = 0.0;
-  double heater_energy_ = 0.0; // the heater's input since the run began
+  RunTotal exchanged_energy_;
+  RunTotal heater_energy_; // the heater's input since the run began
   std::vector<std::int8_t> slot_side_;
   PairSums<Arith, 1> density_sums_;
   HalfPairList fluid_pairs_; // the layout's pairs with a fluid particle on one side at least

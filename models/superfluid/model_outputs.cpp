@@ -149,8 +149,7 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics(double time) {
     std::array<double, D> probe_point{};
     probe_point.fill(0.25 * wave.wave_length);
     ExactDoubleSum squared;
-    double nearest = std::numeric_limits<double>::infinity();
-    double probe_entropy = 0.0;
+    NearestParticle probe;
     for (std::size_t a = 0; a < fluid_count(); ++a) {
       std::array<double, D> x{};
       double distance = 0.0;
@@ -160,16 +159,15 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics(double time) {
       }
       const double error = (mean.entropy[a] - exact(x)) / (wave.wave_amplitude * s0);
       squared.add(error * error);
-      if (distance < nearest) {
-        nearest = distance;
-        probe_entropy = mean.entropy[a];
-      }
+      probe.offer(distance, layout_.run_index(state_.fluid, a), mean.entropy[a]);
     }
     terms.push_back(
         {"second_sound_error",
-         std::sqrt(global_total(squared) / static_cast<double>(global_count(fluid_count())))});
-    terms.push_back({"probe_entropy", probe_entropy});
-    terms.push_back({"probe_entropy_exact", exact(probe_point)});
+         sqrt(global_total(squared) / static_cast<double>(global_count(fluid_count())))});
+    terms.push_back({"probe_entropy", global_value_of_nearest(probe)});
+    // Eq. (25) at the probe point: a function of the time and the case alone.
+    terms.push_back(
+        {"probe_entropy_exact", RunTotal::same_on_every_process(exact(probe_point))});
   }
   return terms;
 }

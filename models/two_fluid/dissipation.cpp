@@ -107,9 +107,9 @@ void Model<D, Arith>::dissipate(double tau) {
   faults.throw_if_any();
   // The accounts: the walls' work, and as dissipated what the sub-step took beyond it, the
   // kinetic energy its applied (rounded) impulses changed.
-  const double wall_work = global_total_over_own_slots(
+  const RunTotal wall_work = global_total_over_own_slots(
       layout_, [&](std::size_t s) { return dissipation_sums_.value(D, s); });
-  const double kinetic_change = work_of_impulses(dissipation_sums_, 0);
+  const RunTotal kinetic_change = work_of_impulses(dissipation_sums_, 0);
   wall_work_ += wall_work;
   dissipated_ += wall_work - kinetic_change;
 }

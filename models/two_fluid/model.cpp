@@ -191,7 +191,7 @@ void Model<D, Arith>::add_impulses(const Sums& sums) {
 
 template <int D, class Arith>
 template <class Sums>
-double Model<D, Arith>::rigid_wall_work(const Sums& sums) const {
+RunTotal Model<D, Arith>::rigid_wall_work(const Sums& sums) const {
   // A turning wall moves the internal energy sum m e(rho), which depends on its position, by
   // -F_w . dx_w, F_w the gradient (pressure) force on it: that is the work it does on the fluid.
   // Each kick of tau adds -J_w . v_w with J_w = F_w tau (the non-gradient spin share, components

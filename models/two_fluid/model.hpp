@@ -140,13 +140,13 @@ private:
   }
   // The work the rigid walls did on the fluid through the kick's gradient impulses `sums`.
   template <class Sums>
-  double rigid_wall_work(const Sums& sums) const;
+  RunTotal rigid_wall_work(const Sums& sums) const;
   // After `sums`' impulses J (components 0..D-1) were added to the momenta: the sum over the
   // moving particles of w . (p_after - J / 2) / m, w the components weight..weight+D-1. With
   // w = J it is the kinetic energy J changed; summed exactly over the run (independent of the
   // threads and processes).
   template <class Sums>
-  double work_of_impulses(const Sums& sums, int weight) {
+  RunTotal work_of_impulses(const Sums& sums, int weight) {
     ExactDoubleSum work;
     for_each_moving([&](const auto& kind, std::size_t set) {
       const std::span<const std::uint32_t> slots = layout_.slots_of_set(set);
@@ -194,9 +194,9 @@ private:
   PairSums<Arith, 1> normal_weight_sums_;
   PairSums<Arith, D + 1> dissipation_sums_;
   // Accounts since the run began (J, or J/m in 2D).
-  double dissipated_ = 0.0; // by the dissipate sub-steps (viscosity, friction, contacts)
-  double wall_work_ = 0.0;  // done by moving walls on the fluid
-  double force_work_ = 0.0; // done by the thermomechanical and spin forces
+  RunTotal dissipated_; // by the dissipate sub-steps (viscosity, friction, contacts)
+  RunTotal wall_work_;  // done by moving walls on the fluid
+  RunTotal force_work_; // done by the thermomechanical and spin forces
 };
 
 extern template class Model<2, FixedArithmetic>;

@@ -27,7 +27,7 @@ EnergyBudget Model<D, Arith>::energy() {
     }
   });
   // Every particle's m e(rho), walls included.
-  const double internal = global_total_over_own_slots(layout_, [&](std::size_t s) {
+  const RunTotal internal = global_total_over_own_slots(layout_, [&](std::size_t s) {
     return in.mass[s] * internal_energy(in.density[s], slot_rest_density_[s]);
   });
   return EnergyBudget{{{"kinetic", global_total(kinetic)},

@@ -376,9 +376,9 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics() {
       filtered_sum.add(volume * ((filtered[0][a] - exact_x) * (filtered[0][a] - exact_x) +
                                  (filtered[1][a] - exact_y) * (filtered[1][a] - exact_y)));
     }
-    return {{"velocity_error", std::sqrt(global_total(raw_sum) / gresho::velocity_norm_squared)},
+    return {{"velocity_error", sqrt(global_total(raw_sum) / gresho::velocity_norm_squared)},
             {"filtered_velocity_error",
-             std::sqrt(global_total(filtered_sum) / gresho::velocity_norm_squared)}};
+             sqrt(global_total(filtered_sum) / gresho::velocity_norm_squared)}};
   }
 }
 

@@ -91,22 +91,25 @@ public:
 
   EnergyBudget energy() {
     update_forces();
-    double kinetic = 0.0, internal = 0.0, trap = 0.0;
+    // Exact sums, completed over the run by global_total (core/global_totals.hpp).
+    ExactDoubleSum kinetic, internal, trap;
     const double omega_squared = parameters_.trap_frequency * parameters_.trap_frequency;
     const auto slots = layout_.slots_of(state_.gas);
     for (std::size_t i = 0; i < slots.size(); ++i) {
       const double m = mass_[slots[i]];
       for (int k = 0; k < D; ++k) {
         const double v = real(state_.gas.velocity, k, i);
-        kinetic += 0.5 * m * v * v;
+        kinetic.add(0.5 * m * v * v);
         const double x = real(state_.gas.position, k, i);
-        trap += 0.5 * m * omega_squared * x * x;
+        trap.add(0.5 * m * omega_squared * x * x);
       }
       const double rho = density_sums_.value(0, slots[i]);
-      internal += m * parameters_.stiffness * std::pow(rho, parameters_.gamma - 1.0) /
-                  (parameters_.gamma - 1.0);
+      internal.add(m * parameters_.stiffness * std::pow(rho, parameters_.gamma - 1.0) /
+                   (parameters_.gamma - 1.0));
     }
-    return EnergyBudget{{{"kinetic", kinetic}, {"internal", internal}, {"trap", trap}}};
+    return EnergyBudget{{{"kinetic", global_total(kinetic)},
+                         {"internal", global_total(internal)},
+                         {"trap", global_total(trap)}}};
   }
   void derived_views(const ViewSink& sink) {
     update_forces();

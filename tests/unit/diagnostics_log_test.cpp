@@ -3,6 +3,7 @@
 // thermal walls' entropy, reported a "max" of 0 while it fell to -1.45).
 
 #include "core/diagnostics_log.hpp"
+#include "hand_made_terms.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,9 +14,9 @@ namespace {
 
 TEST(DiagnosticsLog, KeepsTheSmallestAndTheLargestOfEach) {
   revsph::DiagnosticsLog log(std::nullopt);
-  log.record(0, 0.0, {{"falling", 0.0}, {"rising", 1.0}});
-  log.record(1, 0.1, {{"falling", -0.7}, {"rising", 3.0}});
-  log.record(2, 0.2, {{"falling", -1.45}, {"rising", 2.0}});
+  log.record(0, 0.0, revsph::testing::hand_made_terms({{"falling", 0.0}, {"rising", 1.0}}));
+  log.record(1, 0.1, revsph::testing::hand_made_terms({{"falling", -0.7}, {"rising", 3.0}}));
+  log.record(2, 0.2, revsph::testing::hand_made_terms({{"falling", -1.45}, {"rising", 2.0}}));
   ASSERT_EQ(log.minima().size(), 2u);
   EXPECT_EQ(log.minima()[0].value, -1.45);
   EXPECT_EQ(log.maxima()[0].value, 0.0);

@@ -83,20 +83,20 @@ void write_summary(const std::filesystem::path& path, Simulation& simulation, co
   }
   if (!energy.empty()) {
     summary["energy"]["initial_total"] = energy.initial_total();
-    summary["energy"]["final_total"] = energy.last().total();
+    summary["energy"]["final_total"] = energy.last().total().value();
     summary["energy"]["max_relative_error"] = energy.max_relative_error();
     // docs/verify.md, "Two energy errors".
     summary["energy"]["mechanical_scale"] = energy.mechanical_scale();
     summary["energy"]["max_mechanical_relative_error"] = energy.max_mechanical_relative_error();
     for (const EnergyTerm& term : energy.last().terms) {
-      summary["energy"]["final"][term.name] = term.value;
+      summary["energy"]["final"][term.name] = term.value.value();
     }
   }
   for (const EnergyTerm& minimum : run.diagnostics_minima) {
-    summary["diagnostics"]["min_" + minimum.name] = minimum.value;
+    summary["diagnostics"]["min_" + minimum.name] = minimum.value.value();
   }
   for (const EnergyTerm& maximum : run.diagnostics_maxima) {
-    summary["diagnostics"]["max_" + maximum.name] = maximum.value;
+    summary["diagnostics"]["max_" + maximum.name] = maximum.value.value();
   }
   summary["build"] = {{"version", build_info::version},
                       {"git_commit", build_info::git_commit},
