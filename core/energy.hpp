@@ -14,6 +14,9 @@ namespace revsph {
 struct EnergyTerm {
   std::string name;
   RunTotal value;
+  // An energy's is the run's energy unit (the core fills it in); a diagnostic's is the model's,
+  // "1" for a pure number (summary.json's "units").
+  std::string unit;
 };
 
 struct EnergyBudget {

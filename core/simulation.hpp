@@ -15,6 +15,7 @@
 #include "core/state_snapshot.hpp"
 #include "core/step_composition.hpp"
 #include "core/step_splitting.hpp"
+#include "core/units.hpp"
 
 #include <concepts>
 #include <cstdint>
@@ -286,7 +287,11 @@ public:
     model_.invalidate_derived();
   }
   EnergyBudget energy() override {
-    return attributing_faults([&] { return model_.energy(); });
+    EnergyBudget budget = attributing_faults([&] { return model_.energy(); });
+    for (EnergyTerm& term : budget.terms) {
+      term.unit = energy_unit_of(info_.dimension);
+    }
+    return budget;
   }
   void derived_views(const ViewSink& sink) override {
     attributing_faults([&] { model_.derived_views(sink); });
@@ -298,6 +303,12 @@ public:
       own = attributing_faults([&] { return model_.diagnostics(time()); });
     } else if constexpr (HasDiagnostics<M>) {
       own = attributing_faults([&] { return model_.diagnostics(); });
+    }
+    for (const EnergyTerm& term : own) {
+      if (term.unit.empty()) {
+        throw std::logic_error("diagnostic '" + term.name + "' of model " + info_.model +
+                               " has no unit");
+      }
     }
     terms.insert(terms.end(), own.begin(), own.end());
     return terms;
@@ -449,7 +460,7 @@ private:
         for (std::size_t k = 0; k < position.size(); ++k) {
           ExactDoubleSum held;
           held.add(position[k]);
-          terms.push_back({probe.name + axes[k], global_total(held)});
+          terms.push_back({probe.name + axes[k], global_total(held), "m"});
         }
       }
     }

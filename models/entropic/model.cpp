@@ -503,8 +503,9 @@ std::vector<EnergyTerm> Model<D>::diagnostics() {
     for (const std::int64_t raw : momentum.component(k)) {
       total += raw;
     }
-    terms.push_back(
-        {names[k], global_total_real(total, fixedpoint::to_real(1, momentum.info().scale))});
+    terms.push_back({names[k],
+                     global_total_real(total, fixedpoint::to_real(1, momentum.info().scale)),
+                     momentum.info().unit});
   }
   // The total entropy of the gas, summed exactly: the reversible part keeps it bit for bit, the
   // dissipation and the relaxation raise it.
@@ -513,20 +514,23 @@ std::vector<EnergyTerm> Model<D>::diagnostics() {
     entropy += raw;
   }
   terms.push_back(
-      {"entropy", global_total_real(entropy, fixedpoint::to_real(1, state_.gas.entropy.info().scale))});
+      {"entropy",
+       global_total_real(entropy, fixedpoint::to_real(1, state_.gas.entropy.info().scale)),
+       state_.gas.entropy.info().unit});
   if (has_thermal_walls_) {
     // Since the run (or its restart) began: the entropy the walls gained, sum Q / T_w (with the
     // gas's, it never decreases), and the heat the hot walls gave and the cold walls took.
-    terms.push_back({"thermal_wall_entropy", wall_entropy_});
-    terms.push_back({"heat_out_of_hot_walls", hot_wall_heat_out_});
-    terms.push_back({"heat_into_cold_walls", cold_wall_heat_in_});
+    terms.push_back({"thermal_wall_entropy", wall_entropy_, entropy_unit<D>});
+    terms.push_back({"heat_out_of_hot_walls", hot_wall_heat_out_, energy_unit<D>});
+    terms.push_back({"heat_into_cold_walls", cold_wall_heat_in_, energy_unit<D>});
   }
   if (parameters_.volume == ParticleVolume::implicit) {
     // How well the volumes solve eq. (26): max over the gas of |sum_b W_ab V_b - 1|.
     update_geometry();
     terms.push_back(
         {"implicit_volume_residual",
-         implicit_system_.max_residual(implicit_volume_, std::vector<double>(gas_count(), 1.0))});
+         implicit_system_.max_residual(implicit_volume_, std::vector<double>(gas_count(), 1.0)),
+         "1"});
   }
   return terms;
 }

@@ -19,9 +19,6 @@ namespace revsph::entropic {
 
 using Field = StateField<std::int64_t>;
 
-template <int D>
-inline constexpr const char* momentum_unit = D == 1 ? "kg/(m s)" : (D == 2 ? "kg/s" : "kg m/s");
-
 // The gas: positions and momenta M = m v evolve (eq. 11); the particle entropy S (extensive, eq.
 // 21) and the mass are constants of the reversible motion, except that the hyperbolic heat
 // conduction (§5.5) exchanges S with the entropy-flux variable w (odd, eq. 66b; zero and

@@ -643,14 +643,14 @@ std::vector<EnergyTerm> Model<D>::diagnostics() {
     angular[2].add(m * (x[0] * v[1] - x[1] * v[0]));
   }
   if constexpr (D == 2) {
-    terms.push_back({"angular_momentum", global_total(angular[2])});
+    terms.push_back({"angular_momentum", global_total(angular[2]), angular_momentum_unit<D>});
   } else {
-    terms.push_back({"angular_momentum_x", global_total(angular[0])});
-    terms.push_back({"angular_momentum_y", global_total(angular[1])});
-    terms.push_back({"angular_momentum_z", global_total(angular[2])});
+    terms.push_back({"angular_momentum_x", global_total(angular[0]), angular_momentum_unit<D>});
+    terms.push_back({"angular_momentum_y", global_total(angular[1]), angular_momentum_unit<D>});
+    terms.push_back({"angular_momentum_z", global_total(angular[2]), angular_momentum_unit<D>});
   }
   if (walls_work()) {
-    terms.push_back({"wall_power", wall_power()});
+    terms.push_back({"wall_power", wall_power(), power_unit<D>});
   }
   return terms;
 }

@@ -110,11 +110,12 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics(double time) {
     entropy_one.add(mass[a] * s1);
     entropy_two.add(mass[a] * s2);
   }
-  std::vector<EnergyTerm> terms{{"copy_velocity_difference", global_max(dv)},
-                                {"copy_superflow_difference", global_max(dvs)},
-                                {"copy_entropy_difference", global_max(ds)},
-                                {"total_entropy", global_total(entropy_one)},
-                                {"total_entropy_copy", global_total(entropy_two)}};
+  const std::string specific_entropy = f.entropy.info().unit;
+  std::vector<EnergyTerm> terms{{"copy_velocity_difference", global_max(dv), "m/s"},
+                                {"copy_superflow_difference", global_max(dvs), "m/s"},
+                                {"copy_entropy_difference", global_max(ds), specific_entropy},
+                                {"total_entropy", global_total(entropy_one), entropy_unit<D>},
+                                {"total_entropy_copy", global_total(entropy_two), entropy_unit<D>}};
   if (!std::isnan(parameters_.jet_height)) {
     update_density();
     const std::span<const std::uint32_t> fluid = layout_.slots_of(state_.fluid);
@@ -125,7 +126,7 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics(double time) {
         volume.add(mass[a] / density_sums_.value(0, fluid[a]));
       }
     }
-    terms.push_back({"volume_above_jet_height", global_total(volume)});
+    terms.push_back({"volume_above_jet_height", global_total(volume), volume_unit<D>});
   }
   const InitialFields& wave = parameters_.initial;
   if (wave.wave_amplitude != 0.0) {
@@ -161,13 +162,13 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics(double time) {
       squared.add(error * error);
       probe.offer(distance, layout_.run_index(state_.fluid, a), mean.entropy[a]);
     }
-    terms.push_back(
-        {"second_sound_error",
-         sqrt(global_total(squared) / static_cast<double>(global_count(fluid_count())))});
-    terms.push_back({"probe_entropy", global_value_of_nearest(probe)});
+    terms.push_back({"second_sound_error",
+                     sqrt(global_total(squared) / static_cast<double>(global_count(fluid_count()))),
+                     "1"});
+    terms.push_back({"probe_entropy", global_value_of_nearest(probe), specific_entropy});
     // Eq. (25) at the probe point: a function of the time and the case alone.
-    terms.push_back(
-        {"probe_entropy_exact", RunTotal::same_on_every_process(exact(probe_point))});
+    terms.push_back({"probe_entropy_exact", RunTotal::same_on_every_process(exact(probe_point)),
+                     specific_entropy});
   }
   return terms;
 }

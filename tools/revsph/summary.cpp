@@ -91,12 +91,14 @@ void write_summary(const std::filesystem::path& path, Simulation& simulation, co
     for (const EnergyTerm& term : energy.last().terms) {
       summary["energy"]["final"][term.name] = term.value.value();
     }
+    summary["units"]["energy"] = energy.last().terms.empty() ? "" : energy.last().terms[0].unit;
   }
   for (const EnergyTerm& minimum : run.diagnostics_minima) {
     summary["diagnostics"]["min_" + minimum.name] = minimum.value.value();
   }
   for (const EnergyTerm& maximum : run.diagnostics_maxima) {
     summary["diagnostics"]["max_" + maximum.name] = maximum.value.value();
+    summary["units"][maximum.name] = maximum.unit;
   }
   summary["build"] = {{"version", build_info::version},
                       {"git_commit", build_info::git_commit},
