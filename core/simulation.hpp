@@ -419,10 +419,17 @@ private:
     const double reach = distributed::max_over_processes(largest_interaction_radius());
     // REVSPH_REBALANCE_ABOVE (docs/running.md): when the regions are cut again; 1: at every
     // migration, which the tests use to check that a rebalance changes no bit.
+    // REVSPH_BALANCE_BY_TIME=0: on the estimated work alone (to measure what the measured
+    // computing times add); `every_reading`: cut at every reading of them (the tests).
     const char* rebalance_above = std::getenv("REVSPH_REBALANCE_ABOVE");
+    const char* by_time = std::getenv("REVSPH_BALANCE_BY_TIME");
     distribution_ = std::make_unique<distributed::StateDistribution<StateOf>>(
         model_.state(), info_.dimension, reach,
-        rebalance_above != nullptr ? std::strtod(rebalance_above, nullptr) : 1.05);
+        rebalance_above != nullptr ? std::strtod(rebalance_above, nullptr) : 1.05,
+        by_time == nullptr                        ? distributed::TimeBalance::on
+        : std::string(by_time) == "0"             ? distributed::TimeBalance::off
+        : std::string(by_time) == "every_reading" ? distributed::TimeBalance::every_reading
+                                                  : distributed::TimeBalance::on);
     limit_interaction_radius(reach);
     model_.invalidate_derived();
   }

@@ -13,7 +13,8 @@ struct DistributionCounts {
   std::uint64_t copies_sent = 0;      // of own particles, to other processes, per ghost refresh
   std::uint64_t ghost_lists_made = 0; // at setup, after migrations and after rebalances
   std::uint64_t rebalances = 0;       // regions cut again because the work had drifted apart
-  double work = 0.0;                  // the partition's estimate of this process's work
+  std::uint64_t rebalances_by_measured_time = 0; // of them, decided on measured computing times
+  double work = 0.0;                             // the partition's estimate of this process's work
 };
 
 } // namespace revsph::distributed

@@ -14,6 +14,7 @@
 #include "core/arithmetic.hpp"
 #include "core/distributed/distribution_counts.hpp"
 #include "core/distributed/ghost_plan.hpp"
+#include "core/distributed/measured_cost.hpp"
 #include "core/distributed/migration.hpp"
 #include "core/distributed/processes.hpp"
 #include "core/distributed/set_rows.hpp"
@@ -116,10 +117,15 @@ public:
   // process keeps the particles its region holds and receives its ghosts (collective).
   // `rebalance_above`: the regions are cut again when the largest process's estimated work
   // exceeds the mean by this factor at a migration (and by more than right after the last cut);
-  // 1 or less: at every migration.
-  StateDistribution(State& state, int dimension, double reach, double rebalance_above = 1.05)
+  // 1 or less: at every migration. `time_balance`: also when the processes' measured computing
+  // times differ by that factor plus 0.05, the particles then weighed by their process's measured
+  // cost per unit of estimated work (measured_cost.hpp).
+  StateDistribution(State& state, int dimension, double reach, double rebalance_above = 1.05,
+                    TimeBalance time_balance = TimeBalance::on)
       : partition_(dimension, PartitionMethod::coordinate_bisection), dimension_(dimension),
-        reach_(reach), skin_(0.25 * reach), rebalance_above_(rebalance_above) {
+        reach_(reach), skin_(0.25 * reach), rebalance_above_(rebalance_above),
+        time_balance_(rebalance_above > 1.0 ? time_balance : TimeBalance::off),
+        cost_(time_balance_ == TimeBalance::every_reading ? 0.0 : 0.5) {
     for_each_set(state, [&](auto& set) {
       Pieces& pieces = pieces_.emplace_back();
       pieces.name = std::string(std::remove_cvref_t<decltype(set)>::set.name);
@@ -131,6 +137,7 @@ public:
     remake_ghost_lists(state);
     refresh_ghosts(state, /*every_field=*/true);
     imbalance_after_cut_ = measure_work(state);
+    cost_.restart(work_);
   }
   StateDistribution(const StateDistribution&) = delete;
   StateDistribution& operator=(const StateDistribution&) = delete;
@@ -142,13 +149,16 @@ public:
   // have changed owner (the model's layouts must then be rebuilt).
   bool refresh(State& state) {
     const bool remade = moved_beyond_skin(state);
-    if (!remade) {
+    // A solid that barely moves never remakes its lists: its regions are cut again on measured
+    // times alone.
+    const bool cut_on_time = measured_times_uneven();
+    if (!remade && !cut_on_time) {
       refresh_ghosts(state, /*every_field=*/false);
       return false;
     }
-    const bool rebalance = work_drifted_apart(state);
+    const bool rebalance = work_drifted_apart(state) || cut_on_time;
     if (rebalance) {
-      cut_regions(state, /*whole_state_held=*/false);
+      cut_regions(state, /*whole_state_held=*/false, static_cast<float>(cost_factor_));
       ++rebalances_;
     }
     migrate(state);
@@ -156,6 +166,8 @@ public:
     refresh_ghosts(state, /*every_field=*/true);
     if (rebalance) {
       imbalance_after_cut_ = measure_work(state);
+      cost_.restart(work_);
+      cost_factor_ = 1.0;
     }
     return true;
   }
@@ -202,8 +214,10 @@ public:
 
   // This process's share of the run (summary.json's "distribution").
   DistributionCounts counts() const {
-    DistributionCounts counts{
-        .ghost_lists_made = ghost_lists_made_, .rebalances = rebalances_, .work = work_};
+    DistributionCounts counts{.ghost_lists_made = ghost_lists_made_,
+                              .rebalances = rebalances_,
+                              .rebalances_by_measured_time = time_rebalances_,
+                              .work = work_};
     for (const Pieces& pieces : pieces_) {
       counts.own_particles += pieces.global.size();
       if (pieces.plan) {
@@ -299,10 +313,13 @@ private:
   // Zoltan's regions, each with about the same estimated work (collective). At setup every
   // process holds the whole state and passes a slice of it, so that the work is spread; at a
   // rebalance each passes its own particles, with its ghosts as their neighbours.
-  void cut_regions(State& state, bool whole_state_held) {
+  void cut_regions(State& state, bool whole_state_held, float cost_factor = 1.0F) {
     const HeldPoints held = held_points(state, !whole_state_held);
     std::vector<float> work =
         estimated_work(held.points, held.moving, held.ids.size(), dimension_, reach_);
+    for (float& w : work) {
+      w *= cost_factor;
+    }
     const auto d = static_cast<std::size_t>(dimension_);
     // The own particles only (the ghosts were their neighbours in the estimate).
     std::span<const double> points =
@@ -348,6 +365,35 @@ private:
       return true; // at every migration (tests)
     }
     return imbalance > std::max(rebalance_above_, imbalance_after_cut_ + 0.03);
+  }
+
+  // Every `refreshes_between_readings` refreshes (the same ones on every process), the
+  // processes' computing times since the last cut (collective): whether they are uneven enough
+  // to cut the regions again. Keeps this process's cost factor for the weights of the next cut.
+  bool measured_times_uneven() {
+    constexpr std::uint64_t refreshes_between_readings = 64;
+    if (time_balance_ == TimeBalance::off ||
+        ++refreshes_since_reading_ < refreshes_between_readings) {
+      return false;
+    }
+    refreshes_since_reading_ = 0;
+    const CostReading reading = cost_.read();
+    if (!reading.long_enough) {
+      return false;
+    }
+    cost_factor_ = reading.factor;
+    if (imbalance_at_time_cut_ > 0.0) {
+      cost_.judge_last_cut(imbalance_at_time_cut_, reading.imbalance);
+      imbalance_at_time_cut_ = 0.0;
+    }
+    // Measured times are noisier than the estimate: uneven by 5 % more than it before acting.
+    if (time_balance_ != TimeBalance::every_reading &&
+        reading.imbalance <= rebalance_above_ + 0.05) {
+      return false;
+    }
+    imbalance_at_time_cut_ = reading.imbalance;
+    ++time_rebalances_;
+    return true;
   }
 
   void keep_own_particles(State& state) {
@@ -556,6 +602,12 @@ private:
   double reach_;
   double skin_;
   double rebalance_above_;
+  TimeBalance time_balance_;
+  MeasuredCost cost_;
+  double imbalance_at_time_cut_ = 0.0; // the reading that decided the last cut on time, if any
+  double cost_factor_ = 1.0;           // this process's, from the last reading since the cut
+  std::uint64_t refreshes_since_reading_ = 0;
+  std::uint64_t time_rebalances_ = 0;
   double imbalance_after_cut_ = 1.0; // largest / mean estimated work after the last cut
   double work_ = 0.0;                // this process's estimated work at the last migration
   std::uint64_t ghost_lists_made_ = 0;

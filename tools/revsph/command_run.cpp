@@ -172,8 +172,10 @@ int run_command(const RunOptions& options) {
                         summary.wall_seconds
                   : 0.0,
               summary.wall_seconds);
-  for (const EnergyTerm& maximum : diagnostics.maxima()) {
-    std::printf("%s: max %.6g\n", maximum.name.c_str(), maximum.value);
+  for (std::size_t i = 0; i < diagnostics.maxima().size(); ++i) {
+    const EnergyTerm& maximum = diagnostics.maxima()[i];
+    std::printf("%s: min %.6g, max %.6g %s\n", maximum.name.c_str(),
+                diagnostics.minima()[i].value.value(), maximum.value.value(), maximum.unit.c_str());
   }
   if (summary.distribution && summary.processes > 1) {
     std::cout << distribution_line(*summary.distribution) << "\n";

@@ -45,6 +45,7 @@ DistributionSummary summarise_distribution(const Simulation& simulation,
   summary.work_imbalance = mean_work > 0.0 ? largest_work / mean_work : 1.0;
   summary.ghost_lists_made = counts.ghost_lists_made;
   summary.rebalances = counts.rebalances;
+  summary.rebalances_by_measured_time = counts.rebalances_by_measured_time;
   return summary;
 }
 
@@ -52,11 +53,12 @@ std::string distribution_line(const DistributionSummary& summary) {
   char line[320];
   std::snprintf(line, sizeof line,
                 "processes: %d x %d threads; in MPI %.2f-%.2f s of %.2f s stepping; ghosts %.1f %% "
-                "of the particles; %.3g bytes sent a step; %llu rebalances",
+                "of the particles; %.3g bytes sent a step; %llu rebalances (%llu on measured time)",
                 summary.processes, summary.threads, summary.communication_seconds_min,
                 summary.communication_seconds_max, summary.stepping_seconds,
                 100.0 * summary.ghost_fraction, summary.bytes_sent_per_step,
-                static_cast<unsigned long long>(summary.rebalances));
+                static_cast<unsigned long long>(summary.rebalances),
+                static_cast<unsigned long long>(summary.rebalances_by_measured_time));
   return line;
 }
 

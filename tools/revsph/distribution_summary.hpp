@@ -29,6 +29,7 @@ struct DistributionSummary {
   double work_imbalance = 1.0; // largest / mean estimated work, at the last migration
   std::uint64_t ghost_lists_made = 0;
   std::uint64_t rebalances = 0;
+  std::uint64_t rebalances_by_measured_time = 0;
 };
 
 // Collective: every process calls it with its own tallies of the stepping.

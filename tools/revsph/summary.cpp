@@ -69,7 +69,8 @@ void write_summary(const std::filesystem::path& path, Simulation& simulation, co
                                {"ghost_fraction", d->ghost_fraction},
                                {"estimated_work_imbalance", d->work_imbalance},
                                {"ghost_lists_made", d->ghost_lists_made},
-                               {"rebalances", d->rebalances}};
+                               {"rebalances", d->rebalances},
+                               {"rebalances_by_measured_time", d->rebalances_by_measured_time}};
   }
   // How the threads waited at barriers (core/openmp_waiting.hpp: chosen from the machine's
   // load at start), which a benchmark's throughput depends on.
