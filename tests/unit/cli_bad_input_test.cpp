@@ -364,6 +364,17 @@ TEST(CliBadInputTest, OutputDirectoryThatCannotBeCreatedIsRefusedBeforeSetUp) {
                           blocker.string() + " is not a directory"});
 }
 
+// Where the permissions allow it but the file system does not (root in /proc; a read-only
+// mount): still bad input before the set-up (exit 3 after it before the fix).
+TEST(CliBadInputTest, OutputDirectoryOnAFileSystemThatRefusesItIsRefusedBeforeSetUp) {
+  Sandbox sandbox;
+  const fs::path out = "/proc/revsph-out/run";
+  const CommandResult result =
+      sandbox.revsph({"run", "dambreak-small", "--steps", "1", "--out", out.string()});
+  expect_clean_rejection(sandbox, result, {},
+                         {"dambreak-small: --out: ", out.string() + " cannot be created: "});
+}
+
 TEST(CliBadInputTest, ZeroThreadsIsRefusedInOneLine) {
   Sandbox sandbox;
   for (const std::string threads : {"0", "-2"}) {

@@ -13,27 +13,22 @@ shared node. Prints, per setting, the median stepping rate, the processes' secon
 """
 
 import argparse
-import json
 import os
 import statistics
 import subprocess
 import tempfile
 
-from markdown_record import emit
+from markdown_record import emit, hashes_line
+from mpi_run import mpi_run_summary
 
 SETTINGS = {"estimate alone": "0", "estimate and measured times": "on"}
 
 
 def run(revsph, case, steps, by_time, directory):
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               OMP_NUM_THREADS="1", REVSPH_BALANCE_BY_TIME=by_time)
-    out = os.path.join(directory, f"by-time-{by_time}")
-    command = ["mpirun", "-np", "2", "--bind-to", "core", "--map-by", "core",
-               "-x", "OMP_NUM_THREADS", "-x", "REVSPH_BALANCE_BY_TIME", revsph, "run", case,
-               "--steps", str(steps), "--threads", "1", "--out", out, "--force"]
-    subprocess.run(command, env=env, capture_output=True, text=True, check=True)
-    with open(os.path.join(out, "summary.json")) as f:
-        return json.load(f)
+    return mpi_run_summary(["-np", "2", "--bind-to", "core", "--map-by", "core"], revsph,
+                           [case, "--steps", str(steps), "--threads", "1"],
+                           os.path.join(directory, f"by-time-{by_time}"),
+                           {"OMP_NUM_THREADS": "1", "REVSPH_BALANCE_BY_TIME": by_time})
 
 
 def main():
@@ -87,9 +82,7 @@ def main():
             f"{d['communication_seconds_max']:.2f} | {last[name]['stepping_seconds']:.2f} | "
             f"{d['own_particles_min']}-{d['own_particles_max']} | {d['rebalances']} "
             f"({d.get('rebalances_by_measured_time', 0)}) |")
-    lines += ["", f"final hashes over every run: {len(hashes)} distinct "
-              f"({', '.join(h[:16] for h in sorted(hashes))}); commit "
-              f"{last[next(iter(SETTINGS))]['build']['git_commit']}"]
+    lines += ["", hashes_line(hashes, last[next(iter(SETTINGS))])]
     emit(lines, args.output)
 
 

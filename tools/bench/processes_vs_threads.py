@@ -12,27 +12,21 @@ rebalances). Every layout runs in turn, --repeats rounds, alternating, and the m
 """
 
 import argparse
-import json
 import os
 import statistics
-import subprocess
 import tempfile
 
-from markdown_record import emit
+from markdown_record import emit, hashes_line
+from mpi_run import mpi_run_summary
 
 
 def run(revsph, case, steps, processes, threads, sets, directory):
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               OMP_NUM_THREADS=str(threads))
-    out = os.path.join(directory, f"{processes}x{threads}")
-    command = ["mpirun", "-np", str(processes), "--oversubscribe", "--bind-to", "none",
-               "-x", "OMP_NUM_THREADS", revsph, "run", case, "--steps", str(steps),
-               "--threads", str(threads), "--out", out, "--force"]
+    arguments = [case, "--steps", str(steps), "--threads", str(threads)]
     for s in sets:
-        command += ["--set", s]
-    subprocess.run(command, env=env, capture_output=True, text=True, check=True)
-    with open(os.path.join(out, "summary.json")) as f:
-        return json.load(f)
+        arguments += ["--set", s]
+    return mpi_run_summary(["-np", str(processes), "--oversubscribe", "--bind-to", "none"],
+                           revsph, arguments, os.path.join(directory, f"{processes}x{threads}"),
+                           {"OMP_NUM_THREADS": str(threads)})
 
 
 def main():
@@ -88,9 +82,7 @@ def main():
             f"{last[layout]['stepping_seconds']:.2f} | {d.get('ghost_fraction', 0):.4f} | "
             f"{d.get('bytes_sent_per_step', 0):.4g} | {d.get('mpi_calls_per_step', 0):.1f} | "
             f"{d.get('estimated_work_imbalance', 1):.3f} | {d.get('rebalances', 0)} |")
-    lines += ["", f"final hashes over every run: {len(hashes)} distinct "
-              f"({', '.join(h[:16] for h in sorted(hashes))}); commit "
-              f"{last[layouts[0]]['build']['git_commit']}"]
+    lines += ["", hashes_line(hashes, last[layouts[0]])]
     emit(lines, args.output)
 
 

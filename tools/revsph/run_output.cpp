@@ -50,6 +50,15 @@ void RunOutput::check_creatable(const fs::path& directory, const std::string& ca
                     directory.string() + " cannot be created: no permission to write in " +
                         ancestor.string());
   }
+  // Permissions do not tell everything (root may write anywhere, yet not in /proc or on a
+  // read-only file system): make a directory there and remove it again.
+  const fs::path probe = ancestor / (".revsph-out-check-" + std::to_string(getpid()));
+  if (!fs::create_directory(probe, error) && error) {
+    throw CaseError(case_source, "--out",
+                    directory.string() + " cannot be created: " + error.message() + " in " +
+                        ancestor.string());
+  }
+  fs::remove(probe, error);
 }
 
 void RunOutput::check_directory(const fs::path& directory, bool force,
