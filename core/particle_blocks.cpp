@@ -2,6 +2,7 @@
 
 #include "core/coincident_particles.hpp"
 #include "core/outline.hpp"
+#include "core/point_file.hpp"
 
 #include "core/memory.hpp"
 
@@ -220,7 +221,7 @@ Box<D> read_domain(const CaseFile& case_file) {
 
 namespace {
 
-enum class Shape { box, container, annulus, outline };
+enum class Shape { box, container, annulus, outline, points };
 
 // Concentric rings filling the annulus inner_radius < |x - centre| < outer_radius (2D): as many
 // rings as spacings fit across it, each at the middle of its band, with round(2 pi r / spacing)
@@ -270,6 +271,9 @@ struct BlockSpec {
   double shell = 0.0;
   // Blocks whose regions this block's particles leave out (indices into [[particles]]).
   std::vector<std::size_t> exclude;
+  // A points block's particles, read from its file (core/point_file.hpp).
+  std::vector<Vec<D>> points;
+  double particle_volume = 0.0;
 };
 
 template <int D>
@@ -382,6 +386,40 @@ void read_outline(const CaseFile& case_file, BlockSpec<D>& spec) {
   spec.outer = spec.region;
 }
 
+// shape = "points": the particles of a point file (file, particle_volume); its other columns are
+// initial values of the set's fields, given to them by fill_set (core/state_fill.hpp).
+template <int D>
+void read_points(const CaseFile& case_file, BlockSpec<D>& spec) {
+  auto field = [&](const char* name) { return spec.key + "." + name; };
+  for (const char* lattice_key : {"lattice", "min", "max", "layers", "exclude_blocks"}) {
+    if (case_file.has(field(lattice_key))) {
+      case_file.fail(field(lattice_key), "a \"points\" block's particles come from its file");
+    }
+  }
+  spec.shape = Shape::points;
+  try {
+    spec.points = read_point_file<D>(block_file_path(case_file, spec.key)).positions;
+  } catch (const PointFileError& error) {
+    case_file.fail(field("file"), error.what());
+  }
+  double volume = 1.0;
+  for (int k = 0; k < D; ++k) {
+    volume *= spec.spacing;
+  }
+  spec.particle_volume = volume;
+  if (case_file.has(field("particle_volume"))) {
+    spec.particle_volume = case_file.positive_number(field("particle_volume"));
+  }
+  spec.region = Box<D>{spec.points.front(), spec.points.front()};
+  for (const Vec<D>& p : spec.points) {
+    for (int k = 0; k < D; ++k) {
+      spec.region.min[k] = std::min(spec.region.min[k], p[k]);
+      spec.region.max[k] = std::max(spec.region.max[k], p[k]);
+    }
+  }
+  spec.outer = spec.region;
+}
+
 template <int D>
 BlockSpec<D> read_block(const CaseFile& case_file, std::size_t index, double default_spacing,
                         std::span<const std::string_view> kinds) {
@@ -430,6 +468,10 @@ BlockSpec<D> read_block(const CaseFile& case_file, std::size_t index, double def
     read_annulus<D>(case_file, spec);
     return spec;
   }
+  if (shape == "points") {
+    read_points<D>(case_file, spec);
+    return spec;
+  }
   if (shape == "outline") {
     if constexpr (D != 2) {
       case_file.fail(field("shape"), "an outline is two-dimensional");
@@ -466,8 +508,9 @@ BlockSpec<D> read_block(const CaseFile& case_file, std::size_t index, double def
     }
   } else if (shape != "box") {
     case_file.fail(field("shape"),
-                   "expected \"box\", \"container\", \"annulus\" or \"outline\", got \"" + shape +
-                       "\"");
+                   "expected \"box\", \"container\", \"annulus\", \"outline\" or \"points\", "
+                   "got \"" +
+                       shape + "\"");
   } else if (case_file.has(field("layers")) || case_file.has(field("open_top"))) {
     case_file.fail(case_file.has(field("layers")) ? field("layers") : field("open_top"),
                    "only a \"container\" block has layers and open_top");
@@ -480,6 +523,9 @@ BlockSpec<D> read_block(const CaseFile& case_file, std::size_t index, double def
 // hollow of a container.
 template <int D>
 double estimated_particles(const BlockSpec<D>& spec) {
+  if (spec.shape == Shape::points) {
+    return static_cast<double>(spec.points.size());
+  }
   Box<D> padded = spec.outer;
   const Vec<D> period = lattice_periods<D>(spec.lattice, spec.spacing);
   for (int k = 0; k < D; ++k) {
@@ -554,6 +600,9 @@ ParticleBlock<D> generate_block(const CaseFile& case_file, const BlockSpec<D>& s
       block.positions =
           square_lattice_points(*spec.outline, spec.lattice_origin, spec.spacing, spec.shell);
     }
+  } else if (spec.shape == Shape::points) {
+    block.positions = spec.points;
+    block.volume_per_particle = spec.particle_volume;
   } else if (spec.shape == Shape::annulus) {
     if constexpr (D == 2) {
       block.positions = ring_points(spec.annulus, spec.spacing);
@@ -632,6 +681,43 @@ read_particle_blocks(const CaseFile& case_file, double default_spacing, const Bo
   return blocks;
 }
 
+std::filesystem::path block_file_path(const CaseFile& case_file, const std::string& block_key) {
+  const std::filesystem::path file = case_file.string(block_key + ".file");
+  if (file.empty()) {
+    case_file.fail(block_key + ".file", "an empty path");
+  }
+  return file.is_absolute() ? file
+                            : std::filesystem::path(case_file.source_name()).parent_path() / file;
+}
+
+template <int D>
+std::vector<PointBlockValues<D>> point_blocks_with_values(const CaseFile& case_file,
+                                                          std::string_view kind) {
+  std::vector<PointBlockValues<D>> blocks;
+  for (std::size_t b = 0; b < case_file.table_count("particles"); ++b) {
+    const std::string key = "particles[" + std::to_string(b) + "]";
+    if (case_file.string_or(key + ".shape", "box") != "points" ||
+        case_file.string(key + ".kind") != kind) {
+      continue;
+    }
+    try {
+      PointFile<D> file = read_point_file<D>(block_file_path(case_file, key));
+      if (!file.columns.empty()) {
+        blocks.push_back({key, std::move(file)});
+      }
+    } catch (const PointFileError& error) {
+      case_file.fail(key + ".file", error.what());
+    }
+  }
+  return blocks;
+}
+
+template std::vector<PointBlockValues<1>> point_blocks_with_values<1>(const CaseFile&,
+                                                                      std::string_view);
+template std::vector<PointBlockValues<2>> point_blocks_with_values<2>(const CaseFile&,
+                                                                      std::string_view);
+template std::vector<PointBlockValues<3>> point_blocks_with_values<3>(const CaseFile&,
+                                                                      std::string_view);
 template std::vector<Vec<1>> lattice_points<1>(Lattice, const Box<1>&, double);
 template std::vector<Vec<2>> lattice_points<2>(Lattice, const Box<2>&, double);
 template std::vector<Vec<3>> lattice_points<3>(Lattice, const Box<3>&, double);

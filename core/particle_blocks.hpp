@@ -12,7 +12,11 @@
 //                                "outline" (2D): a polygon with rounded corners
 //                                (core/outline.hpp; keys vertices, corner_radii, mirror_x,
 //                                offset, lattice_origin; layers: only a shell that thick),
-//                                filled on a square lattice
+//                                filled on a square lattice;
+//                                "points": the particles of a point file (key file, relative to
+//                                the case file's folder; core/point_file.hpp), each standing for
+//                                particle_volume (default spacing^D); the file's other columns
+//                                are initial values of the set's fields (core/state_fill.hpp)
 //   exclude_blocks = [i, ...]    leave out the particles inside those blocks' regions (box or
 //                                outline): a fluid around solid bodies
 //   lattice = "square"           "square", "hexagonal" (2D: triangular; 3D: hexagonal close
@@ -28,7 +32,9 @@
 
 #include "core/case_file.hpp"
 #include "core/geometry.hpp"
+#include "core/point_file.hpp"
 
+#include <filesystem>
 #include <span>
 #include <string>
 #include <string_view>
@@ -90,6 +96,21 @@ template <int D>
 std::vector<ParticleBlock<D>>
 read_particle_blocks(const CaseFile& case_file, double default_spacing, const Box<D>& domain,
                      std::span<const std::string_view> kinds, const ParticleBudget& budget);
+
+// The file of block `block_key` ("particles[2]"): its key file, relative to the case file's
+// folder unless absolute.
+std::filesystem::path block_file_path(const CaseFile& case_file, const std::string& block_key);
+
+// The "points" blocks of `kind` whose files give field values besides positions, as read: what
+// fill_set gives the set's fields (core/state_fill.hpp).
+template <int D>
+struct PointBlockValues {
+  std::string key; // "particles[2]"
+  PointFile<D> file;
+};
+template <int D>
+std::vector<PointBlockValues<D>> point_blocks_with_values(const CaseFile& case_file,
+                                                          std::string_view kind);
 
 // Reads [domain] min/max and checks min < max on every axis.
 template <int D>

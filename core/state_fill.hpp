@@ -4,12 +4,15 @@
 // a key when a value does not fit the field's fixed-point scale.
 
 #include "core/case_file.hpp"
+#include "core/field_components.hpp"
 #include "core/geometry.hpp"
+#include "core/particle_blocks.hpp"
 #include "core/particle_sets.hpp"
 #include "core/state_field.hpp"
 
 #include <functional>
 #include <initializer_list>
+#include <map>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -47,8 +50,124 @@ struct FieldFill {
   std::variant<std::span<const Vec<D>>, std::span<const double>, double> values;
 };
 
+namespace detail {
+
+// Whether fill `a` and fill `b` were given the same per-particle values (a field and its copy,
+// such as superfluid's velocity and velocity_copy): a file's values for one go to both.
+template <int D>
+bool same_values(const FieldFill<D>& a, const FieldFill<D>& b) {
+  return std::visit(
+      [](const auto& x, const auto& y) {
+        using X = std::decay_t<decltype(x)>;
+        using Y = std::decay_t<decltype(y)>;
+        if constexpr (std::is_same_v<X, Y> && !std::is_same_v<X, double>) {
+          return x.data() == y.data() && x.size() == y.size();
+        } else {
+          return false;
+        }
+      },
+      a.values, b.values);
+}
+
+// The fills a point file may give values to: every one but the positions (its x, y, z columns)
+// and the constants a model computes after filling them with 0 (integration constants).
+template <int D, class Field>
+bool file_may_give(const FieldFill<D>& fill, const Field& field) {
+  const bool computed_later = std::holds_alternative<double>(fill.values) && !field.info().evolved;
+  return fill.field != "position" && !computed_later;
+}
+
+// The values the "points" blocks of this set's kind give its fields (core/point_file.hpp),
+// after the set-up's own: each file particle is found by its position in the set (where the
+// set-up put it), each column is a component of a filled field in that field's unit.
+template <class Arith, int D, ParticleSet Set>
+void fill_from_point_files(const CaseFile& case_file, Set& set,
+                           std::initializer_list<FieldFill<D>> fills) {
+  using Raw = typename Arith::Raw;
+  using Field = StateField<Raw>;
+  const std::vector<PointBlockValues<D>> blocks =
+      point_blocks_with_values<D>(case_file, Set::set.name);
+  if (blocks.empty()) {
+    return;
+  }
+  std::map<std::string_view, Field*> fields;
+  for_each_field_of(set, [&](Field& field) { fields[field.info().name] = &field; });
+  const Field& position = *fields.at("position");
+  std::map<std::array<Raw, D>, std::size_t> row_at;
+  for (std::size_t i = 0; i < position.count(); ++i) {
+    std::array<Raw, D> key{};
+    for (int k = 0; k < D; ++k) {
+      key[k] = position.at(k, i);
+    }
+    row_at.emplace(key, i);
+  }
+  for (const PointBlockValues<D>& block : blocks) {
+    const std::string file_key = block.key + ".file";
+    std::vector<std::size_t> rows(block.file.positions.size());
+    for (std::size_t p = 0; p < rows.size(); ++p) {
+      std::array<Raw, D> key{};
+      for (int k = 0; k < D; ++k) {
+        Arith::try_from_real(block.file.positions[p][k], position.info().scale, key[k]);
+      }
+      const auto found = row_at.find(key);
+      if (found == row_at.end()) {
+        case_file.fail(file_key, "particle " + std::to_string(p) +
+                                     " of the file is not where the set-up left it (an initial "
+                                     "state correction moves particles): its values have no "
+                                     "particle");
+      }
+      rows[p] = found->second;
+    }
+    for (const PointColumn& column : block.file.columns) {
+      const FieldFill<D>* given = nullptr;
+      int component = 0;
+      std::string allowed;
+      for (const FieldFill<D>& fill : fills) {
+        Field& field = *fields.at(fill.field);
+        if (!file_may_give(fill, field)) {
+          continue;
+        }
+        for (int c = 0; c < field.components(); ++c) {
+          const std::string name = component_name(field.info().name, D, field.components(), c);
+          allowed += (allowed.empty() ? "" : ", ") + name + " [" + field.info().unit + "]";
+          if (name == column.name) {
+            given = &fill;
+            component = c;
+          }
+        }
+      }
+      if (given == nullptr) {
+        case_file.fail(file_key, "column " + column.name + ": no such initial value of set " +
+                                     std::string(Set::set.name) + " (it takes " + allowed + ")");
+      }
+      const std::string& unit = fields.at(given->field)->info().unit;
+      if (column.unit != unit) {
+        case_file.fail(file_key, "column " + column.name + " is in [" + column.unit +
+                                     "]; the field is in [" + unit + "]");
+      }
+      for (const FieldFill<D>& fill : fills) {
+        if (&fill != given && !same_values(fill, *given)) {
+          continue;
+        }
+        Field& field = *fields.at(fill.field);
+        for (std::size_t p = 0; p < rows.size(); ++p) {
+          if (!Arith::try_from_real(column.values[p], field.info().scale,
+                                    field.at(component, rows[p]))) {
+            case_file.fail(file_key, "particle " + std::to_string(p) + "'s " + column.name +
+                                         " does not fit its fixed-point scale (see [fixed_point])");
+          }
+        }
+      }
+    }
+  }
+}
+
+} // namespace detail
+
 // Fills the named fields of `set`, `count` particles each (values of another length, or a name
-// the set does not declare, are a logic error); its other fields are left as they are.
+// the set does not declare, are a logic error); its other fields are left as they are. Then the
+// point files of the set's kind give their values (detail::fill_from_point_files): a field in
+// `fills` is a field whose initial value a user may give.
 template <class Arith, int D, ParticleSet Set>
 void fill_set(const CaseFile& case_file, Set& set, std::size_t count,
               std::initializer_list<FieldFill<D>> fills) {
@@ -92,6 +211,7 @@ void fill_set(const CaseFile& case_file, Set& set, std::size_t count,
         },
         fill.values);
   }
+  detail::fill_from_point_files<Arith, D>(case_file, set, fills);
 }
 
 } // namespace revsph

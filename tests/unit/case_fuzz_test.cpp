@@ -48,6 +48,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <mutex>
@@ -327,6 +329,20 @@ struct FuzzSettings {
   std::uint64_t default_mutants = 0;
   std::uint64_t seed_offset = 0;  // a different stream per test
   bool floating_point_too = true; // false for a model that runs in fixed point only
+  // A point file (core/point_file.hpp) the case reads: `point_block` replaces `point_block_from`
+  // in the case, and each mutant reads `point_file` (mutated too, a third of the time), written
+  // to a file whose absolute path replaces POINT_FILE in `point_block`.
+  std::string point_block_from;
+  std::string point_block;
+  std::string point_file;
+};
+
+// A file for the point file of a fuzz test, removed at the end.
+struct PointFileOnDisk {
+  std::filesystem::path path = std::filesystem::temp_directory_path() /
+                               ("revsph-case-fuzz-" + std::to_string(::getpid()) + ".csv");
+  void write(const std::string& text) const { std::ofstream(path, std::ios::binary) << text; }
+  ~PointFileOnDisk() { std::filesystem::remove(path); }
 };
 
 void fuzz(const FuzzSettings& settings) {
@@ -347,8 +363,15 @@ void fuzz(const FuzzSettings& settings) {
     ~RestoreThreads() { set_thread_count(threads); }
   } restore{threads};
 
-  const std::string base = testing::replaced_once(testing::builtin_case_text(settings.builtin_case),
-                                                  settings.coarse_from, settings.coarse_to);
+  std::string base = testing::replaced_once(testing::builtin_case_text(settings.builtin_case),
+                                            settings.coarse_from, settings.coarse_to);
+  const PointFileOnDisk point_file;
+  if (!settings.point_block.empty()) {
+    base = testing::replaced_once(
+        base, settings.point_block_from,
+        testing::replaced_once(settings.point_block, "POINT_FILE", point_file.path.string()));
+    point_file.write(settings.point_file);
+  }
   // Most mutants start from the case without its comments, so that edits land on what is read.
   const std::string base_without_comments = without_comments(base);
   // The unmutated coarse case must be a valid, cheap setup, or the mutants test little.
@@ -375,6 +398,13 @@ void fuzz(const FuzzSettings& settings) {
         overrides.items.push_back(mutator.random_override());
       }
     }
+    std::string points = settings.point_file;
+    if (!points.empty()) {
+      if (mutator.chance(0.3)) {
+        mutator.mutate(points);
+      }
+      point_file.write(points);
+    }
     const Arithmetic arithmetic = settings.floating_point_too && mutator.chance(0.2)
                                       ? Arithmetic::floating
                                       : Arithmetic::fixed;
@@ -385,6 +415,9 @@ void fuzz(const FuzzSettings& settings) {
       report << ", --set '" << printable(key) << "=" << printable(value) << "'";
     }
     report << "), case text:\n" << printable(text) << "\n--- end of case text";
+    if (points != settings.point_file) {
+      report << "\npoint file:\n" << printable(points) << "\n--- end of point file";
+    }
     set_current(report.str());
     watchdog.start_mutant();
 
@@ -429,6 +462,29 @@ void fuzz(const FuzzSettings& settings) {
 TEST(CaseFuzz, MutantsOfDambreakSmall2D) {
   // dr 0.1: 200 fluid and about 150 wall particles.
   fuzz({"dambreak-small", "\ndr = 0.02", "\ndr = 0.1", 12000, 0});
+}
+
+// A user's fluid from a point file (core/point_file.hpp) with initial velocities and masses: 200
+// particles on the 0.1 m lattice of the coarse dambreak-small.
+std::string dambreak_fluid_points() {
+  std::ostringstream csv;
+  csv << std::setprecision(17) << "x [m], y [m], velocity_x [m/s], velocity_y [m/s], mass [kg/m]\n";
+  for (int row = 0; row < 20; ++row) {
+    for (int column = 0; column < 10; ++column) {
+      csv << 0.05 + 0.1 * column << ", " << 0.05 + 0.1 * row << ", " << 0.01 * (row % 3) << ", "
+          << -0.02 * (column % 2) << ", " << 10.0 - 0.01 * row << "\n";
+    }
+  }
+  return csv.str();
+}
+
+TEST(CaseFuzz, MutantsOfDambreakSmallFromAPointFile) {
+  FuzzSettings settings{"dambreak-small", "\ndr = 0.02", "\ndr = 0.1", 6000, 11};
+  settings.point_block_from =
+      "shape = \"box\"\nlattice = \"square\"\nmin = [0.0, 0.0]\nmax = [1.0, 2.0]";
+  settings.point_block = "shape = \"points\"\nfile = \"POINT_FILE\"\nparticle_volume = 0.01";
+  settings.point_file = dambreak_fluid_points();
+  fuzz(settings);
 }
 
 TEST(CaseFuzz, MutantsOfExpansionSmall) {

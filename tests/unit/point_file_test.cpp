@@ -1,0 +1,199 @@
+// Point files (core/point_file.hpp) and what fill_set gives a set from them
+// (core/state_fill.hpp): CSV and HDF5 read to the same columns; a header without units, a row of
+// the wrong length, a value that is no number, a position not in metres are one-line errors
+// naming the file and line; a file's values reach the particles it places, in their field's
+// unit, and a copy filled from the same values gets them too.
+
+#include "core/arithmetic.hpp"
+#include "core/case_file.hpp"
+#include "core/common_fields.hpp"
+#include "core/hdf5_handle.hpp"
+#include "core/point_file.hpp"
+#include "core/state_fill.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace revsph {
+namespace {
+
+namespace fs = std::filesystem;
+
+class PointFileTest : public testing::Test {
+protected:
+  void SetUp() override {
+    folder_ =
+        fs::temp_directory_path() / ("revsph-point-file-" + std::to_string(::getpid()) + "-" +
+                                     testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(folder_);
+  }
+  void TearDown() override { fs::remove_all(folder_); }
+  fs::path write(const std::string& name, const std::string& text) {
+    std::ofstream(folder_ / name) << text;
+    return folder_ / name;
+  }
+  // The error read_point_file<2> throws for `text`, or "" if it reads.
+  std::string refusal(const std::string& text) {
+    try {
+      read_point_file<2>(write("bad.csv", text));
+    } catch (const PointFileError& error) {
+      return error.what();
+    }
+    return "";
+  }
+  fs::path folder_;
+};
+
+TEST_F(PointFileTest, ReadsPositionsAndNamedColumnsWithUnitsFromCsv) {
+  const PointFile<2> file = read_point_file<2>(write("ok.csv", "# a comment\n"
+                                                               "velocity_x [m/s], x [m], y [m]\n"
+                                                               "1.5, 0.25, -1e-3\n"
+                                                               "\n"
+                                                               " -2 , 0.75 , 2.0\n"));
+  ASSERT_EQ(file.positions.size(), 2u);
+  EXPECT_EQ(file.positions[0][0], 0.25);
+  EXPECT_EQ(file.positions[0][1], -1e-3);
+  EXPECT_EQ(file.positions[1][1], 2.0);
+  ASSERT_EQ(file.columns.size(), 1u);
+  EXPECT_EQ(file.columns[0].name, "velocity_x");
+  EXPECT_EQ(file.columns[0].unit, "m/s");
+  EXPECT_EQ(file.columns[0].values, (std::vector<double>{1.5, -2.0}));
+}
+
+TEST_F(PointFileTest, BadCsvIsOneLineNamingFileAndLine) {
+  EXPECT_NE(refusal("x, y [m]\n0, 0\n").find("has no unit"), std::string::npos);
+  EXPECT_NE(refusal("x [m], y [m]\n0, 0\n1, 2, 3\n").find("line 3: 3 values for 2 columns"),
+            std::string::npos);
+  EXPECT_NE(refusal("x [m], y [m]\n0, nan\n").find("not a finite number"), std::string::npos);
+  EXPECT_NE(refusal("x [m], y [m]\n0, 1.5.2\n").find("line 2"), std::string::npos);
+  EXPECT_NE(refusal("x [mm], y [m]\n0, 0\n").find("positions are in [m]"), std::string::npos);
+  EXPECT_NE(refusal("x [m], z [m]\n0, 0\n").find("a column z in a 2D case"), std::string::npos);
+  EXPECT_NE(refusal("x [m]\n0\n").find("no position column y"), std::string::npos);
+  EXPECT_NE(refusal("x [m], y [m], x [m]\n0, 0, 0\n").find("appears twice"), std::string::npos);
+  EXPECT_NE(refusal("x [m], y [m]\n").find("no particles"), std::string::npos);
+  EXPECT_NE(refusal("").find("empty"), std::string::npos);
+  EXPECT_EQ(refusal("x [m], y [m]\n0, 0\n"), "");
+}
+
+// h5py's way: one dataset per field, (N) or (N, C), with a unit attribute.
+void write_dataset(hid_t file, const char* name, const std::vector<double>& rows, hsize_t count,
+                   hsize_t components, const char* unit) {
+  const hsize_t dims[2] = {count, components};
+  const hdf5::Handle space(H5Screate_simple(components == 1 ? 1 : 2, dims, nullptr), H5Sclose,
+                           "space");
+  const hdf5::Handle dataset(
+      H5Dcreate2(file, name, H5T_NATIVE_DOUBLE, space.id(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+      H5Dclose, "dataset");
+  H5Dwrite(dataset.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, rows.data());
+  hdf5::write_string_attribute(dataset.id(), "unit", unit);
+}
+
+TEST_F(PointFileTest, Hdf5DatasetsReadAsTheSameColumnsAsCsv) {
+  const fs::path path = folder_ / "points.h5";
+  {
+    const hdf5::Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
+                            H5Fclose, "file");
+    write_dataset(file.id(), "position", {0.25, -1e-3, 0.75, 2.0}, 2, 2, "m");
+    write_dataset(file.id(), "velocity", {1.5, 3.0, -2.0, 4.0}, 2, 2, "m/s");
+    write_dataset(file.id(), "entropy", {7.0, 8.0}, 2, 1, "J/(kg K)");
+  }
+  const PointFile<2> file = read_point_file<2>(path);
+  ASSERT_EQ(file.positions.size(), 2u);
+  EXPECT_EQ(file.positions[1][0], 0.75);
+  ASSERT_EQ(file.columns.size(), 3u); // in name order: entropy, velocity
+  EXPECT_EQ(file.columns[0].name, "entropy");
+  EXPECT_EQ(file.columns[0].unit, "J/(kg K)");
+  EXPECT_EQ(file.columns[1].name, "velocity_x");
+  EXPECT_EQ(file.columns[2].name, "velocity_y");
+  EXPECT_EQ(file.columns[2].values, (std::vector<double>{3.0, 4.0}));
+
+  // What the CSV writer writes reads back the same.
+  write_point_csv<2>(folder_ / "again.csv", file);
+  const PointFile<2> again = read_point_file<2>(folder_ / "again.csv");
+  EXPECT_EQ(again.positions, file.positions);
+  EXPECT_EQ(again.columns[1].values, file.columns[1].values);
+}
+
+// A set like a model's fluid: velocity and a copy of it filled from the same values.
+struct Fluid {
+  static constexpr SetInfo set{.name = "fluid", .motion = Motion::moving};
+  StateField<std::int64_t> position{position_field<2>()};
+  StateField<std::int64_t> velocity{
+      {.name = "velocity", .unit = "m/s", .parity = Parity::odd, .components = 2}};
+  StateField<std::int64_t> velocity_copy{{.name = "velocity_copy",
+                                          .unit = "m/s",
+                                          .parity = Parity::odd,
+                                          .components = 2,
+                                          .scaled_as = "velocity"}};
+  StateField<std::int64_t> density_constant{density_constant_field()};
+  auto fields() { return std::tie(position, velocity, velocity_copy, density_constant); }
+};
+
+class FillFromPointFile : public PointFileTest {
+protected:
+  // fill_set's error for a fluid whose particles are a box block's two and the file's two.
+  std::string fill(const std::string& csv, Fluid& fluid) {
+    write("fluid.csv", csv);
+    const CaseFile case_file =
+        CaseFile::parse("[[particles]]\nkind = \"fluid\"\nmin = [0, 0]\nmax = [1, 1]\n"
+                        "[[particles]]\nkind = \"fluid\"\nshape = \"points\"\n"
+                        "file = \"fluid.csv\"\n",
+                        (folder_ / "case.toml").string());
+    for (auto* field :
+         {&fluid.position, &fluid.velocity, &fluid.velocity_copy, &fluid.density_constant}) {
+      field->set_scale(fixedpoint::Scale(-40));
+    }
+    const std::vector<Vec<2>> positions = {{0.5, 0.5}, {0.1, 0.2}, {3.0, 4.0}, {2.0, 0.25}};
+    const std::vector<Vec<2>> velocities(4, Vec<2>{9.0, 9.0});
+    try {
+      fill_set<FixedArithmetic, 2>(case_file, fluid, 4,
+                                   {{"position", "particles", positions},
+                                    {"velocity", "initial.field", velocities},
+                                    {"velocity_copy", "initial.field", velocities},
+                                    {"density_constant", "particles", 0.0}});
+    } catch (const CaseError& error) {
+      return error.what();
+    }
+    return "";
+  }
+  static double velocity(const StateField<std::int64_t>& field, int k, std::size_t i) {
+    return fixedpoint::to_real(field.at(k, i), field.info().scale);
+  }
+};
+
+TEST_F(FillFromPointFile, GivesTheFilesValuesToTheParticlesItPlacesAndToCopies) {
+  Fluid fluid;
+  ASSERT_EQ(fill("x [m], y [m], velocity_y [m/s]\n2.0, 0.25, -1.5\n3.0, 4.0, 0.5\n", fluid), "");
+  EXPECT_EQ(velocity(fluid.velocity, 1, 3), -1.5);
+  EXPECT_EQ(velocity(fluid.velocity, 1, 2), 0.5);
+  EXPECT_EQ(velocity(fluid.velocity_copy, 1, 3), -1.5);
+  EXPECT_EQ(velocity(fluid.velocity, 0, 3), 9.0); // not given: the set-up's
+  EXPECT_EQ(velocity(fluid.velocity, 1, 0), 9.0); // the box block's particle
+}
+
+TEST_F(FillFromPointFile, RefusesWrongUnitsUnknownFieldsConstantsAndMovedParticles) {
+  Fluid fluid;
+  EXPECT_NE(fill("x [m], y [m], velocity_y [km/h]\n2.0, 0.25, 1\n", fluid)
+                .find("velocity_y is in [km/h]; the field is in [m/s]"),
+            std::string::npos);
+  const std::string unknown = fill("x [m], y [m], speed [m/s]\n2.0, 0.25, 1\n", fluid);
+  EXPECT_NE(unknown.find("column speed: no such initial value of set fluid"), std::string::npos);
+  EXPECT_NE(unknown.find("velocity_x [m/s]"), std::string::npos) << unknown;
+  EXPECT_NE(fill("x [m], y [m], density_constant [kg/m^3]\n2.0, 0.25, 1\n", fluid)
+                .find("no such initial value"),
+            std::string::npos);
+  EXPECT_NE(fill("x [m], y [m], velocity_y [m/s]\n2.0, 0.26, 1\n", fluid)
+                .find("not where the set-up left it"),
+            std::string::npos);
+  EXPECT_NE(fill("x [m], y [m], velocity_y [m/s]\n2.0, 0.25, 1e300\n", fluid)
+                .find("does not fit its fixed-point scale"),
+            std::string::npos);
+}
+
+} // namespace
+} // namespace revsph
