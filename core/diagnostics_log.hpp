@@ -4,6 +4,7 @@
 // run.
 
 #include "core/energy.hpp"
+#include "core/logged_rows.hpp"
 
 #include <cstdint>
 #include <fstream>
@@ -16,6 +17,9 @@ namespace revsph {
 class DiagnosticsLog {
 public:
   explicit DiagnosticsLog(std::optional<std::string> csv_path);
+  // Continues the rows `earlier` (what csv_path already holds, core/logged_rows.hpp): their
+  // extremes carry on, and the rows from here on are appended.
+  DiagnosticsLog(std::optional<std::string> csv_path, const LoggedRows& earlier);
 
   void record(std::int64_t step, double time, const std::vector<EnergyTerm>& diagnostics);
   // The largest and the smallest value of each diagnostic so far, in the order of the first

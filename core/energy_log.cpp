@@ -17,6 +17,34 @@ EnergyLog::EnergyLog(std::optional<std::string> csv_path, std::optional<double> 
   }
 }
 
+EnergyLog::EnergyLog(std::optional<std::string> csv_path, std::optional<double> reference_total,
+                     const LoggedRows& earlier)
+    : initial_total_(reference_total) {
+  const std::size_t columns = earlier.columns.size();
+  if (columns < 5 || earlier.columns[columns - 3] != "total") {
+    throw std::runtime_error("the energy.csv continued has no step, time, terms, total, errors");
+  }
+  earlier_terms_.assign(earlier.columns.begin() + 2, earlier.columns.end() - 3);
+  for (const std::vector<double>& row : earlier.rows) {
+    EnergyBudget budget;
+    for (std::size_t t = 0; t < earlier_terms_.size(); ++t) {
+      budget.terms.push_back({earlier_terms_[t], RunTotal::same_on_every_process(row[2 + t]), ""});
+    }
+    if (!initial_total_) {
+      initial_total_ = budget.total().value();
+    }
+    observe(budget);
+  }
+  recorded_ = !earlier.rows.empty();
+  if (csv_path) {
+    csv_.emplace(*csv_path, std::ios::app);
+    if (!*csv_) {
+      throw std::runtime_error("cannot write " + *csv_path);
+    }
+    csv_->precision(17);
+  }
+}
+
 void EnergyLog::continue_from(const EnergyLog& earlier) {
   initial_total_ = earlier.initial_total_;
   scale_ = earlier.scale_;
@@ -38,14 +66,15 @@ void EnergyLog::record(std::int64_t step, double time, const EnergyBudget& budge
       *csv_ << ",total,relative_error,mechanical_relative_error\n";
     }
   }
-  const double deviation = std::fabs(total - *initial_total_);
-  max_deviation_ = std::max(max_deviation_, deviation);
-  scale_ = std::max({scale_, std::fabs(*initial_total_), budget.largest_term()});
-  last_relative_error_ = deviation / scale_;
-  max_relative_error_ = std::max(max_relative_error_, last_relative_error_);
-  mechanical_scale_.observe(budget);
-  last_mechanical_relative_error_ = mechanical_relative_error(deviation, mechanical_scale_.value());
-  last_ = budget;
+  if (!earlier_terms_.empty()) {
+    for (std::size_t t = 0; t < budget.terms.size(); ++t) {
+      if (budget.terms.size() != earlier_terms_.size() ||
+          budget.terms[t].name != earlier_terms_[t]) {
+        throw std::runtime_error("the energy terms differ from those of the rows continued");
+      }
+    }
+  }
+  observe(budget);
   if (csv_) {
     *csv_ << step << "," << time;
     for (const EnergyTerm& term : budget.terms) {
@@ -55,6 +84,18 @@ void EnergyLog::record(std::int64_t step, double time, const EnergyBudget& budge
           << "\n";
     csv_->flush();
   }
+}
+
+void EnergyLog::observe(const EnergyBudget& budget) {
+  const double total = budget.total();
+  const double deviation = std::fabs(total - *initial_total_);
+  max_deviation_ = std::max(max_deviation_, deviation);
+  scale_ = std::max({scale_, std::fabs(*initial_total_), budget.largest_term()});
+  last_relative_error_ = deviation / scale_;
+  max_relative_error_ = std::max(max_relative_error_, last_relative_error_);
+  mechanical_scale_.observe(budget);
+  last_mechanical_relative_error_ = mechanical_relative_error(deviation, mechanical_scale_.value());
+  last_ = budget;
 }
 
 double EnergyLog::max_mechanical_relative_error() const {

@@ -10,9 +10,13 @@
 //                              (core/mechanical_energy_scale.hpp): the error a reader can judge
 //                              when E(0) is mostly energy that never moves (WCSPH water at rest).
 // E(0) is the first row's total or, for a restarted run, the total at the start of the original
-// run (the mechanical scale of a restarted run starts again from its first row's terms).
+// run. A run that continues another with its rows (docs/restart.md) replays them first: every
+// scale and maximum then carries on as in the run that never stopped, and its rows follow
+// theirs in the same file. (A restart without them starts the mechanical scale again from its
+// first row's terms.)
 
 #include "core/energy.hpp"
+#include "core/logged_rows.hpp"
 #include "core/mechanical_energy_scale.hpp"
 
 #include <cstdint>
@@ -27,6 +31,10 @@ public:
   // Writes to `csv_path` if given; always keeps the error statistics.
   explicit EnergyLog(std::optional<std::string> csv_path,
                      std::optional<double> reference_total = std::nullopt);
+  // Continues the rows `earlier` (what csv_path already holds, rows_before of the run continued):
+  // replays them and appends to the file from there on.
+  EnergyLog(std::optional<std::string> csv_path, std::optional<double> reference_total,
+            const LoggedRows& earlier);
 
   void record(std::int64_t step, double time, const EnergyBudget& budget);
 
@@ -51,7 +59,11 @@ public:
   const EnergyBudget& last() const { return last_; }
 
 private:
+  // Updates every error statistic with one record.
+  void observe(const EnergyBudget& budget);
+
   std::optional<std::ofstream> csv_;
+  std::vector<std::string> earlier_terms_; // the term names of the rows continued, if any
   std::optional<double> initial_total_;
   bool recorded_ = false;
   double scale_ = 0.0;

@@ -140,6 +140,18 @@ bool is_hdf5_file(const std::filesystem::path& path) {
   return in.read(head, 8) && std::equal(head, head + 8, signature);
 }
 
+SnapshotClock read_snapshot_clock(const std::filesystem::path& path) {
+  hdf5::silence_library_errors();
+  try {
+    const Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose,
+                      "cannot open the file (truncated or damaged HDF5)");
+    return {hdf5::read_int_attribute(file.id(), "step"),
+            hdf5::read_double_attribute(file.id(), "time")};
+  } catch (const Hdf5Error& error) {
+    throw SnapshotError(path.string() + ": " + error.what());
+  }
+}
+
 Snapshot read_snapshot(const std::filesystem::path& path) {
   hdf5::silence_library_errors();
   const std::string name = path.string();

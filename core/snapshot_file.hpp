@@ -93,6 +93,14 @@ std::vector<XdmfParticleSet> write_snapshot(const std::filesystem::path& path,
 // checked against the recorded hash here; verify/snapshot_check.hpp does that.
 Snapshot read_snapshot(const std::filesystem::path& path);
 
+// The step and time a snapshot file records, without its state (a continued run's series of
+// earlier snapshots). Throws SnapshotError.
+struct SnapshotClock {
+  std::int64_t step = 0;
+  double time = 0.0;
+};
+SnapshotClock read_snapshot_clock(const std::filesystem::path& path);
+
 // True if the file starts with the HDF5 signature.
 bool is_hdf5_file(const std::filesystem::path& path);
 

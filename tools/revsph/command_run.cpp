@@ -1,11 +1,13 @@
 #include "core/diagnostics_log.hpp"
 #include "core/distributed/processes.hpp"
 #include "core/energy_log.hpp"
+#include "core/logged_rows.hpp"
 #include "core/openmp_waiting.hpp"
 #include "core/progress.hpp"
 #include "core/run_loop.hpp"
 #include "core/threads.hpp"
 #include "tools/revsph/commands.hpp"
+#include "tools/revsph/interruption.hpp"
 #include "tools/revsph/run_output.hpp"
 #include "tools/revsph/summary.hpp"
 #include "verify/state_hash.hpp"
@@ -60,13 +62,42 @@ int run_command(const RunOptions& options) {
   LoadedCase loaded = load_simulation(options.case_options);
   Simulation& simulation = *loaded.simulation;
   const std::int64_t steps = resolve_steps(loaded, options.steps, options.t_end, false);
-  const std::filesystem::path directory = options.out_dir.empty()
-                                              ? std::filesystem::path("out") / loaded.settings.name
-                                              : std::filesystem::path(options.out_dir);
+  // A run from a snapshot of a run folder continues that run (docs/restart.md): in its folder
+  // unless --out names another, with the rows of its logs up to the snapshot either way.
+  std::optional<std::filesystem::path> source_folder;
+  if (loaded.from_snapshot) {
+    source_folder = run_folder_of(options.case_options.from_snapshot);
+  }
+  const std::filesystem::path directory =
+      !options.out_dir.empty() ? std::filesystem::path(options.out_dir)
+      : source_folder          ? *source_folder
+                               : std::filesystem::path("out") / loaded.settings.name;
+  std::error_code same_error;
+  const bool continues_in_place =
+      source_folder && std::filesystem::equivalent(directory, *source_folder, same_error);
   // Every check is done before the first file is written.
-  check_on_first_process([&] {
-    RunOutput::check_directory(directory, options.force, loaded.case_file.source_name());
-  });
+  if (!continues_in_place) {
+    check_on_first_process([&] {
+      RunOutput::check_directory(directory, options.force, loaded.case_file.source_name());
+    });
+  }
+  std::optional<LoggedRows> earlier_energy;
+  std::optional<LoggedRows> earlier_diagnostics;
+  if (source_folder) {
+    const std::int64_t step = simulation.steps_taken();
+    const std::int64_t every = loaded.settings.energy_every;
+    // Rows of a run killed before its first one: none to keep.
+    const auto kept = [&](const char* name) -> std::optional<LoggedRows> {
+      const std::filesystem::path path = *source_folder / name;
+      if (!std::filesystem::is_regular_file(path)) {
+        return std::nullopt;
+      }
+      LoggedRows rows = rows_before(read_logged_rows(path), step, every);
+      return rows.rows.empty() ? std::nullopt : std::optional<LoggedRows>(std::move(rows));
+    };
+    earlier_energy = kept("energy.csv");
+    earlier_diagnostics = kept("diagnostics.csv");
+  }
 
   print_header(loaded, steps);
   // A restarted run measures energy against the original run's E(0); a new run's E(0) is its
@@ -75,8 +106,35 @@ int run_command(const RunOptions& options) {
       loaded.from_snapshot ? loaded.from_snapshot->metadata.reference_energy : std::nullopt;
   RunOutput output(directory, run_metadata(simulation, loaded.case_file, reference_energy),
                    loaded.settings.snapshot_every);
-  EnergyLog energy(file_of_first_process(output.energy_csv()), reference_energy);
-  DiagnosticsLog diagnostics(file_of_first_process(output.directory() / "diagnostics.csv"));
+  if (continues_in_place) {
+    output.continue_run(simulation.steps_taken());
+    std::cout << "continuing " << directory.string() << " from step " << simulation.steps_taken();
+    if (output.removed_later_snapshots() > 0) {
+      std::cout << " (its " << output.removed_later_snapshots()
+                << " later snapshots removed: this run replaces them)";
+    }
+    std::cout << "\n";
+  }
+  const std::filesystem::path diagnostics_csv = output.directory() / "diagnostics.csv";
+  if (distributed::process_rank() == 0) {
+    // The rows kept, before this run appends its own (the same file when continuing in place).
+    if (earlier_energy) {
+      write_logged_rows(output.energy_csv(), *earlier_energy);
+    }
+    if (earlier_diagnostics) {
+      write_logged_rows(diagnostics_csv, *earlier_diagnostics);
+    } else if (continues_in_place) {
+      std::filesystem::remove(diagnostics_csv);
+    }
+  }
+  EnergyLog energy =
+      earlier_energy
+          ? EnergyLog(file_of_first_process(output.energy_csv()), reference_energy, *earlier_energy)
+          : EnergyLog(file_of_first_process(output.energy_csv()), reference_energy);
+  DiagnosticsLog diagnostics =
+      earlier_diagnostics
+          ? DiagnosticsLog(file_of_first_process(diagnostics_csv), *earlier_diagnostics)
+          : DiagnosticsLog(file_of_first_process(diagnostics_csv));
   ProgressReporter progress(stdout, "run", simulation.steps_taken() + steps, simulation.info().dt,
                             loaded.settings.progress_interval);
   progress.set_time_at_step_zero(simulation.time_at(0));
@@ -98,10 +156,12 @@ int run_command(const RunOptions& options) {
   hooks.diagnostics_log = &diagnostics;
   hooks.energy_every = loaded.settings.energy_every;
   hooks.progress = &progress;
+  const StopOnSignals signals;
   hooks.after_step = [&](Simulation& s, std::int64_t) {
     if (output.snapshot_due(s.steps_taken())) {
       output.write_snapshot(s);
     }
+    signals.stop_if_signalled();
   };
   const auto start = std::chrono::steady_clock::now();
   // Until a fault, if one stops the run: summary.json's stepping time and speed then cover the
@@ -143,6 +203,23 @@ int run_command(const RunOptions& options) {
       print_error(std::string("the run stopped: ") + fault.what());
     }
     status = simulation_failed;
+  } catch (const RunInterrupted& interruption) {
+    // The step under way finished: its state is whole, and the last snapshot (docs/restart.md).
+    summary.stepping_seconds = stepped_seconds();
+    progress.finish(simulation.steps_taken());
+    summary.failure = std::string(interruption.what()) + " after step " +
+                      std::to_string(simulation.steps_taken());
+    try {
+      // The rows of this last step, as at the end of any run (the signal came before them).
+      energy.record(simulation.steps_taken(), simulation.time(), simulation.energy());
+      diagnostics.record(simulation.steps_taken(), simulation.time(), simulation.diagnostics());
+      output.write_snapshot(simulation);
+    } catch (const SnapshotError& error) {
+      summary.failure = *summary.failure + "; its last snapshot failed: " + error.what();
+    }
+    print_error("the run stopped: " + *summary.failure + " (continue it with run --from " +
+                (output.last_snapshot() ? output.last_snapshot()->string() : "") + ")");
+    status = interruption.exit_status();
   } catch (const SnapshotError& error) {
     summary.failure = error.what();
     print_error(error.what());

@@ -5,6 +5,7 @@
 #include "core/distributed/processes.hpp"
 #include "verify/state_hash.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <system_error>
 
@@ -98,6 +99,55 @@ RunOutput::RunOutput(fs::path directory, SnapshotMetadata base, std::int64_t sna
   }
 }
 
+namespace {
+// The step of a snapshot file named step_N.h5, or none.
+std::optional<std::int64_t> step_of_snapshot_name(const fs::path& path) {
+  const std::string name = path.filename().string();
+  if (!name.starts_with("step_") || !name.ends_with(".h5")) {
+    return std::nullopt;
+  }
+  const std::string digits = name.substr(5, name.size() - 8);
+  if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) {
+    return std::nullopt;
+  }
+  return std::stoll(digits);
+}
+} // namespace
+
+void RunOutput::continue_run(std::int64_t step) {
+  std::vector<std::pair<std::int64_t, fs::path>> earlier;
+  for (const auto& entry : fs::directory_iterator(directory_ / "snapshots")) {
+    const std::optional<std::int64_t> snapshot_step = step_of_snapshot_name(entry.path());
+    if (!snapshot_step) {
+      continue;
+    }
+    if (*snapshot_step > step) {
+      if (distributed::process_rank() == 0) {
+        fs::remove(entry.path());
+      }
+      ++removed_later_;
+    } else if (*snapshot_step < step && on_cadence(*snapshot_step)) {
+      earlier.emplace_back(*snapshot_step, entry.path());
+    }
+  }
+  std::sort(earlier.begin(), earlier.end());
+  continued_from_ = step;
+  for (const auto& [snapshot_step, path] : earlier) {
+    const SnapshotClock clock = read_snapshot_clock(path);
+    earlier_.push_back(
+        {snapshot_step, clock.time, (fs::path("snapshots") / path.filename()).string(), {}});
+  }
+}
+
+std::optional<fs::path> run_folder_of(const fs::path& snapshot) {
+  const fs::path folder = fs::absolute(snapshot).parent_path();
+  if (folder.filename() != "snapshots" ||
+      !fs::is_regular_file(folder.parent_path() / "energy.csv")) {
+    return std::nullopt;
+  }
+  return folder.parent_path();
+}
+
 bool RunOutput::snapshot_due(std::int64_t step) const {
   return snapshot_every_ > 0 && step % snapshot_every_ == 0 && last_step_ != step;
 }
@@ -105,6 +155,11 @@ bool RunOutput::snapshot_due(std::int64_t step) const {
 void RunOutput::write_snapshot(Simulation& simulation) {
   const std::int64_t step = simulation.steps_taken();
   if (last_step_ == step) {
+    return;
+  }
+  if (continued_from_ == step && !on_cadence(step)) {
+    // The snapshot continued from, an earlier segment's last: on disk already, not in the series.
+    last_step_ = step;
     return;
   }
   const StateSnapshot state = simulation.borrow_state();
@@ -120,7 +175,15 @@ void RunOutput::write_snapshot(Simulation& simulation) {
   entry.sets =
       revsph::write_snapshot(directory_ / relative, metadata, state,
                              [&](const ViewSink& sink) { simulation.derived_views(sink); });
+  if (series_.empty()) {
+    for (XdmfSnapshot& earlier : earlier_) {
+      earlier.sets = entry.sets; // the same sets, fields and counts all along
+      series_.push_back(std::move(earlier));
+    }
+    earlier_.clear();
+  }
   series_.push_back(std::move(entry));
+  ++written_;
   if (distributed::process_rank() == 0) {
     write_xdmf(xdmf(), simulation.info().dimension, series_);
   }

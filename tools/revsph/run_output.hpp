@@ -34,7 +34,19 @@ public:
   // Creates the directory. `base` carries what every snapshot records about the case and build.
   RunOutput(std::filesystem::path directory, SnapshotMetadata base, std::int64_t snapshot_every);
 
+  // A run that continues the run of `directory` from step `step` (docs/restart.md): its
+  // snapshots before that step stay and lead run.xdmf's series; those after it, which the
+  // continuation replaces, are removed (how many: removed_later_snapshots()). The series lists
+  // what the run that never stopped writes: the snapshots on the output cadence and the last;
+  // an earlier segment's last snapshot off the cadence stays on disk, out of the series.
+  void continue_run(std::int64_t step);
+  std::size_t removed_later_snapshots() const { return removed_later_; }
+
   bool snapshot_due(std::int64_t step) const;
+  // On the output cadence: step 0 and every snapshot_every steps.
+  bool on_cadence(std::int64_t step) const {
+    return step == 0 || (snapshot_every_ > 0 && step % snapshot_every_ == 0);
+  }
   // Writes the snapshot of the current state and rewrites run.xdmf. Throws SnapshotError.
   // If the model cannot compute its derived fields for this state, the snapshot holds the exact
   // state without them and says why (attribute derived_fields_error).
@@ -47,7 +59,8 @@ public:
   std::filesystem::path summary_json() const { return directory_ / "summary.json"; }
   std::filesystem::path xdmf() const { return directory_ / "run.xdmf"; }
   std::optional<std::filesystem::path> last_snapshot() const;
-  std::size_t snapshot_count() const { return series_.size(); }
+  // Written by this run (a continued run's series also holds the earlier ones).
+  std::size_t snapshot_count() const { return written_; }
 
 private:
   std::filesystem::path directory_;
@@ -55,7 +68,15 @@ private:
   std::int64_t snapshot_every_;
   std::optional<std::int64_t> last_step_;
   std::vector<XdmfSnapshot> series_;
+  std::vector<XdmfSnapshot> earlier_; // a continued run's, their sets those of its first snapshot
+  std::size_t removed_later_ = 0;
+  std::size_t written_ = 0;
+  std::optional<std::int64_t> continued_from_; // the step continued from, its snapshot on disk
 };
+
+// The run folder a snapshot belongs to: DIR for DIR/snapshots/step_N.h5 when DIR holds a run's
+// energy.csv, none otherwise.
+std::optional<std::filesystem::path> run_folder_of(const std::filesystem::path& snapshot);
 
 // Snapshot metadata common to every snapshot of a run (everything but step, time and hash).
 SnapshotMetadata run_metadata(const Simulation& simulation, const CaseFile& case_file,
