@@ -62,6 +62,9 @@ RunSettings read_run_settings(const CaseFile& case_file) {
   if (settings.snapshot_every < 0) {
     case_file.fail("output.snapshot_every", "must be >= 0 (0: only at the start and the end)");
   }
+  if (case_file.has("output.snapshot_interval")) {
+    settings.snapshot_interval = case_file.positive_number("output.snapshot_interval");
+  }
   if (case_file.has("output.progress_interval")) {
     settings.progress_interval = case_file.positive_number("output.progress_interval");
   }

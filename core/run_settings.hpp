@@ -7,6 +7,7 @@
 //   [output]
 //   energy_every = 100          steps between rows of energy.csv
 //   snapshot_every = 1000       steps between snapshots (0: only at the start and the end)
+//   snapshot_interval = 0.5     simulated seconds between snapshots (with or instead of the above)
 //   progress_interval = 10.0    seconds between progress lines when not on a terminal
 
 #include "core/case_file.hpp"
@@ -33,6 +34,7 @@ struct RunSettings {
   RunLength length;
   std::int64_t energy_every = 100;
   std::int64_t snapshot_every = 0;
+  double snapshot_interval = 0.0; // s; 0: none
   double progress_interval = 10.0;
 };
 

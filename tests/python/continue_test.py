@@ -7,7 +7,8 @@
     diagnostics extremes in summary.json;
   - SIGTERM in the middle of a run ends it with status 143, a last snapshot of a whole step and
     summary.json marked incomplete; continuing from that snapshot gives the same files again;
-  - --from with --out elsewhere starts a branch holding the rows before the snapshot.
+  - --from with --out elsewhere starts a branch holding the rows before the snapshot;
+  - output.snapshot_interval writes a snapshot after each step passing a multiple of it.
 
 Usage: continue_test.py REVSPH_BINARY [unittest options]
 """
@@ -110,6 +111,15 @@ class ContinueTest(unittest.TestCase):
                          read(os.path.join(self.whole, "energy.csv")))
         self.assertEqual(summary(os.path.join(work, "branch"))["final_hash"],
                          summary(self.whole)["final_hash"])
+
+    def test_snapshot_interval_in_simulated_seconds(self):
+        work = self.work.name
+        made = revsph("run", "dambreak-small", "--steps", "1000", "--threads", "1", "--set",
+                      "output.snapshot_interval=0.025", "--out", "interval", cwd=work)
+        self.assertEqual(made.returncode, 0, made.stderr)
+        # dt = 1e-4 s: 0.025 s is 250 steps (step 750's 0.07499999999999999 s counts as 0.075).
+        self.assertEqual(sorted(os.listdir(os.path.join(work, "interval", "snapshots"))),
+                         [f"step_{n:09d}.h5" for n in (0, 250, 500, 750, 1000)])
 
 
 if __name__ == "__main__":

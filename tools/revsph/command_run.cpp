@@ -105,9 +105,9 @@ int run_command(const RunOptions& options) {
   const std::optional<double> reference_energy =
       loaded.from_snapshot ? loaded.from_snapshot->metadata.reference_energy : std::nullopt;
   RunOutput output(directory, run_metadata(simulation, loaded.case_file, reference_energy),
-                   loaded.settings.snapshot_every);
+                   loaded.settings.snapshot_every, loaded.settings.snapshot_interval);
   if (continues_in_place) {
-    output.continue_run(simulation.steps_taken());
+    output.continue_run(simulation);
     std::cout << "continuing " << directory.string() << " from step " << simulation.steps_taken();
     if (output.removed_later_snapshots() > 0) {
       std::cout << " (its " << output.removed_later_snapshots()
@@ -158,7 +158,7 @@ int run_command(const RunOptions& options) {
   hooks.progress = &progress;
   const StopOnSignals signals;
   hooks.after_step = [&](Simulation& s, std::int64_t) {
-    if (output.snapshot_due(s.steps_taken())) {
+    if (output.snapshot_due(s, s.steps_taken())) {
       output.write_snapshot(s);
     }
     signals.stop_if_signalled();

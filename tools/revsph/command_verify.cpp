@@ -118,9 +118,11 @@ int verify_command(const VerifyCommandOptions& options) {
   if (!out.empty()) {
     const SnapshotMetadata metadata = run_metadata(simulation, loaded.case_file, reference_energy);
     output.forward =
-        std::make_unique<RunOutput>(out / "forward", metadata, loaded.settings.snapshot_every);
+        std::make_unique<RunOutput>(out / "forward", metadata, loaded.settings.snapshot_every,
+                                    loaded.settings.snapshot_interval);
     output.backward =
-        std::make_unique<RunOutput>(out / "backward", metadata, loaded.settings.snapshot_every);
+        std::make_unique<RunOutput>(out / "backward", metadata, loaded.settings.snapshot_every,
+                                    loaded.settings.snapshot_interval);
   }
   output.forward_energy = std::make_unique<EnergyLog>(
       out.empty() ? std::nullopt : file_of_first_process(out / "forward" / "energy.csv"),
@@ -180,7 +182,7 @@ int verify_command(const VerifyCommandOptions& options) {
   };
   auto after_step = [&](RunOutput* half_output) {
     return [&, half_output](Simulation& s) {
-      if (half_output != nullptr && half_output->snapshot_due(s.steps_taken())) {
+      if (half_output != nullptr && half_output->snapshot_due(s, s.steps_taken())) {
         half_output->write_snapshot(s);
       }
       if (probe) {

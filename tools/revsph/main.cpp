@@ -133,10 +133,16 @@ int main(int argc, char** argv) {
   auto* run_app = app.add_subcommand(
       "run", "run a case (default: dambreak-small) or continue from a snapshot; writes "
              "OUT/energy.csv, OUT/snapshots/*.h5, OUT/run.xdmf and OUT/summary.json.\n"
+             "--from DIR/snapshots/step_N.h5 continues the run in DIR (unless --out names "
+             "another folder): its files up to step N are kept and this run's follow them.\n"
+             "SIGINT or SIGTERM ends the run after the step under way with a last snapshot to "
+             "continue from (exit 130 or 143).\n"
              "Exit status: 0 the run reached its end; " +
                  stopped_statuses);
   const auto run_handles = add_running_options(*run_app, run, case_help);
-  add_output_options(*run_app, run.out_dir, run.force, "output directory (default: out/CASE_NAME)");
+  add_output_options(*run_app, run.out_dir, run.force,
+                     "output directory (default: out/CASE_NAME; after --from, the snapshot's "
+                     "run folder)");
 
   VerifyCommandOptions verify;
   auto* verify_app = app.add_subcommand(

@@ -6,6 +6,7 @@
 #include "verify/state_hash.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <system_error>
 
@@ -91,8 +92,10 @@ void RunOutput::check_directory(const fs::path& directory, bool force,
   }
 }
 
-RunOutput::RunOutput(fs::path directory, SnapshotMetadata base, std::int64_t snapshot_every)
-    : directory_(std::move(directory)), base_(std::move(base)), snapshot_every_(snapshot_every) {
+RunOutput::RunOutput(fs::path directory, SnapshotMetadata base, std::int64_t snapshot_every,
+                     double snapshot_interval)
+    : directory_(std::move(directory)), base_(std::move(base)), snapshot_every_(snapshot_every),
+      snapshot_interval_(snapshot_interval) {
   // In a distributed run process 0 writes the files (the others take part in the snapshots).
   if (distributed::process_rank() == 0) {
     fs::create_directories(directory_ / "snapshots");
@@ -114,7 +117,8 @@ std::optional<std::int64_t> step_of_snapshot_name(const fs::path& path) {
 }
 } // namespace
 
-void RunOutput::continue_run(std::int64_t step) {
+void RunOutput::continue_run(const Simulation& simulation) {
+  const std::int64_t step = simulation.steps_taken();
   std::vector<std::pair<std::int64_t, fs::path>> earlier;
   for (const auto& entry : fs::directory_iterator(directory_ / "snapshots")) {
     const std::optional<std::int64_t> snapshot_step = step_of_snapshot_name(entry.path());
@@ -126,7 +130,7 @@ void RunOutput::continue_run(std::int64_t step) {
         fs::remove(entry.path());
       }
       ++removed_later_;
-    } else if (*snapshot_step < step && on_cadence(*snapshot_step)) {
+    } else if (*snapshot_step < step && on_cadence(simulation, *snapshot_step)) {
       earlier.emplace_back(*snapshot_step, entry.path());
     }
   }
@@ -148,8 +152,20 @@ std::optional<fs::path> run_folder_of(const fs::path& snapshot) {
   return folder.parent_path();
 }
 
-bool RunOutput::snapshot_due(std::int64_t step) const {
-  return snapshot_every_ > 0 && step % snapshot_every_ == 0 && last_step_ != step;
+bool RunOutput::on_cadence(const Simulation& simulation, std::int64_t step) const {
+  if (step == 0 || (snapshot_every_ > 0 && step % snapshot_every_ == 0)) {
+    return true;
+  }
+  // Which interval a time falls in, a step landing a rounding error short of a multiple counting
+  // as on it (750 steps of 1e-4 s make 0.07499999999999999 s, three intervals of 0.025 s).
+  const auto interval = [&](std::int64_t s) {
+    return std::floor(simulation.time_at(s) / snapshot_interval_ + 1e-9);
+  };
+  return snapshot_interval_ > 0.0 && step > 0 && interval(step) > interval(step - 1);
+}
+
+bool RunOutput::snapshot_due(const Simulation& simulation, std::int64_t step) const {
+  return last_step_ != step && step != 0 && on_cadence(simulation, step);
 }
 
 void RunOutput::write_snapshot(Simulation& simulation) {
@@ -157,7 +173,7 @@ void RunOutput::write_snapshot(Simulation& simulation) {
   if (last_step_ == step) {
     return;
   }
-  if (continued_from_ == step && !on_cadence(step)) {
+  if (continued_from_ == step && !on_cadence(simulation, step)) {
     // The snapshot continued from, an earlier segment's last: on disk already, not in the series.
     last_step_ = step;
     return;

@@ -32,21 +32,21 @@ public:
                               const std::string& case_source);
 
   // Creates the directory. `base` carries what every snapshot records about the case and build.
-  RunOutput(std::filesystem::path directory, SnapshotMetadata base, std::int64_t snapshot_every);
+  RunOutput(std::filesystem::path directory, SnapshotMetadata base, std::int64_t snapshot_every,
+            double snapshot_interval = 0.0);
 
   // A run that continues the run of `directory` from step `step` (docs/restart.md): its
   // snapshots before that step stay and lead run.xdmf's series; those after it, which the
   // continuation replaces, are removed (how many: removed_later_snapshots()). The series lists
   // what the run that never stopped writes: the snapshots on the output cadence and the last;
   // an earlier segment's last snapshot off the cadence stays on disk, out of the series.
-  void continue_run(std::int64_t step);
+  void continue_run(const Simulation& simulation);
   std::size_t removed_later_snapshots() const { return removed_later_; }
 
-  bool snapshot_due(std::int64_t step) const;
-  // On the output cadence: step 0 and every snapshot_every steps.
-  bool on_cadence(std::int64_t step) const {
-    return step == 0 || (snapshot_every_ > 0 && step % snapshot_every_ == 0);
-  }
+  bool snapshot_due(const Simulation& simulation, std::int64_t step) const;
+  // On the output cadence: step 0, every snapshot_every steps, and the first step past each
+  // multiple of snapshot_interval in simulated time.
+  bool on_cadence(const Simulation& simulation, std::int64_t step) const;
   // Writes the snapshot of the current state and rewrites run.xdmf. Throws SnapshotError.
   // If the model cannot compute its derived fields for this state, the snapshot holds the exact
   // state without them and says why (attribute derived_fields_error).
@@ -66,6 +66,7 @@ private:
   std::filesystem::path directory_;
   SnapshotMetadata base_;
   std::int64_t snapshot_every_;
+  double snapshot_interval_;
   std::optional<std::int64_t> last_step_;
   std::vector<XdmfSnapshot> series_;
   std::vector<XdmfSnapshot> earlier_; // a continued run's, their sets those of its first snapshot
