@@ -49,9 +49,9 @@ void DiagnosticsLog::record(std::int64_t step, double time,
         throw std::runtime_error("cannot write " + *csv_path_);
       }
       csv_->precision(17);
-      *csv_ << "step,time";
+      *csv_ << "step," << column_header("time", "s");
       for (const EnergyTerm& d : diagnostics) {
-        *csv_ << "," << d.name;
+        *csv_ << "," << column_header(d.name, d.unit);
       }
       *csv_ << "\n";
     }

@@ -59,11 +59,14 @@ void EnergyLog::record(std::int64_t step, double time, const EnergyBudget& budge
       initial_total_ = total;
     }
     if (csv_) {
-      *csv_ << "step,time";
+      // Each column's unit in its header cell, `name [unit]` (core/logged_rows.hpp).
+      const std::string unit = budget.terms.empty() ? "" : budget.terms.front().unit;
+      *csv_ << "step," << column_header("time", "s");
       for (const EnergyTerm& term : budget.terms) {
-        *csv_ << "," << term.name;
+        *csv_ << "," << column_header(term.name, term.unit);
       }
-      *csv_ << ",total,relative_error,mechanical_relative_error\n";
+      *csv_ << "," << column_header("total", unit) << "," << column_header("relative_error", "1")
+            << "," << column_header("mechanical_relative_error", "1") << "\n";
     }
   }
   if (!earlier_terms_.empty()) {

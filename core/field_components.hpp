@@ -6,6 +6,7 @@
 // components and is a vector by this rule, a 2D one is a scalar).
 
 #include <string>
+#include <vector>
 
 namespace revsph {
 
@@ -21,6 +22,16 @@ inline std::string component_suffix(int dimension, int components, int component
     return std::string("_") + axes[component / dimension] + axes[component % dimension];
   }
   return "_" + std::to_string(component);
+}
+
+// The components' labels without the field's name (x, y; xx, xy, yx, yy), recorded with each
+// multi-component dataset of a snapshot (attribute component_names): the columns' order.
+inline std::vector<std::string> component_labels(int dimension, int components) {
+  std::vector<std::string> labels;
+  for (int c = 0; components > 1 && c < components; ++c) {
+    labels.push_back(component_suffix(dimension, components, c).substr(1));
+  }
+  return labels;
 }
 
 inline std::string component_name(const std::string& field, int dimension, int components,

@@ -22,6 +22,15 @@ std::vector<std::string> cells_of(const std::string& line) {
 
 } // namespace
 
+std::string column_header(const std::string& name, const std::string& unit) {
+  return unit.empty() ? name : name + " [" + unit + "]";
+}
+
+std::string column_name(const std::string& header_cell) {
+  const std::size_t bracket = header_cell.find(" [");
+  return bracket == std::string::npos ? header_cell : header_cell.substr(0, bracket);
+}
+
 LoggedRows read_logged_rows(const std::filesystem::path& path) {
   std::ifstream file(path, std::ios::binary);
   if (!file) {
@@ -44,7 +53,9 @@ LoggedRows read_logged_rows(const std::filesystem::path& path) {
     }
     const std::vector<std::string> cells = cells_of(line);
     if (logged.columns.empty()) {
-      logged.columns = cells;
+      for (const std::string& cell : cells) {
+        logged.columns.push_back(column_name(cell));
+      }
       logged.header_line = line;
       continue;
     }

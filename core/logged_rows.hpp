@@ -10,8 +10,13 @@
 
 namespace revsph {
 
+// A header cell: `name [unit]`, or the name alone without a unit.
+std::string column_header(const std::string& name, const std::string& unit);
+// The name of a header cell (what precedes " [unit]").
+std::string column_name(const std::string& header_cell);
+
 struct LoggedRows {
-  std::vector<std::string> columns; // the header: "step", "time", ...
+  std::vector<std::string> columns; // the header's names: "step", "time", ... (no units)
   std::vector<std::vector<double>> rows;
   std::string header_line;        // the text as read, written back unchanged
   std::vector<std::string> lines; // one per row

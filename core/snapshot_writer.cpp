@@ -8,6 +8,7 @@
 #include "core/distributed/index_order_stream.hpp"
 #include "core/distributed/processes.hpp"
 #include "core/fault.hpp"
+#include "core/field_components.hpp"
 #include "core/hdf5_handle.hpp"
 
 #include <algorithm>
@@ -137,6 +138,14 @@ void write_metadata(hid_t file, const SnapshotMetadata& m, const StateSnapshot& 
   write_string_attribute(file, "build_flags", m.build_flags);
 }
 
+// The order of a view's columns (core/field_components.hpp): x, y, z; a tensor's xx, xy, ...
+void write_component_names(hid_t dataset, int dimension, int components) {
+  if (components > 1) {
+    hdf5::write_strings_attribute(dataset, "component_names",
+                                  component_labels(dimension, components));
+  }
+}
+
 void write_field_attributes(hid_t dataset, const FieldSnapshot& field) {
   hdf5::write_string_attribute(dataset, "unit", field.info.unit);
   hdf5::write_string_attribute(dataset, "parity",
@@ -241,6 +250,7 @@ std::vector<XdmfParticleSet> write_snapshot(const std::filesystem::path& path,
     writer.attempt([&] {
       write_field_attributes(raw->id(), field);
       hdf5::write_string_attribute(physical->id(), "unit", field.info.unit);
+      write_component_names(physical->id(), metadata.dimension, field.info.components);
     });
     set_of(set, total).fields.push_back({field.info.name, field.info.components});
   }
@@ -261,6 +271,7 @@ std::vector<XdmfParticleSet> write_snapshot(const std::filesystem::path& path,
         dataset.emplace(writer.file->id(), "particles", view.particle_set, view.name,
                         H5T_IEEE_F64LE, set.count, view.components);
         hdf5::write_string_attribute(dataset->id(), "unit", view.unit);
+        write_component_names(dataset->id(), metadata.dimension, view.components);
       });
       std::vector<std::int64_t> bits(own);
       for (std::size_t c = 0; c < components; ++c) {

@@ -19,10 +19,27 @@ void data_item(std::ostringstream& out, const std::string& indent, const XdmfSna
       << ":/particles/" << set.name << "/" << field.name << "</DataItem>\n";
 }
 
-// 3 components are a vector to ParaView; 2D vectors (and tensors) are kept as matrices with
-// their own number of components, which ParaView shows as multi-component arrays.
+// 3 components are a vector to ParaView; tensors are matrices with their own number of
+// components, which ParaView shows as multi-component arrays.
 const char* attribute_type(int components) {
   return components == 1 ? "Scalar" : components == 3 ? "Vector" : "Matrix";
+}
+
+// A 2D vector as the 3-component vector ParaView's glyphs and Calculator expect: its two columns
+// (hyperslabs of the (N, 2) dataset) joined with a zero z, JOIN($0, $1, 0 * $0).
+void padded_vector(std::ostringstream& out, const std::string& indent, const XdmfSnapshot& snapshot,
+                   const XdmfParticleSet& set, const XdmfField& field) {
+  out << indent << "<DataItem ItemType=\"Function\" Function=\"JOIN($0, $1, 0 * $0)\" "
+      << "Dimensions=\"" << set.count << " 3\">\n";
+  for (int column = 0; column < 2; ++column) {
+    out << indent << "  <DataItem ItemType=\"HyperSlab\" Dimensions=\"" << set.count
+        << " 1\" Type=\"HyperSlab\">\n"
+        << indent << "    <DataItem Dimensions=\"3 2\" Format=\"XML\">0 " << column << " 1 1 "
+        << set.count << " 1</DataItem>\n";
+    data_item(out, indent + "    ", snapshot, set, field);
+    out << indent << "  </DataItem>\n";
+  }
+  out << indent << "</DataItem>\n";
 }
 
 } // namespace
@@ -75,9 +92,14 @@ std::string xdmf_document(int dimension, const std::vector<XdmfSnapshot>& snapsh
         if (field.name == "position") {
           continue;
         }
+        const bool planar_vector = dimension == 2 && field.components == 2;
         out << "          <Attribute Name=\"" << field.name << "\" AttributeType=\""
-            << attribute_type(field.components) << "\" Center=\"Node\">\n";
-        data_item(out, "            ", snapshot, set, field);
+            << attribute_type(planar_vector ? 3 : field.components) << "\" Center=\"Node\">\n";
+        if (planar_vector) {
+          padded_vector(out, "            ", snapshot, set, field);
+        } else {
+          data_item(out, "            ", snapshot, set, field);
+        }
         out << "          </Attribute>\n";
       }
       out << "        </Grid>\n";

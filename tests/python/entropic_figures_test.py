@@ -50,8 +50,9 @@ def report_value(name, text):
 
 
 def read_rows(path):
+    # Header cells are `name [unit]`: the rows by name.
     with open(path, newline="") as f:
-        return list(csv.DictReader(f))
+        return [{k.split(" [")[0]: v for k, v in row.items()} for row in csv.DictReader(f)]
 
 
 class EntropicFiguresTest(unittest.TestCase):

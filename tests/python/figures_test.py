@@ -133,7 +133,7 @@ class FiguresTest(unittest.TestCase):
                                result.stdout)
         self.assertAlmostEqual(printed, expected, delta=1e-5 * expected)
         with open(os.path.join(self.fixed, "forward", "energy.csv"), newline="") as f:
-            rows = list(csv.DictReader(f))
+            rows = [{k.split(" [")[0]: v for k, v in row.items()} for row in csv.DictReader(f)]
         total = [float(r["total"]) for r in rows]
         drop = float(rows[0]["gravitational"]) - float(rows[-1]["gravitational"])
         fig5 = max(abs(e - total[0]) for e in total) / drop

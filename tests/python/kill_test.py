@@ -195,6 +195,8 @@ class KillTest(unittest.TestCase):
                 self.fail(f"{xdmf} is not well-formed XML: {error}")
             referenced = set()
             for item in root.iter("DataItem"):
+                if item.get("Format") != "HDF":
+                    continue  # a function of others (a 2D vector padded to 3 components)
                 file_part = item.text.strip().rpartition(":")[0]
                 referenced.add(os.path.realpath(os.path.join(out, file_part)))
             for path in referenced:
@@ -212,9 +214,9 @@ class KillTest(unittest.TestCase):
                                                      f"{text.splitlines()[-1]!r}")
                 rows = list(csv.reader(text.splitlines()))
                 header = rows[0]
-                self.assertEqual(header[:2], ["step", "time"])
-                self.assertEqual(header[-3:],
-                                 ["total", "relative_error", "mechanical_relative_error"])
+                self.assertEqual(header[:2], ["step", "time [s]"])
+                self.assertEqual(header[-3:], ["total [J/m]", "relative_error [1]",
+                                               "mechanical_relative_error [1]"])
                 steps = []
                 for row in rows[1:]:
                     self.assertEqual(len(row), len(header), f"{energy}: row {row}")

@@ -56,7 +56,11 @@ class XdmfReaderTest(unittest.TestCase):
         with open(os.path.join(cls.out, "summary.json")) as f:
             cls.summary = json.load(f)
         with open(os.path.join(cls.out, "energy.csv"), newline="") as f:
-            cls.energy_rows = list(csv.DictReader(f))
+            # Header cells are `name [unit]`.
+            cls.energy_header = next(csv.reader(f))
+            f.seek(0)
+            cls.energy_rows = [{k.split(" [")[0]: v for k, v in row.items()}
+                               for row in csv.DictReader(f)]
         cls.energy_by_step = {int(row["step"]): row for row in cls.energy_rows}
         cls.snapshot_files = sorted(glob.glob(os.path.join(cls.out, "snapshots", "step_*.h5")))
         cls.xdmf_path = os.path.join(cls.out, "run.xdmf")
@@ -85,6 +89,20 @@ class XdmfReaderTest(unittest.TestCase):
                 items = {}
 
                 def add(name, item, role, geometry_type=None):
+                    if item.get("ItemType") == "Function":
+                        # A 2D vector padded to 3 components for ParaView: its two columns,
+                        # hyperslabs of the (N, 2) dataset, joined with a zero.
+                        assert item.get("Function") == "JOIN($0, $1, 0 * $0)", item.attrib
+                        assert parse_dimensions(item.get("Dimensions")) == (elements, 3)
+                        slabs = item.findall("DataItem")
+                        assert [s.get("ItemType") for s in slabs] == ["HyperSlab"] * 2
+                        for column, slab in enumerate(slabs):
+                            selection = slab.find("DataItem").text.split()
+                            assert selection == ["0", str(column), "1", "1", str(elements),
+                                                 "1"], selection
+                        sources = {slab.findall("DataItem")[1].text for slab in slabs}
+                        assert len(sources) == 1, sources
+                        item, role = slabs[0].findall("DataItem")[1], "Vector (2D, padded)"
                     assert item.get("Format") == "HDF", item.attrib
                     assert item.get("NumberType") == "Float", item.attrib
                     assert item.get("Precision") == "8", item.attrib
@@ -118,6 +136,12 @@ class XdmfReaderTest(unittest.TestCase):
         self.assertEqual(len(self.grids), len(steps))
         self.assertEqual(self.summary["snapshots_written"], len(steps))
 
+    def test_energy_header_gives_units(self):
+        # A 2D run's energies are per unit length (J/m), its errors pure numbers.
+        self.assertEqual(self.energy_header[:3], ["step", "time [s]", "kinetic [J/m]"])
+        self.assertEqual(self.energy_header[-3:],
+                         ["total [J/m]", "relative_error [1]", "mechanical_relative_error [1]"])
+
     def test_datasets_match_dimensions_and_topology(self):
         checked = 0
         for time, sets in self.grids:
@@ -141,6 +165,8 @@ class XdmfReaderTest(unittest.TestCase):
                             self.assertEqual(data.shape, (elements, 2))
                         elif len(dims) == 1:
                             self.assertEqual(role, "Scalar")
+                        elif dims[1] == 2:
+                            self.assertEqual(role, "Vector (2D, padded)")
                         else:
                             self.assertEqual(role, "Vector" if dims[1] == 3 else "Matrix")
                         self.assertTrue(np.all(np.isfinite(data)))

@@ -90,7 +90,7 @@ std::map<std::string, double> last_energy_row(const fs::path& csv) {
   std::stringstream names(header), values(last);
   std::string name, value;
   while (std::getline(names, name, ',') && std::getline(values, value, ',')) {
-    row[name] = std::stod(value);
+    row[name.substr(0, name.find(" ["))] = std::stod(value); // header cells: name [unit]
   }
   return row;
 }

@@ -50,7 +50,8 @@ def read_energy(path):
         rows = list(csv.DictReader(f))
     if not rows:
         sys.exit(f"{path}: no rows")
-    data = {name: np.array([float(r[name]) for r in rows]) for name in rows[0]}
+    # Header cells are `name [unit]`: columns by name.
+    data = {name.split(" [")[0]: np.array([float(r[name]) for r in rows]) for name in rows[0]}
     data["step"] = data["step"].astype(np.int64)
     return data
 

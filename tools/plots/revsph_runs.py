@@ -81,9 +81,10 @@ def fit_sinusoid(t, y, omegas):
 
 
 def read_csv(path):
+    """Columns by name; revsph's header cells `name [unit]` are read by their names."""
     with open(path, newline="") as f:
         rows = list(csv.DictReader(row for row in f if not row.startswith("#")))
-    return {name: np.array([float(r[name]) for r in rows]) for name in rows[0]}
+    return {name.split(" [")[0]: np.array([float(r[name]) for r in rows]) for name in rows[0]}
 
 
 def write_csv(path, columns):

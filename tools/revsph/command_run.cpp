@@ -143,7 +143,8 @@ int run_command(const RunOptions& options) {
   summary.case_source = loaded.case_file.source_name();
   summary.overrides = loaded.case_file.overrides();
   if (loaded.from_snapshot) {
-    summary.from_snapshot = options.case_options.from_snapshot;
+    // Absolute: a reader of the run folder finds it from anywhere (tools/python/revsph).
+    summary.from_snapshot = std::filesystem::absolute(options.case_options.from_snapshot).string();
   }
   summary.start_step = simulation.steps_taken();
   summary.steps_requested = steps;
