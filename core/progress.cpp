@@ -49,6 +49,11 @@ void ProgressReporter::finish(std::int64_t steps_done, const std::string& note) 
   print(steps_done, note, true);
 }
 
+void ProgressReporter::announce(const std::string& line) {
+  std::fprintf(stream_, "%s%s\n", live_ ? "\r\033[K" : "", line.c_str());
+  std::fflush(stream_);
+}
+
 void ProgressReporter::print(std::int64_t steps_done, const std::string& note, bool final) {
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();

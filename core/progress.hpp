@@ -17,6 +17,9 @@ public:
   void update(std::int64_t steps_done, const std::string& note = {});
   // Prints the final state and ends the live line.
   void finish(std::int64_t steps_done, const std::string& note = {});
+  // A line of its own between progress lines (a snapshot written, a warning): on a terminal
+  // above the live line, which the next update draws again.
+  void announce(const std::string& line);
 
   bool live() const { return live_; }
   // The simulated time at step 0 as this run counts it (not 0 in a run continued at another

@@ -161,6 +161,12 @@ int run_command(const RunOptions& options) {
   hooks.after_step = [&](Simulation& s, std::int64_t) {
     if (output.snapshot_due(s, s.steps_taken())) {
       output.write_snapshot(s);
+      if (distributed::process_rank() == 0 && output.last_snapshot()) {
+        char line[64];
+        std::snprintf(line, sizeof line,
+                      "step %lld, t = %.6g s: ", static_cast<long long>(s.steps_taken()), s.time());
+        progress.announce(std::string(line) + "snapshot " + output.last_snapshot()->string());
+      }
     }
     signals.stop_if_signalled();
   };
