@@ -18,7 +18,15 @@ std::string energy_note(const EnergyLog* log) {
 } // namespace
 
 void run_steps(Simulation& simulation, std::int64_t steps, const RunHooks& hooks) {
+  std::string flow;
+  auto note = [&] {
+    const std::string energy = energy_note(hooks.energy_log);
+    return flow.empty() ? energy : energy.empty() ? flow : energy + "  " + flow;
+  };
   auto record_energy = [&] {
+    if (hooks.flow_note) {
+      flow = hooks.flow_note(simulation);
+    }
     if (hooks.energy_log != nullptr) {
       hooks.energy_log->record(simulation.steps_taken(), simulation.time(), simulation.energy());
     }
@@ -42,11 +50,11 @@ void run_steps(Simulation& simulation, std::int64_t steps, const RunHooks& hooks
       record_energy();
     }
     if (hooks.progress != nullptr) {
-      hooks.progress->update(simulation.steps_taken(), energy_note(hooks.energy_log));
+      hooks.progress->update(simulation.steps_taken(), note());
     }
   }
   if (hooks.progress != nullptr) {
-    hooks.progress->finish(simulation.steps_taken(), energy_note(hooks.energy_log));
+    hooks.progress->finish(simulation.steps_taken(), note());
   }
 }
 

@@ -19,6 +19,9 @@ struct RunHooks {
   ProgressReporter* progress = nullptr;
   // Called after every step with the number of steps taken so far in this call.
   std::function<void(Simulation&, std::int64_t)> after_step;
+  // What the progress line adds about the flow (max |v| / c, say), taken at each energy record
+  // (collective in a distributed run, like the record).
+  std::function<std::string(Simulation&)> flow_note;
 };
 
 // Takes `steps` steps. SimulationFault propagates to the caller.

@@ -39,6 +39,9 @@ struct SimulationInfo {
   int dimension = 2;
   Arithmetic arithmetic = Arithmetic::fixed;
   double dt = 0.0;
+  // The speed of sound the time step resolves (c of dt = courant h / c; the initial one where
+  // it varies), for the progress line's max |v| / c; 0 where the model sets none.
+  double sound_speed = 0.0;
   // Where the model's irreversible operators go in the step (core/step_splitting.hpp): the
   // case's step.splitting, for a model that has operators.
   Splitting splitting = Splitting::strang;

@@ -231,6 +231,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
 
   SimulationInfo info = simulation_info(case_file, "entropic", D, Arithmetic::fixed, parameters.dt);
   info.splitting = parameters.splitting;
+  info.sound_speed = parameters.initial_sound_speed();
   info.setup_report.emplace_back("dt", scientific(parameters.dt));
   info.setup_report.emplace_back("initial_sound_speed",
                                  scientific(parameters.initial_sound_speed()));

@@ -156,6 +156,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
 
   SimulationInfo info = simulation_info(case_file, "shtc", D, Arithmetic::fixed, parameters.dt);
   info.splitting = parameters.splitting;
+  info.sound_speed = parameters.material.sound_speed;
   info.setup_report.emplace_back("dt", scientific(parameters.dt));
   info.setup_report.emplace_back("sound_speed", scientific(parameters.material.sound_speed));
   info.setup_report.emplace_back("shear_speed", scientific(parameters.material.shear_speed));

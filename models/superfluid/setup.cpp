@@ -151,6 +151,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   SimulationInfo info =
       simulation_info(case_file, "superfluid", D, options.arithmetic, parameters.dt);
   info.splitting = parameters.splitting;
+  info.sound_speed = parameters.helium.first_sound_speed;
   // u2 of eq. (14) exists only with a superfluid fraction (not in the classical cavity).
   if (parameters.helium.normal_fraction < 1.0) {
     info.setup_report.emplace_back("second_sound_speed",

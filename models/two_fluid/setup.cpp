@@ -241,6 +241,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   SimulationInfo info =
       simulation_info(case_file, "two_fluid", D, options.arithmetic, parameters.dt);
   info.splitting = parameters.splitting;
+  info.sound_speed = parameters.sound_speed;
   info.setup_report.emplace_back("dt", format_scientific(parameters.dt, 4));
   if (parameters.thermomechanical.entropy_scale > 0.0) {
     const Thermomechanical& t = parameters.thermomechanical;

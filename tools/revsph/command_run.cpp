@@ -9,6 +9,7 @@
 #include "tools/revsph/commands.hpp"
 #include "tools/revsph/interruption.hpp"
 #include "tools/revsph/run_output.hpp"
+#include "tools/revsph/state_speeds.hpp"
 #include "tools/revsph/summary.hpp"
 #include "verify/state_hash.hpp"
 
@@ -157,6 +158,24 @@ int run_command(const RunOptions& options) {
   hooks.diagnostics_log = &diagnostics;
   hooks.energy_every = loaded.settings.energy_every;
   hooks.progress = &progress;
+  std::vector<std::string> moving_sets;
+  for (const ParticleCount& set : simulation.info().particles) {
+    if (set.moving && set.count > 0) {
+      moving_sets.push_back(set.particle_set);
+    }
+  }
+  hooks.flow_note = [&](Simulation& s) {
+    const double largest =
+        distributed::max_over_processes(largest_own_speed(s.borrow_state(), moving_sets));
+    char note[64];
+    const double c = s.info().sound_speed;
+    if (c > 0.0) {
+      std::snprintf(note, sizeof note, "max|v|/c = %.3g", largest / c);
+    } else {
+      std::snprintf(note, sizeof note, "max|v| = %.3g m/s", largest);
+    }
+    return std::string(note);
+  };
   const StopOnSignals signals;
   hooks.after_step = [&](Simulation& s, std::int64_t) {
     if (output.snapshot_due(s, s.steps_taken())) {

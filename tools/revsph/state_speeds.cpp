@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace revsph::cli {
@@ -69,6 +70,29 @@ ParticleSpeeds particle_speeds(const StateSnapshot& state, const std::string& pa
   result.mean_mass = (result.in_pieces ? global_total(total_mass) : total_mass.value()) /
                      static_cast<double>(particles);
   return result;
+}
+
+double largest_own_speed(const StateSnapshot& state, const std::vector<std::string>& moving) {
+  double largest = 0.0;
+  for (const std::string& set : moving) {
+    bool is_momentum = false;
+    const FieldSnapshot* motion = velocity_or_momentum(state, set, is_momentum);
+    if (motion == nullptr) {
+      continue;
+    }
+    const FieldSnapshot& mass = *state.find(set, "mass");
+    for (std::size_t particle = 0; particle < motion->count; ++particle) {
+      double square = 0.0;
+      for (int component = 0; component < motion->info.components; ++component) {
+        const double v = is_momentum ? motion->real(component, particle) / mass.real(0, particle)
+                                     : motion->real(component, particle);
+        square += v * v;
+      }
+      largest = std::isfinite(square) ? std::max(largest, std::sqrt(square))
+                                      : std::numeric_limits<double>::infinity();
+    }
+  }
+  return largest;
 }
 
 std::optional<std::string> moving_particle_set(const StateSnapshot& state) {

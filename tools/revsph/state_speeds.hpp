@@ -29,6 +29,11 @@ struct ParticleSpeeds {
 // is not positive (the message names the set and particle).
 ParticleSpeeds particle_speeds(const StateSnapshot& state, const std::string& particle_set);
 
+// The largest speed of this process's particles of the sets `moving` (those with a velocity, or
+// a momentum and a mass); infinity if one is not finite, 0 without any. Not collective: a
+// distributed run takes the largest over the processes.
+double largest_own_speed(const StateSnapshot& state, const std::vector<std::string>& moving);
+
 // The set whose speeds describe the flow: "fluid" (WCSPH, superfluid) or "material" (SHTC) if the
 // state has it with speeds (above), else the first set that has them (entropic SPH's gas, the
 // two-fluid model's superfluid); nullopt if none does.
