@@ -3,6 +3,7 @@
 #include "core/coincident_particles.hpp"
 #include "core/outline.hpp"
 #include "core/point_file.hpp"
+#include "core/stl_region.hpp"
 
 #include "core/memory.hpp"
 
@@ -221,7 +222,7 @@ Box<D> read_domain(const CaseFile& case_file) {
 
 namespace {
 
-enum class Shape { box, container, annulus, outline, points };
+enum class Shape { box, container, annulus, outline, points, stl };
 
 // Concentric rings filling the annulus inner_radius < |x - centre| < outer_radius (2D): as many
 // rings as spacings fit across it, each at the middle of its band, with round(2 pi r / spacing)
@@ -274,7 +275,25 @@ struct BlockSpec {
   // A points block's particles, read from its file (core/point_file.hpp).
   std::vector<Vec<D>> points;
   double particle_volume = 0.0;
+  // An stl block (3D): the surface, and where it goes: x = offset + scale * x_file.
+  std::shared_ptr<const StlRegion> stl;
+  double stl_scale = 1.0;
+  Vec<D> stl_offset{};
 };
+
+// Whether `p` is strictly inside an stl block's surface, placed by its scale and offset.
+template <int D>
+bool inside_stl(const BlockSpec<D>& spec, const Vec<D>& p) {
+  if constexpr (D == 3) {
+    Vec<3> in_file{};
+    for (int k = 0; k < 3; ++k) {
+      in_file[k] = (p[k] - spec.stl_offset[k]) / spec.stl_scale;
+    }
+    return spec.stl->contains(in_file);
+  } else {
+    return false;
+  }
+}
 
 template <int D>
 double volume_of(const Box<D>& box) {
@@ -420,6 +439,45 @@ void read_points(const CaseFile& case_file, BlockSpec<D>& spec) {
   spec.outer = spec.region;
 }
 
+// shape = "stl" (3D): the inside of a closed STL surface (file, relative to the case file's
+// folder; scale, offset) filled with the block's lattice (core/stl_region.hpp).
+template <int D>
+void read_stl(const CaseFile& case_file, BlockSpec<D>& spec) {
+  auto field = [&](const char* name) { return spec.key + "." + name; };
+  if constexpr (D != 3) {
+    case_file.fail(field("shape"), "an \"stl\" block is three-dimensional");
+  } else {
+    for (const char* region_key : {"min", "max", "layers", "open_top"}) {
+      if (case_file.has(field(region_key))) {
+        case_file.fail(field(region_key), "an \"stl\" block's region is its surface's inside");
+      }
+    }
+    if (spec.lattice == Lattice::vogel) {
+      case_file.fail(field("lattice"), "an stl block is filled on a square, hexagonal or bcc "
+                                       "lattice");
+    }
+    try {
+      spec.stl = std::make_shared<const StlRegion>(block_file_path(case_file, spec.key).string());
+    } catch (const StlError& error) {
+      case_file.fail(field("file"), error.what());
+    }
+    if (case_file.has(field("scale"))) {
+      spec.stl_scale = case_file.positive_number(field("scale"));
+    }
+    if (case_file.has(field("offset"))) {
+      const std::vector<double> given = case_file.numbers(field("offset"), 3);
+      spec.stl_offset = {given[0], given[1], given[2]};
+    }
+    spec.shape = Shape::stl;
+    const Box<3> bounds = spec.stl->bounds();
+    for (int k = 0; k < 3; ++k) {
+      spec.region.min[k] = spec.stl_offset[k] + spec.stl_scale * bounds.min[k];
+      spec.region.max[k] = spec.stl_offset[k] + spec.stl_scale * bounds.max[k];
+    }
+    spec.outer = spec.region;
+  }
+}
+
 template <int D>
 BlockSpec<D> read_block(const CaseFile& case_file, std::size_t index, double default_spacing,
                         std::span<const std::string_view> kinds) {
@@ -472,6 +530,10 @@ BlockSpec<D> read_block(const CaseFile& case_file, std::size_t index, double def
     read_points<D>(case_file, spec);
     return spec;
   }
+  if (shape == "stl") {
+    read_stl<D>(case_file, spec);
+    return spec;
+  }
   if (shape == "outline") {
     if constexpr (D != 2) {
       case_file.fail(field("shape"), "an outline is two-dimensional");
@@ -508,8 +570,8 @@ BlockSpec<D> read_block(const CaseFile& case_file, std::size_t index, double def
     }
   } else if (shape != "box") {
     case_file.fail(field("shape"),
-                   "expected \"box\", \"container\", \"annulus\", \"outline\" or \"points\", "
-                   "got \"" +
+                   "expected \"box\", \"container\", \"annulus\", \"outline\", \"points\" or "
+                   "\"stl\", got \"" +
                        shape + "\"");
   } else if (case_file.has(field("layers")) || case_file.has(field("open_top"))) {
     case_file.fail(case_file.has(field("layers")) ? field("layers") : field("open_top"),
@@ -603,6 +665,9 @@ ParticleBlock<D> generate_block(const CaseFile& case_file, const BlockSpec<D>& s
   } else if (spec.shape == Shape::points) {
     block.positions = spec.points;
     block.volume_per_particle = spec.particle_volume;
+  } else if (spec.shape == Shape::stl) {
+    block.positions = lattice_points<D>(spec.lattice, spec.region, spec.spacing);
+    std::erase_if(block.positions, [&](const Vec<D>& p) { return !inside_stl<D>(spec, p); });
   } else if (spec.shape == Shape::annulus) {
     if constexpr (D == 2) {
       block.positions = ring_points(spec.annulus, spec.spacing);
@@ -659,15 +724,20 @@ read_particle_blocks(const CaseFile& case_file, double default_spacing, const Bo
   for (std::size_t b = 0; b < specs.size(); ++b) {
     for (const std::size_t other : specs[b].exclude) {
       const BlockSpec<D>& region = specs[other];
-      if (region.shape != Shape::outline && region.shape != Shape::box) {
+      if (region.shape != Shape::outline && region.shape != Shape::box &&
+          region.shape != Shape::stl) {
         case_file.fail(specs[b].key + ".exclude_blocks",
-                       region.key + " is not a box or an outline: only their regions exclude");
+                       region.key + " is not a box, an outline or an stl block: only their "
+                                    "regions exclude");
       }
       auto inside = [&](const Vec<D>& p) {
         if constexpr (D == 2) {
           if (region.shape == Shape::outline) {
             return region.outline->contains(p);
           }
+        }
+        if (region.shape == Shape::stl) {
+          return inside_stl<D>(region, p);
         }
         return strictly_inside<D>(region.region, p);
       };

@@ -16,7 +16,9 @@
 //                                "points": the particles of a point file (key file, relative to
 //                                the case file's folder; core/point_file.hpp), each standing for
 //                                particle_volume (default spacing^D); the file's other columns
-//                                are initial values of the set's fields (core/state_fill.hpp)
+//                                are initial values of the set's fields (core/state_fill.hpp);
+//                                "stl" (3D): the inside of a closed STL surface (file, scale,
+//                                offset; core/stl_region.hpp) filled with the lattice
 //   exclude_blocks = [i, ...]    leave out the particles inside those blocks' regions (box or
 //                                outline): a fluid around solid bodies
 //   lattice = "square"           "square", "hexagonal" (2D: triangular; 3D: hexagonal close

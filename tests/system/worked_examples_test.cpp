@@ -1,6 +1,6 @@
 // The worked examples of docs/point-files.md (issue 33), each run as its documented command: the
-// script makes its input files next to a copy of the case, and `revsph verify` returns the run
-// bit for bit (they are reversible), on 1 and 2 threads.
+// script makes its input files (a CSV point file, an STL surface) next to a copy of the case,
+// and `revsph verify` returns the run bit for bit (they are reversible), on 1 and 2 threads.
 
 #include "cli_sandbox.hpp"
 
@@ -38,6 +38,26 @@ TEST(WorkedExamples, CsvVortexPatchReturnsBitwise) {
     // The file's velocities are the state's: the run's energy scale is the disc's kinetic
     // energy at the start, 1/2 rho dr^2 sum v^2 over the file's rows (20.34112 J/m).
     EXPECT_NE(result.out.find("energy moved 2.034112e+01"), std::string::npos) << result;
+  }
+}
+
+TEST(WorkedExamples, StlDamBreakOntoAnObstacleReturnsBitwise) {
+  Sandbox sandbox;
+  const fs::path folder = examples / "stl-dambreak-3d";
+  fs::copy_file(folder / "dambreak-obstacle.toml", sandbox.work() / "dambreak-obstacle.toml");
+  ASSERT_TRUE(run_script(
+      sandbox, fs::path(REVSPH_SOURCE_DIR) / "tools" / "geometry" / "make_obstacle_stl.py",
+      "--box 0.6 0.075 0.0 0.7 0.175 0.15 --out obstacle.stl"));
+  const CommandResult run =
+      sandbox.revsph({"run", "dambreak-obstacle.toml", "--steps", "1", "--out", "run"});
+  ASSERT_EQ(run.exit_status, 0) << run;
+  // The tank's 4 128 wall particles and the obstacle's 4 x 4 x 6 filling its surface.
+  EXPECT_NE(run.out.find("2000 fluid + 4224 wall"), std::string::npos) << run;
+  for (const char* threads : {"1", "2"}) {
+    const CommandResult result = sandbox.revsph(
+        {"verify", "dambreak-obstacle.toml", "--steps", "2000", "--threads", threads});
+    EXPECT_EQ(result.exit_status, 0) << result;
+    EXPECT_NE(result.out.find("verdict: bitwise identical"), std::string::npos) << result;
   }
 }
 

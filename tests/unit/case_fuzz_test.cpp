@@ -487,6 +487,33 @@ TEST(CaseFuzz, MutantsOfDambreakSmallFromAPointFile) {
   fuzz(settings);
 }
 
+// An obstacle from a closed STL surface (core/stl_region.hpp, CGAL), in the 3D dam break: a
+// 0.25 m cube on the floor, 8 wall particles at the coarse 0.125 m spacing.
+std::string obstacle_stl() {
+  const char* corners[] = {"0.5 0 0",    "0.75 0 0",    "0.5 0.25 0",    "0.75 0.25 0",
+                           "0.5 0 0.25", "0.75 0 0.25", "0.5 0.25 0.25", "0.75 0.25 0.25"};
+  const int triangles[12][3] = {{0, 2, 1}, {2, 3, 1}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                                {2, 6, 3}, {6, 7, 3}, {0, 4, 2}, {4, 6, 2}, {1, 3, 5}, {3, 7, 5}};
+  std::string text = "solid obstacle\n";
+  for (const auto& t : triangles) {
+    text += "facet normal 0 0 0\nouter loop\n";
+    for (const int v : t) {
+      text += std::string("vertex ") + corners[v] + "\n";
+    }
+    text += "endloop\nendfacet\n";
+  }
+  return text + "endsolid obstacle\n";
+}
+
+TEST(CaseFuzz, MutantsOfDambreakSmall3DWithAnStlObstacle) {
+  FuzzSettings settings{"dambreak-3d-small", "dr = 0.025", "dr = 0.125", 3000, 12};
+  settings.point_block_from = "[run]";
+  settings.point_block =
+      "[[particles]]\nkind = \"wall\"\nshape = \"stl\"\nfile = \"POINT_FILE\"\n[run]";
+  settings.point_file = obstacle_stl();
+  fuzz(settings);
+}
+
 TEST(CaseFuzz, MutantsOfExpansionSmall) {
   // The entropic model (fixed point only); dr 0.1: 100 gas and about 130 wall particles.
   fuzz({"expansion-small", "dr = 0.05", "dr = 0.1", 8000, 2, false});
