@@ -312,7 +312,7 @@ const std::vector<Defect>& defects() {
        "shape = \"box\"",
        "shape = \"sphere\"",
        "particles[0].shape",
-       {"\"container\", \"annulus\", \"outline\" or \"points\"", "sphere"}},
+       {"\"container\", \"annulus\", \"outline\", \"points\" or \"stl\"", "sphere"}},
       {"layers_on_a_box",
        "max = [1.0, 2.0]",
        "max = [1.0, 2.0]\nlayers = 2",
