@@ -217,7 +217,42 @@ Box<D> read_domain(const CaseFile& case_file) {
                                    "must have a finite size");
     }
   }
+  // Along a periodic axis the pair passes also hold images of the particles near the faces, up
+  // to half a period beyond them (the distribution requires the reach below half a period).
+  const PeriodicBox period = read_periodic_box<D>(case_file);
+  for (int k = 0; k < D; ++k) {
+    if (period.periodic[k]) {
+      const double half = 0.5 * (domain.max[k] - domain.min[k]);
+      domain.min[k] -= half;
+      domain.max[k] += half;
+    }
+  }
   return domain;
+}
+
+template <int D>
+PeriodicBox read_periodic_box(const CaseFile& case_file) {
+  PeriodicBox period;
+  const std::string axes = case_file.string_or("domain.periodic", "");
+  for (const char axis : axes) {
+    const int k = axis - 'x';
+    if (k < 0 || k >= D) {
+      case_file.fail("domain.periodic", "names the axes that are periodic, from \"" +
+                                            std::string("xyz").substr(0, D) + "\" (got '" +
+                                            std::string(1, axis) + "')");
+    }
+    if (period.periodic[k]) {
+      case_file.fail("domain.periodic", "names axis " + axis_name(k) + " twice");
+    }
+    period.periodic[k] = true;
+  }
+  const std::vector<double> min = case_file.numbers("domain.min", D);
+  const std::vector<double> max = case_file.numbers("domain.max", D);
+  for (int k = 0; k < D; ++k) {
+    period.min[k] = min[k];
+    period.max[k] = max[k];
+  }
+  return period;
 }
 
 namespace {
@@ -794,6 +829,9 @@ template std::vector<Vec<3>> lattice_points<3>(Lattice, const Box<3>&, double);
 template double lattice_cell_volume<1>(Lattice, double);
 template double lattice_cell_volume<2>(Lattice, double);
 template double lattice_cell_volume<3>(Lattice, double);
+template PeriodicBox read_periodic_box<1>(const CaseFile&);
+template PeriodicBox read_periodic_box<2>(const CaseFile&);
+template PeriodicBox read_periodic_box<3>(const CaseFile&);
 template Box<1> read_domain<1>(const CaseFile&);
 template Box<2> read_domain<2>(const CaseFile&);
 template Box<3> read_domain<3>(const CaseFile&);

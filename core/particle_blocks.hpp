@@ -34,6 +34,7 @@
 
 #include "core/case_file.hpp"
 #include "core/geometry.hpp"
+#include "core/periodic_box.hpp"
 #include "core/point_file.hpp"
 
 #include <filesystem>
@@ -114,8 +115,13 @@ template <int D>
 std::vector<PointBlockValues<D>> point_blocks_with_values(const CaseFile& case_file,
                                                           std::string_view kind);
 
-// Reads [domain] min/max and checks min < max on every axis.
+// Reads [domain] min/max and checks min < max on every axis: the region particles and their
+// periodic images may occupy, grown by half the period on each side of a periodic axis.
 template <int D>
 Box<D> read_domain(const CaseFile& case_file);
+
+// [domain] periodic ("x", "xy", ...) with the period's faces, domain.min and domain.max.
+template <int D>
+PeriodicBox read_periodic_box(const CaseFile& case_file);
 
 } // namespace revsph

@@ -12,6 +12,7 @@
 #include "core/interaction_reach.hpp"
 #include "core/particle_sets.hpp"
 #include "core/particle_view.hpp"
+#include "core/periodic_images.hpp"
 #include "core/state_snapshot.hpp"
 #include "core/step_composition.hpp"
 #include "core/step_splitting.hpp"
@@ -235,7 +236,9 @@ public:
     require_complete(model_.state());
     info_.particles = set_sizes(model_.state());
     place_irreversible_operators();
-    if (distributed::process_count() > 1) {
+    // A periodic domain's images travel as ghosts (docs/design/periodic.md): one process then
+    // distributes its state to itself.
+    if (distributed::process_count() > 1 || has_periodic_positions(model_.state())) {
       distribute();
     }
   }

@@ -6,6 +6,7 @@
 // negated), the state hash, the bitwise comparison of the verifier and the snapshots: no code is
 // written per model for those.
 
+#include "core/periodic_box.hpp"
 #include "fixedpoint/scale.hpp"
 
 #include <cassert>
@@ -39,6 +40,9 @@ struct VariableInfo {
   fixedpoint::Scale scale;
   bool evolved = true;   // false: fixed at setup (masses, wall positions, integration constants)
   std::string scaled_as; // the quantity whose scale it is stored in; empty: its own name
+  // A position field's periodic axes ([domain] periodic; core/periodic_box.hpp): the drift wraps
+  // it, the distribution gives its particles images across the periodic faces. Set by fill_set.
+  PeriodicBox period;
 
   const std::string& quantity() const { return scaled_as.empty() ? name : scaled_as; }
 };
@@ -64,6 +68,7 @@ public:
     has_scale_ = true;
   }
   bool has_scale() const { return has_scale_; }
+  void set_period(const PeriodicBox& period) { info_.period = period; }
   void set_particle_set(std::string name) { info_.particle_set = std::move(name); }
   std::size_t count() const { return count_; }
   int components() const { return info_.components; }

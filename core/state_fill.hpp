@@ -8,6 +8,7 @@
 #include "core/geometry.hpp"
 #include "core/particle_blocks.hpp"
 #include "core/particle_sets.hpp"
+#include "core/periodic_wrap.hpp"
 #include "core/state_field.hpp"
 
 #include <functional>
@@ -162,6 +163,37 @@ void fill_from_point_files(const CaseFile& case_file, Set& set,
   }
 }
 
+// A position field's periodic axes ([domain] periodic): every particle must lie in the period,
+// [domain.min, domain.max) on those axes, where the drift's wrap keeps it.
+template <class Arith, int D>
+void set_period(const CaseFile& case_file, StateField<typename Arith::Raw>& position) {
+  const PeriodicBox period = read_periodic_box<D>(case_file);
+  if (!period.any()) {
+    return;
+  }
+  for (int k = 0; k < D; ++k) {
+    typename Arith::Raw face{};
+    if (period.periodic[k] && (!Arith::try_from_real(period.min[k], position.info().scale, face) ||
+                               !Arith::try_from_real(period.max[k], position.info().scale, face))) {
+      case_file.fail("domain.periodic",
+                     "the faces on axis " + axis_name(k) + " do not fit the position scale");
+    }
+  }
+  position.set_period(period);
+  const RawPeriod<typename Arith::Raw> raw = raw_period<typename Arith::Raw>(position.info());
+  for (std::size_t i = 0; i < position.count(); ++i) {
+    for (int k = 0; k < D; ++k) {
+      const auto x = position.at(k, i);
+      if (raw.periodic[k] && !(x >= raw.lower[k] && x < raw.lower[k] + raw.period[k])) {
+        case_file.fail("domain.periodic",
+                       "a " + position.info().particle_set + " particle at " + axis_name(k) +
+                           " = " + std::to_string(Arith::real(x, position.info().scale)) +
+                           " lies outside the period [domain.min, domain.max) of that axis");
+      }
+    }
+  }
+}
+
 } // namespace detail
 
 // Fills the named fields of `set`, `count` particles each (values of another length, or a name
@@ -210,6 +242,9 @@ void fill_set(const CaseFile& case_file, Set& set, std::size_t count,
           }
         },
         fill.values);
+    if (fill.field == "position") {
+      detail::set_period<Arith, D>(case_file, *target);
+    }
   }
   detail::fill_from_point_files<Arith, D>(case_file, set, fills);
 }

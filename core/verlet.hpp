@@ -8,6 +8,7 @@
 
 #include "core/arithmetic.hpp"
 #include "core/fault.hpp"
+#include "core/periodic_wrap.hpp"
 #include "core/state_field.hpp"
 #include "fixedpoint/conversion.hpp"
 
@@ -81,7 +82,8 @@ void add_pair_totals(StateField<typename Arith::Raw>& target, const Sums& sums, 
   faults.throw_if_any();
 }
 
-// position += dt * velocity. The increment dt * v is odd in v bit for bit (IEEE negation and
+// position += dt * velocity, then the wrap into a periodic domain (core/periodic_wrap.hpp: addition
+// modulo the period, exactly undone by the reversed drift's). The increment dt * v is odd in v bit for bit (IEEE negation and
 // odd-symmetric rounding), the condition for the drift to be self-inverse under R.
 template <class Arith>
 void drift(StateField<typename Arith::Raw>& position,
@@ -90,6 +92,7 @@ void drift(StateField<typename Arith::Raw>& position,
   add_rate<Arith>(
       position, [&](int c, std::size_t i) { return Arith::real(velocity.at(c, i), v_scale); }, dt,
       faults, "overflow or non-finite value in a drift");
+  wrap_into_period(position);
 }
 
 // position += dt * momentum / mass, for a state that keeps momenta (two masses, say): dt (-p) / m
@@ -103,6 +106,7 @@ void drift_by_momentum(StateField<typename Arith::Raw>& position,
       position,
       [&](int c, std::size_t i) { return Arith::real(momentum.at(c, i), p_scale) / mass[i]; }, dt,
       faults, "overflow or non-finite value in a drift");
+  wrap_into_period(position);
 }
 
 } // namespace revsph

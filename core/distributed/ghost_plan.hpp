@@ -12,6 +12,7 @@
 #include "core/distributed/processes.hpp"
 #include "core/distributed/row_exchange.hpp"
 #include "core/distributed/spatial_partition.hpp"
+#include "core/periodic_box.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -25,7 +26,10 @@ public:
   GhostPlan() = default;
   // `positions`: this process's particles, point after point (partition.dimension() values
   // each, metres).
-  GhostPlan(const SpatialPartition& partition, std::span<const double> positions, double reach);
+  // `period`: a periodic domain's faces (core/periodic_box.hpp); the particles within the reach
+  // of one are also sent as images, their positions shifted by the period (sent_shifts).
+  GhostPlan(const SpatialPartition& partition, std::span<const double> positions, double reach,
+            const PeriodicBox& period = {});
 
   // Sends `width` values of each listed particle (values[i * width + j]: particle i's j-th) to
   // every process that needs it; returns the ghosts' values in the same layout (collective).
@@ -61,6 +65,9 @@ public:
   std::size_t sent_count() const { return sent_particles_.size(); }
   // The listed particles, grouped by destination (for a caller that packs rows itself).
   std::span<const std::uint32_t> sent_particles() const { return sent_particles_; }
+  // The image each listed particle is sent as (its position is shifted by these periods before
+  // it goes); empty where none is an image.
+  std::span<const ImageShift> sent_shifts() const { return sent_shifts_; }
 
   // The particles' global indices in their set, own ones then the ghosts (as StateField numbers
   // them: ghost g at own count + g), for what orders rows by the whole run's numbering (a solve
@@ -76,7 +83,9 @@ public:
 
 private:
   std::vector<std::uint64_t> own_global_, ghost_global_;
-  std::vector<std::uint32_t> sent_particles_;    // grouped by destination, in particle order
+  std::vector<std::uint32_t> sent_particles_; // grouped by destination, in particle order
+  std::vector<ImageShift> sent_shifts_;       // per sent particle; empty without images
+  bool has_images_ = false;
   std::vector<std::size_t> sent_per_process_;    // one count per process
   std::vector<std::size_t> ghosts_from_process_; // one count per process
   std::size_t ghost_count_ = 0;

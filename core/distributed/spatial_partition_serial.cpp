@@ -18,9 +18,13 @@ int SpatialPartition::owner_of(std::span<const double>) const {
   return 0;
 }
 
-void SpatialPartition::processes_near(std::span<const double>, double, int,
+void SpatialPartition::processes_near(std::span<const double>, double, int except,
                                       std::vector<int>& processes) const {
+  // The one process, unless excepted: a periodic image of its own particle (ghost_plan.cpp).
   processes.clear();
+  if (except != 0) {
+    processes.push_back(0);
+  }
 }
 
 } // namespace revsph::distributed

@@ -21,6 +21,7 @@
 #include "core/distributed/spatial_partition.hpp"
 #include "core/distributed/work_estimate.hpp"
 #include "core/particle_sets.hpp"
+#include "core/periodic_images.hpp"
 #include "core/state_snapshot.hpp"
 
 #include <algorithm>
@@ -131,6 +132,9 @@ public:
       pieces.name = std::string(std::remove_cvref_t<decltype(set)>::set.name);
       pieces.total = set_size(set);
       pieces.has_position = detail::position_field(set) != nullptr;
+      if (pieces.has_position) {
+        require_room_for_images(detail::position_field(set)->info().period);
+      }
     });
     cut_regions(state, /*whole_state_held=*/true);
     keep_own_particles(state);
@@ -396,6 +400,18 @@ private:
     return true;
   }
 
+  // One image per axis at most (image_shifts): a period longer than twice the ghosts' reach.
+  void require_room_for_images(const PeriodicBox& period) const {
+    for (int k = 0; k < dimension_; ++k) {
+      if (period.periodic[k] && !(period.length(k) > 2.0 * (reach_ + skin_))) {
+        throw std::invalid_argument("[domain] periodic: the period along " + axis_name(k) + " (" +
+                                    std::to_string(period.length(k)) +
+                                    " m) must exceed 2.5 times the interaction reach (" +
+                                    std::to_string(reach_) + " m)");
+      }
+    }
+  }
+
   void keep_own_particles(State& state) {
     const int me = process_rank();
     std::size_t k = 0;
@@ -440,7 +456,9 @@ private:
       if (position == nullptr) {
         return;
       }
-      // Read in place: this runs after every sub-step.
+      // Read in place: this runs after every sub-step. A particle that crossed a periodic face
+      // (its wrap moved it by a period) needs its images on the other side now: the lists are
+      // remade (a shear flow remakes them often: docs/periodic.md, "Cost").
       for (std::size_t i = 0; i < position->count(); ++i) {
         double squared = 0.0;
         for (std::size_t a = 0; a < d; ++a) {
@@ -490,7 +508,8 @@ private:
         return;
       }
       pieces.points_at_lists = detail::points_of(*detail::position_field(set));
-      pieces.plan = std::make_unique<GhostPlan>(partition_, pieces.points_at_lists, reach_ + skin_);
+      pieces.plan = std::make_unique<GhostPlan>(partition_, pieces.points_at_lists, reach_ + skin_,
+                                                detail::position_field(set)->info().period);
       pieces.ghost_global = pieces.plan->template exchange_from<std::uint64_t>(
           1, [&pieces](std::size_t i, std::uint64_t* row) { row[0] = pieces.global[i]; });
       pieces.plan->set_global_indices(pieces.global, pieces.ghost_global);
@@ -525,6 +544,17 @@ private:
         for (std::size_t n = 0; n < sent.size(); ++n) {
           for (std::size_t c = 0; c < width; ++c) {
             values[n * width + c] = field.at(static_cast<int>(c), sent[n]);
+          }
+        }
+        // Images across a periodic face go with their positions shifted by the period.
+        const std::span<const ImageShift> shifts = pieces.plan->sent_shifts();
+        if (!shifts.empty() && field.info().name == "position") {
+          const RawPeriod<Raw> period = raw_period<Raw>(field.info());
+          for (std::size_t n = 0; n < sent.size(); ++n) {
+            for (std::size_t c = 0; c < width; ++c) {
+              values[n * width + c] =
+                  shifted(values[n * width + c], period, shifts[n], static_cast<int>(c));
+            }
           }
         }
         std::vector<std::byte> bytes(values.size() * sizeof(Raw));

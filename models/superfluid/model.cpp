@@ -148,6 +148,7 @@ void Model<D, Arith>::drift(double dt) {
     }
     return fits;
   });
+  wrap_into_period(position); // a periodic domain (core/periodic_wrap.hpp)
   density_valid_ = false;
 }
 

@@ -169,6 +169,15 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   const fixedpoint::Scale masses =
       mass_scale(case_file, "physics.rest_density", {fluid_masses, dummy_masses});
   std::vector<std::pair<std::string, std::string>> setup_report;
+  const PeriodicBox period = read_periodic_box<D>(case_file);
+  if (period.any() && parameters.isc_enabled) {
+    case_file.fail("domain.periodic", "the initial state correction does not wrap its particles "
+                                      "across periodic faces: disable one of them");
+  }
+  if (period.periodic[D - 1] && parameters.gravity != 0.0) {
+    case_file.fail("domain.periodic", "gravity acts along the last axis, whose potential energy "
+                                      "a periodic wrap would not conserve");
+  }
   if (parameters.isc_enabled) {
     const std::vector<Vec<D>> no_positions;
     const std::vector<double> no_masses;
@@ -203,6 +212,8 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   free_storage(dummy_masses);
   free_storage(initial.velocity);
 
+  // A periodic domain: the density constants (eq. 5) sum over the neighbours across the faces.
+  attach_periodic_images(state, parameters.support_radius);
   SimulationInfo info = simulation_info(case_file, "wcsph", D, options.arithmetic, parameters.dt);
   info.sound_speed = parameters.sound_speed;
   info.setup_report = std::move(setup_report);
