@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,26 @@ inline std::vector<ImageShift> image_shifts(const double* point, int dimension,
 // "x", "y", "z" for messages.
 inline std::string axis_name(int k) {
   return std::string(1, static_cast<char>('x' + k));
+}
+
+// A period too short for one image per axis (the CLI reports it as a case error on
+// domain.periodic).
+class PeriodTooShort : public std::invalid_argument {
+public:
+  using std::invalid_argument::invalid_argument;
+};
+
+// Throws PeriodTooShort unless every periodic axis is longer than twice `reach` (image_shifts'
+// condition); `what` names the reach in the message.
+inline void require_room_for_images(const PeriodicBox& box, int dimension, double reach,
+                                    const std::string& what) {
+  for (int k = 0; k < dimension; ++k) {
+    if (box.periodic[k] && !(box.length(k) > 2.0 * reach)) {
+      throw PeriodTooShort("the period along " + axis_name(k) + " (" +
+                           std::to_string(box.length(k)) + " m) must exceed twice " + what + " (" +
+                           std::to_string(reach) + " m)");
+    }
+  }
 }
 
 } // namespace revsph

@@ -73,6 +73,7 @@ void attach_periodic_images(State& state, double margin) {
       return;
     }
     const int d = position->components();
+    require_room_for_images(position->info().period, d, margin, "the set-up's interaction radius");
     std::vector<double> points(position->count() * static_cast<std::size_t>(d));
     for (std::size_t i = 0; i < position->count(); ++i) {
       for (int k = 0; k < d; ++k) {

@@ -31,10 +31,18 @@ public:
     return *this;
   }
   friend constexpr RunTotal operator-(RunTotal a) { return RunTotal(-a.value_); }
-  friend constexpr RunTotal operator+(RunTotal a, RunTotal b) { return RunTotal(a.value_ + b.value_); }
-  friend constexpr RunTotal operator-(RunTotal a, RunTotal b) { return RunTotal(a.value_ - b.value_); }
-  friend constexpr RunTotal operator*(RunTotal a, RunTotal b) { return RunTotal(a.value_ * b.value_); }
-  friend constexpr RunTotal operator/(RunTotal a, RunTotal b) { return RunTotal(a.value_ / b.value_); }
+  friend constexpr RunTotal operator+(RunTotal a, RunTotal b) {
+    return RunTotal(a.value_ + b.value_);
+  }
+  friend constexpr RunTotal operator-(RunTotal a, RunTotal b) {
+    return RunTotal(a.value_ - b.value_);
+  }
+  friend constexpr RunTotal operator*(RunTotal a, RunTotal b) {
+    return RunTotal(a.value_ * b.value_);
+  }
+  friend constexpr RunTotal operator/(RunTotal a, RunTotal b) {
+    return RunTotal(a.value_ / b.value_);
+  }
   // Scaled by a constant of the case (a parameter, a unit): the same on every process too.
   friend constexpr RunTotal operator*(RunTotal a, double constant) {
     return RunTotal(a.value_ * constant);

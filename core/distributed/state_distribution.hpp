@@ -402,14 +402,9 @@ private:
 
   // One image per axis at most (image_shifts): a period longer than twice the ghosts' reach.
   void require_room_for_images(const PeriodicBox& period) const {
-    for (int k = 0; k < dimension_; ++k) {
-      if (period.periodic[k] && !(period.length(k) > 2.0 * (reach_ + skin_))) {
-        throw std::invalid_argument("[domain] periodic: the period along " + axis_name(k) + " (" +
-                                    std::to_string(period.length(k)) +
-                                    " m) must exceed 2.5 times the interaction reach (" +
-                                    std::to_string(reach_) + " m)");
-      }
-    }
+    revsph::require_room_for_images(period, dimension_, reach_ + skin_,
+                                    "the interaction reach with its skin (1.25 times the largest "
+                                    "interaction radius)");
   }
 
   void keep_own_particles(State& state) {

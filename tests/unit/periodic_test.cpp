@@ -67,8 +67,8 @@ TEST(PeriodicWrap, DriftAcrossTheFacesReversesBitForBit) {
       const double x = box.min[k] + unit(random) * box.length(k);
       ASSERT_TRUE(FixedArithmetic::try_from_real(std::min(x, box.max[k] - 1e-9),
                                                  position.info().scale, position.at(k, i)));
-      ASSERT_TRUE(FixedArithmetic::try_from_real(40.0 * (unit(random) - 0.5),
-                                                 velocity.info().scale, velocity.at(k, i)));
+      ASSERT_TRUE(FixedArithmetic::try_from_real(40.0 * (unit(random) - 0.5), velocity.info().scale,
+                                                 velocity.at(k, i)));
     }
   }
   const std::vector<Raw> start(position.all().begin(), position.all().end());
