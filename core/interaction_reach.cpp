@@ -33,4 +33,9 @@ void limit_interaction_radius(double reach) {
   radius_limit.store(reach);
 }
 
+void forget_interaction_radii() {
+  radius_limit.store(0.0);
+  largest_radius.store(0.0);
+}
+
 } // namespace revsph

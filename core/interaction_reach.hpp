@@ -13,5 +13,8 @@ void note_interaction_radius(double radius);
 double largest_interaction_radius();
 // From now on, a list over a radius larger than `reach` is refused (0: no limit).
 void limit_interaction_radius(double reach);
+// No limit and no radius seen: a new simulation in the same program (a test's next case, say)
+// starts from nothing another one left behind.
+void forget_interaction_radii();
 
 } // namespace revsph

@@ -2,6 +2,7 @@
 
 #include "core/dimension.hpp"
 #include "core/particle_blocks.hpp"
+#include "core/periodic_box.hpp"
 #include "core/state_snapshot.hpp"
 
 #include <filesystem>
@@ -99,6 +100,9 @@ std::unique_ptr<Simulation> create_simulation(const CaseFile& case_file,
       throw;
     }
     throw SimulationFault(fault.fault(), 0);
+  } catch (const PeriodTooShort& refusal) {
+    // Found once the model's radii are known (core/periodic_box.hpp).
+    case_file.fail("domain.periodic", refusal.what());
   }
 }
 

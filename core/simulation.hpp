@@ -243,6 +243,15 @@ public:
     }
   }
 
+  // The ghost reach this simulation set (distribute) must not limit the next one's set-up.
+  ~ModelSimulation() override {
+    if (distribution_) {
+      forget_interaction_radii();
+    }
+  }
+  ModelSimulation(const ModelSimulation&) = delete;
+  ModelSimulation& operator=(const ModelSimulation&) = delete;
+
   const SimulationInfo& info() const override { return info_; }
 
   void advance(std::int64_t steps) override {
@@ -420,7 +429,7 @@ private:
   // the whole state (which builds every pair list); a later list over a larger radius is
   // refused (core/interaction_reach.hpp).
   void distribute() {
-    limit_interaction_radius(0.0);
+    forget_interaction_radii();
     (void)model_.energy();
     const double reach = distributed::max_over_processes(largest_interaction_radius());
     // REVSPH_REBALANCE_ABOVE (docs/running.md): when the regions are cut again; 1: at every

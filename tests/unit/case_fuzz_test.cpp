@@ -330,7 +330,7 @@ struct FuzzSettings {
   std::uint64_t seed_offset = 0;  // a different stream per test
   bool floating_point_too = true; // false for a model that runs in fixed point only
   // A point file (core/point_file.hpp) the case reads: `point_block` replaces `point_block_from`
-  // in the case, and each mutant reads `point_file` (mutated too, a third of the time), written
+  // in the case (without a point file, only that replacement), and each mutant reads `point_file` (mutated too, a third of the time), written
   // to a file whose absolute path replaces POINT_FILE in `point_block`.
   std::string point_block_from;
   std::string point_block;
@@ -369,7 +369,9 @@ void fuzz(const FuzzSettings& settings) {
   if (!settings.point_block.empty()) {
     base = testing::replaced_once(
         base, settings.point_block_from,
-        testing::replaced_once(settings.point_block, "POINT_FILE", point_file.path.string()));
+        settings.point_file.empty()
+            ? settings.point_block
+            : testing::replaced_once(settings.point_block, "POINT_FILE", point_file.path.string()));
     point_file.write(settings.point_file);
   }
   // Most mutants start from the case without its comments, so that edits land on what is read.
@@ -511,6 +513,15 @@ TEST(CaseFuzz, MutantsOfDambreakSmall3DWithAnStlObstacle) {
   settings.point_block =
       "[[particles]]\nkind = \"wall\"\nshape = \"stl\"\nfile = \"POINT_FILE\"\n[run]";
   settings.point_file = obstacle_stl();
+  fuzz(settings);
+}
+
+// A periodic domain (core/periodic_box.hpp): the dam break periodic along x, across its tank's
+// side walls (no point file: the block replacement only adds the key).
+TEST(CaseFuzz, MutantsOfDambreakSmallPeriodicInX) {
+  FuzzSettings settings{"dambreak-small", "\ndr = 0.02", "\ndr = 0.1", 3000, 13};
+  settings.point_block_from = "[domain]";
+  settings.point_block = "[domain]\nperiodic = \"x\"";
   fuzz(settings);
 }
 

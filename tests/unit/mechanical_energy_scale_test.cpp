@@ -45,8 +45,10 @@ TEST(MechanicalEnergyScale, KineticEnergyCountsWholeOtherTermsByTheirChange) {
 
 TEST(MechanicalEnergyScale, DrivenFlowIsTheWorkOfItsWalls) {
   MechanicalEnergyScale scale;
-  scale.observe(revsph::testing::hand_made_budget({{"kinetic", 0.0}, {"dissipated", 0.0}, {"wall_work", 0.0}}));
-  scale.observe(revsph::testing::hand_made_budget({{"kinetic", 1.0}, {"dissipated", 2.0}, {"wall_work", -3.0}}));
+  scale.observe(revsph::testing::hand_made_budget(
+      {{"kinetic", 0.0}, {"dissipated", 0.0}, {"wall_work", 0.0}}));
+  scale.observe(revsph::testing::hand_made_budget(
+      {{"kinetic", 1.0}, {"dissipated", 2.0}, {"wall_work", -3.0}}));
   EXPECT_DOUBLE_EQ(scale.value(), 3.0);
 }
 

@@ -2,7 +2,6 @@
 
 #include "core/distributed/index_order_stream.hpp"
 #include "core/distributed/processes.hpp"
-#include "core/periodic_box.hpp"
 
 #include "core/threads.hpp"
 #include "verify/snapshot_check.hpp"
@@ -36,8 +35,6 @@ LoadedCase build(CaseFile case_file, Arithmetic arithmetic) {
   } catch (const ArithmeticRefused& refusal) {
     // A model without a float variant (its registration says so) refuses --arithmetic float.
     throw CaseError(case_file.source_name(), "--arithmetic", refusal.what());
-  } catch (const PeriodTooShort& refusal) {
-    throw CaseError(case_file.source_name(), "domain.periodic", refusal.what());
   }
   case_file.require_no_unknown_keys();
   return {std::move(case_file), std::move(settings), std::move(simulation), std::nullopt};
