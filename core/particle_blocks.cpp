@@ -1,5 +1,6 @@
 #include "core/particle_blocks.hpp"
 
+#include "core/block_spec.hpp"
 #include "core/coincident_particles.hpp"
 #include "core/outline.hpp"
 #include "core/point_file.hpp"
@@ -16,11 +17,6 @@
 
 namespace revsph {
 
-namespace {
-
-constexpr double relative_tolerance = 1e-9;
-
-// Lattice period along each axis (distance between rows/layers).
 template <int D>
 Vec<D> lattice_periods(Lattice lattice, double spacing) {
   Vec<D> period{};
@@ -39,14 +35,9 @@ Vec<D> lattice_periods(Lattice lattice, double spacing) {
   return period;
 }
 
-template <int D>
-Vec<D> to_vec(const std::vector<double>& values) {
-  Vec<D> v{};
-  for (int k = 0; k < D; ++k) {
-    v[k] = values[k];
-  }
-  return v;
-}
+namespace {
+
+constexpr double relative_tolerance = 1e-9;
 
 template <int D>
 std::string format_point(const Vec<D>& p) {
@@ -72,15 +63,6 @@ double lattice_cell_volume(Lattice lattice, double spacing) {
 }
 
 namespace {
-
-template <int D>
-bool strictly_inside(const Box<D>& box, const Vec<D>& p) {
-  bool inside = true;
-  for (int k = 0; k < D; ++k) {
-    inside = inside && p[k] > box.min[k] && p[k] < box.max[k];
-  }
-  return inside;
-}
 
 // lattice_points, leaving out the points strictly inside `hollow` (if not null). A container's
 // hollow is skipped a run at a time rather than point by point, so that generating a container
@@ -206,8 +188,8 @@ std::vector<Vec<D>> lattice_points(Lattice lattice, const Box<D>& region, double
 
 template <int D>
 Box<D> read_domain(const CaseFile& case_file) {
-  Box<D> domain{to_vec<D>(case_file.numbers("domain.min", D)),
-                to_vec<D>(case_file.numbers("domain.max", D))};
+  Box<D> domain{vec_of<D>(case_file.numbers("domain.min", D)),
+                vec_of<D>(case_file.numbers("domain.max", D))};
   for (int k = 0; k < D; ++k) {
     if (!(domain.min[k] < domain.max[k])) {
       case_file.fail("domain.max", "must be greater than domain.min on every axis");
@@ -257,19 +239,11 @@ PeriodicBox read_periodic_box(const CaseFile& case_file) {
 
 namespace {
 
-enum class Shape { box, container, annulus, outline, points, stl };
-
 // Concentric rings filling the annulus inner_radius < |x - centre| < outer_radius (2D): as many
 // rings as spacings fit across it, each at the middle of its band, with round(2 pi r / spacing)
 // equally spaced points, odd rings turned by half a step. Every point then stands for about
 // spacing^2, and the walls of a circular domain are smooth circles (a lattice cut by a circle
 // leaves steps a fluid would feel as roughness).
-struct AnnulusSpec {
-  Vec<2> centre{};
-  double inner_radius = 0.0;
-  double outer_radius = 0.0;
-};
-
 std::vector<Vec<2>> ring_points(const AnnulusSpec& annulus, double spacing) {
   const double width = annulus.outer_radius - annulus.inner_radius;
   const long rings = std::max(1L, std::lround(width / spacing));
@@ -289,47 +263,6 @@ std::vector<Vec<2>> ring_points(const AnnulusSpec& annulus, double spacing) {
   return points;
 }
 
-// A block as read from the case, before its particles are generated.
-template <int D>
-struct BlockSpec {
-  std::string key;
-  std::string kind;
-  Lattice lattice = Lattice::square;
-  Shape shape = Shape::box;
-  double spacing = 0.0;
-  Box<D> region;
-  Box<D> outer; // the region grown by a container's layers (the region itself for a box)
-  AnnulusSpec annulus;
-  // An outline (2D): its region, the lattice origin its points continue, the shell thickness
-  // (0: filled).
-  std::shared_ptr<const Outline> outline;
-  Vec<2> lattice_origin{};
-  double shell = 0.0;
-  // Blocks whose regions this block's particles leave out (indices into [[particles]]).
-  std::vector<std::size_t> exclude;
-  // A points block's particles, read from its file (core/point_file.hpp).
-  std::vector<Vec<D>> points;
-  double particle_volume = 0.0;
-  // An stl block (3D): the surface, and where it goes: x = offset + scale * x_file.
-  std::shared_ptr<const StlRegion> stl;
-  double stl_scale = 1.0;
-  Vec<D> stl_offset{};
-};
-
-// Whether `p` is strictly inside an stl block's surface, placed by its scale and offset.
-template <int D>
-bool inside_stl(const BlockSpec<D>& spec, const Vec<D>& p) {
-  if constexpr (D == 3) {
-    Vec<3> in_file{};
-    for (int k = 0; k < 3; ++k) {
-      in_file[k] = (p[k] - spec.stl_offset[k]) / spec.stl_scale;
-    }
-    return spec.stl->contains(in_file);
-  } else {
-    return false;
-  }
-}
-
 template <int D>
 double volume_of(const Box<D>& box) {
   double volume = 1.0;
@@ -339,280 +272,22 @@ double volume_of(const Box<D>& box) {
   return volume;
 }
 
-template <int D>
-void read_annulus(const CaseFile& case_file, BlockSpec<D>& spec) {
-  auto field = [&](const char* name) { return spec.key + "." + name; };
-  if constexpr (D != 2) {
-    case_file.fail(field("shape"), "an \"annulus\" block is two-dimensional");
-  } else {
-    if (case_file.has(field("lattice"))) {
-      case_file.fail(field("lattice"), "an annulus is filled with concentric rings, not a lattice");
-    }
-    spec.shape = Shape::annulus;
-    spec.annulus.centre = to_vec<2>(case_file.numbers(field("centre"), 2));
-    spec.annulus.inner_radius = case_file.number(field("inner_radius"));
-    spec.annulus.outer_radius = case_file.positive_number(field("outer_radius"));
-    if (!(spec.annulus.inner_radius >= 0.0) ||
-        !(spec.annulus.inner_radius < spec.annulus.outer_radius)) {
-      case_file.fail(field("inner_radius"), "must be at least 0 and less than outer_radius");
-    }
-    if (!(spec.annulus.outer_radius - spec.annulus.inner_radius >= spec.spacing)) {
-      case_file.fail(field("outer_radius"),
-                     "the annulus must be at least one spacing wide (outer - inner radius)");
-    }
-    for (int k = 0; k < 2; ++k) {
-      spec.region.min[k] = spec.annulus.centre[k] - spec.annulus.outer_radius;
-      spec.region.max[k] = spec.annulus.centre[k] + spec.annulus.outer_radius;
-    }
-    spec.outer = spec.region;
-  }
-}
-
-void read_exclusions(const CaseFile& case_file, const std::string& key, std::size_t index,
-                     std::vector<std::size_t>& exclude) {
-  const std::string exclude_key = key + ".exclude_blocks";
-  if (!case_file.has(exclude_key)) {
-    return;
-  }
-  const std::size_t count = case_file.table_count("particles");
-  for (const double value : case_file.number_list(exclude_key)) {
-    if (!(value >= 0.0 && value < static_cast<double>(count) && value == std::floor(value)) ||
-        static_cast<std::size_t>(value) == index) {
-      std::ostringstream reason;
-      reason << "expected indices of other [[particles]] blocks (0 to " << count - 1 << "), got "
-             << value;
-      case_file.fail(exclude_key, reason.str());
-    }
-    exclude.push_back(static_cast<std::size_t>(value));
-  }
-}
-
-// shape = "outline" (2D): vertices = [x0, y0, x1, y1, ...], corner_radii, mirror_x, offset,
-// lattice_origin, layers (core/outline.hpp).
-template <int D>
-void read_outline(const CaseFile& case_file, BlockSpec<D>& spec) {
-  auto field = [&](const char* name) { return spec.key + "." + name; };
-  if (spec.lattice != Lattice::square) {
-    case_file.fail(field("lattice"), "an outline is filled on a square lattice");
-  }
-  const std::vector<double> flat = case_file.number_list(field("vertices"));
-  if (flat.size() % 2 != 0 || flat.size() < 6) {
-    case_file.fail(field("vertices"), "expected x0, y0, x1, y1, ... for three vertices or more");
-  }
-  std::vector<Vec<2>> vertices;
-  for (std::size_t i = 0; i < flat.size(); i += 2) {
-    vertices.push_back({flat[i], flat[i + 1]});
-  }
-  std::vector<double> radii;
-  if (case_file.has(field("corner_radii"))) {
-    radii = case_file.number_list(field("corner_radii"));
-  }
-  const bool mirror = case_file.boolean_or(field("mirror_x"), false);
-  Vec<2> offset{};
-  if (case_file.has(field("offset"))) {
-    const std::vector<double> given = case_file.numbers(field("offset"), 2);
-    offset = {given[0], given[1]};
-  }
-  if (case_file.has(field("lattice_origin"))) {
-    const std::vector<double> given = case_file.numbers(field("lattice_origin"), 2);
-    spec.lattice_origin = {given[0], given[1]};
-  }
-  if (case_file.has(field("layers"))) {
-    const std::int64_t layers = case_file.integer(field("layers"));
-    if (layers < 1 || layers > 1000) {
-      case_file.fail(field("layers"),
-                     "must be between 1 and 1000 (got " + std::to_string(layers) + ")");
-    }
-    spec.shell = static_cast<double>(layers) * spec.spacing;
-  }
-  try {
-    spec.outline =
-        std::make_shared<const Outline>(Outline(vertices, radii).transformed(mirror, offset));
-  } catch (const std::invalid_argument& error) {
-    case_file.fail(field(radii.empty() ? "vertices" : "corner_radii"), error.what());
-  }
-  spec.shape = Shape::outline;
-  const Box<2> bounds = spec.outline->bounds();
-  for (int k = 0; k < D; ++k) {
-    spec.region.min[k] = bounds.min[k];
-    spec.region.max[k] = bounds.max[k];
-  }
-  spec.outer = spec.region;
-}
-
-// shape = "points": the particles of a point file (file, particle_volume); its other columns are
-// initial values of the set's fields, given to them by fill_set (core/state_fill.hpp).
-template <int D>
-void read_points(const CaseFile& case_file, BlockSpec<D>& spec) {
-  auto field = [&](const char* name) { return spec.key + "." + name; };
-  for (const char* lattice_key : {"lattice", "min", "max", "layers", "exclude_blocks"}) {
-    if (case_file.has(field(lattice_key))) {
-      case_file.fail(field(lattice_key), "a \"points\" block's particles come from its file");
-    }
-  }
-  spec.shape = Shape::points;
-  try {
-    spec.points = read_point_file<D>(block_file_path(case_file, spec.key)).positions;
-  } catch (const PointFileError& error) {
-    case_file.fail(field("file"), error.what());
-  }
-  double volume = 1.0;
-  for (int k = 0; k < D; ++k) {
-    volume *= spec.spacing;
-  }
-  spec.particle_volume = volume;
-  if (case_file.has(field("particle_volume"))) {
-    spec.particle_volume = case_file.positive_number(field("particle_volume"));
-  }
-  spec.region = Box<D>{spec.points.front(), spec.points.front()};
-  for (const Vec<D>& p : spec.points) {
-    for (int k = 0; k < D; ++k) {
-      spec.region.min[k] = std::min(spec.region.min[k], p[k]);
-      spec.region.max[k] = std::max(spec.region.max[k], p[k]);
-    }
-  }
-  spec.outer = spec.region;
-}
-
-// shape = "stl" (3D): the inside of a closed STL surface (file, relative to the case file's
-// folder; scale, offset) filled with the block's lattice (core/stl_region.hpp).
-template <int D>
-void read_stl(const CaseFile& case_file, BlockSpec<D>& spec) {
-  auto field = [&](const char* name) { return spec.key + "." + name; };
-  if constexpr (D != 3) {
-    case_file.fail(field("shape"), "an \"stl\" block is three-dimensional");
-  } else {
-    for (const char* region_key : {"min", "max", "layers", "open_top"}) {
-      if (case_file.has(field(region_key))) {
-        case_file.fail(field(region_key), "an \"stl\" block's region is its surface's inside");
-      }
-    }
-    if (spec.lattice == Lattice::vogel) {
-      case_file.fail(field("lattice"), "an stl block is filled on a square, hexagonal or bcc "
-                                       "lattice");
-    }
-    try {
-      spec.stl = std::make_shared<const StlRegion>(block_file_path(case_file, spec.key).string());
-    } catch (const StlError& error) {
-      case_file.fail(field("file"), error.what());
-    }
-    if (case_file.has(field("scale"))) {
-      spec.stl_scale = case_file.positive_number(field("scale"));
-    }
-    if (case_file.has(field("offset"))) {
-      const std::vector<double> given = case_file.numbers(field("offset"), 3);
-      spec.stl_offset = {given[0], given[1], given[2]};
-    }
-    spec.shape = Shape::stl;
-    const Box<3> bounds = spec.stl->bounds();
-    for (int k = 0; k < 3; ++k) {
-      spec.region.min[k] = spec.stl_offset[k] + spec.stl_scale * bounds.min[k];
-      spec.region.max[k] = spec.stl_offset[k] + spec.stl_scale * bounds.max[k];
-    }
-    spec.outer = spec.region;
-  }
-}
-
+// A block's spec, its kind first checked against the model's.
 template <int D>
 BlockSpec<D> read_block(const CaseFile& case_file, std::size_t index, double default_spacing,
                         std::span<const std::string_view> kinds) {
-  BlockSpec<D> spec;
-  spec.key = "particles[" + std::to_string(index) + "]";
-  auto field = [&](const char* name) { return spec.key + "." + name; };
-  spec.kind = case_file.string(field("kind"));
+  const std::string key = "particles[" + std::to_string(index) + "].kind";
+  const std::string kind = case_file.string(key);
   bool known_kind = false;
   std::string allowed;
   for (std::string_view k : kinds) {
-    known_kind = known_kind || k == spec.kind;
+    known_kind = known_kind || k == kind;
     allowed += (allowed.empty() ? "\"" : ", \"") + std::string(k) + "\"";
   }
   if (!known_kind) {
-    case_file.fail(field("kind"),
-                   "unknown particle kind \"" + spec.kind + "\" (this model has " + allowed + ")");
+    case_file.fail(key, "unknown particle kind \"" + kind + "\" (this model has " + allowed + ")");
   }
-  const std::string lattice_name = case_file.string_or(field("lattice"), "square");
-  if (lattice_name == "hexagonal") {
-    spec.lattice = Lattice::hexagonal;
-    if (D == 1) {
-      case_file.fail(field("lattice"), "a 1D block is a row of particles: use \"square\"");
-    }
-  } else if (lattice_name == "vogel") {
-    spec.lattice = Lattice::vogel;
-    if (D != 2) {
-      case_file.fail(field("lattice"), "the \"vogel\" spiral lattice is two-dimensional");
-    }
-  } else if (lattice_name == "bcc") {
-    spec.lattice = Lattice::body_centred_cubic;
-    if (D != 3) {
-      case_file.fail(field("lattice"), "the \"bcc\" lattice is three-dimensional");
-    }
-  } else if (lattice_name != "square") {
-    case_file.fail(field("lattice"),
-                   "expected \"square\", \"hexagonal\", \"bcc\" or \"vogel\", got \"" +
-                       lattice_name + "\"");
-  }
-  spec.spacing = default_spacing;
-  if (case_file.has(field("spacing"))) {
-    spec.spacing = case_file.positive_number(field("spacing"));
-  }
-  const std::string shape = case_file.string_or(field("shape"), "box");
-  read_exclusions(case_file, spec.key, index, spec.exclude);
-  if (shape == "annulus") {
-    read_annulus<D>(case_file, spec);
-    return spec;
-  }
-  if (shape == "points") {
-    read_points<D>(case_file, spec);
-    return spec;
-  }
-  if (shape == "stl") {
-    read_stl<D>(case_file, spec);
-    return spec;
-  }
-  if (shape == "outline") {
-    if constexpr (D != 2) {
-      case_file.fail(field("shape"), "an outline is two-dimensional");
-    } else {
-      read_outline(case_file, spec);
-    }
-    return spec;
-  }
-  spec.region = Box<D>{to_vec<D>(case_file.numbers(field("min"), D)),
-                       to_vec<D>(case_file.numbers(field("max"), D))};
-  for (int k = 0; k < D; ++k) {
-    if (!(spec.region.min[k] < spec.region.max[k])) {
-      case_file.fail(field("max"), "must be greater than min on every axis");
-    }
-  }
-  spec.outer = spec.region;
-  if (shape == "container") {
-    spec.shape = Shape::container;
-    if (spec.lattice == Lattice::vogel || spec.lattice == Lattice::body_centred_cubic) {
-      case_file.fail(field("lattice"), "a container's walls are on a square or hexagonal lattice");
-    }
-    const std::int64_t layers = case_file.integer_or(field("layers"), 1);
-    if (layers < 1 || layers > 1000) {
-      case_file.fail(field("layers"),
-                     "must be between 1 and 1000 (got " + std::to_string(layers) + ")");
-    }
-    const bool open_top = case_file.boolean_or(field("open_top"), false);
-    const Vec<D> period = lattice_periods<D>(spec.lattice, spec.spacing);
-    for (int k = 0; k < D; ++k) {
-      spec.outer.min[k] -= static_cast<double>(layers) * period[k];
-      if (!(open_top && k == D - 1)) {
-        spec.outer.max[k] += static_cast<double>(layers) * period[k];
-      }
-    }
-  } else if (shape != "box") {
-    case_file.fail(field("shape"),
-                   "expected \"box\", \"container\", \"annulus\", \"outline\", \"points\" or "
-                   "\"stl\", got \"" +
-                       shape + "\"");
-  } else if (case_file.has(field("layers")) || case_file.has(field("open_top"))) {
-    case_file.fail(case_file.has(field("layers")) ? field("layers") : field("open_top"),
-                   "only a \"container\" block has layers and open_top");
-  }
-  return spec;
+  return read_block_spec<D>(case_file, index, default_spacing);
 }
 
 // An upper estimate of a block's particles from volumes, without generating any: the lattice
@@ -620,7 +295,7 @@ BlockSpec<D> read_block(const CaseFile& case_file, std::size_t index, double def
 // hollow of a container.
 template <int D>
 double estimated_particles(const BlockSpec<D>& spec) {
-  if (spec.shape == Shape::points) {
+  if (spec.shape == BlockShape::points) {
     return static_cast<double>(spec.points.size());
   }
   Box<D> padded = spec.outer;
@@ -629,7 +304,7 @@ double estimated_particles(const BlockSpec<D>& spec) {
     padded.max[k] += period[k];
   }
   if constexpr (D == 2) {
-    if (spec.shape == Shape::annulus) {
+    if (spec.shape == BlockShape::annulus) {
       const AnnulusSpec& a = spec.annulus;
       const double width = a.outer_radius - a.inner_radius;
       return std::numbers::pi * (a.outer_radius + a.inner_radius + 2.0 * spec.spacing) *
@@ -637,7 +312,7 @@ double estimated_particles(const BlockSpec<D>& spec) {
              1.0;
     }
   }
-  const double hollow = spec.shape == Shape::container ? volume_of<D>(spec.region) : 0.0;
+  const double hollow = spec.shape == BlockShape::container ? volume_of<D>(spec.region) : 0.0;
   return (volume_of<D>(padded) - hollow) / lattice_cell_volume<D>(spec.lattice, spec.spacing);
 }
 
@@ -679,7 +354,7 @@ ParticleBlock<D> generate_block(const CaseFile& case_file, const BlockSpec<D>& s
   block.kind = spec.kind;
   block.spacing = spec.spacing;
   block.volume_per_particle = lattice_cell_volume<D>(spec.lattice, spec.spacing);
-  if (spec.shape == Shape::box) {
+  if (spec.shape == BlockShape::box) {
     // A box reaching more than half a spacing past the domain has particles outside it (or
     // none); refused before generating, since a Vogel spiral's work grows with the box's
     // diagonal squared, not its area (a fuzzed box 100 m by 4e-12 m took minutes).
@@ -692,18 +367,18 @@ ParticleBlock<D> generate_block(const CaseFile& case_file, const BlockSpec<D>& s
       }
     }
     block.positions = lattice_points<D>(spec.lattice, spec.region, spec.spacing);
-  } else if (spec.shape == Shape::outline) {
+  } else if (spec.shape == BlockShape::outline) {
     if constexpr (D == 2) {
       block.positions =
           square_lattice_points(*spec.outline, spec.lattice_origin, spec.spacing, spec.shell);
     }
-  } else if (spec.shape == Shape::points) {
+  } else if (spec.shape == BlockShape::points) {
     block.positions = spec.points;
     block.volume_per_particle = spec.particle_volume;
-  } else if (spec.shape == Shape::stl) {
+  } else if (spec.shape == BlockShape::stl) {
     block.positions = lattice_points<D>(spec.lattice, spec.region, spec.spacing);
     std::erase_if(block.positions, [&](const Vec<D>& p) { return !inside_stl<D>(spec, p); });
-  } else if (spec.shape == Shape::annulus) {
+  } else if (spec.shape == BlockShape::annulus) {
     if constexpr (D == 2) {
       block.positions = ring_points(spec.annulus, spec.spacing);
       block.volume_per_particle = std::numbers::pi *
@@ -759,24 +434,14 @@ read_particle_blocks(const CaseFile& case_file, double default_spacing, const Bo
   for (std::size_t b = 0; b < specs.size(); ++b) {
     for (const std::size_t other : specs[b].exclude) {
       const BlockSpec<D>& region = specs[other];
-      if (region.shape != Shape::outline && region.shape != Shape::box &&
-          region.shape != Shape::stl) {
+      if (region.shape != BlockShape::outline && region.shape != BlockShape::box &&
+          region.shape != BlockShape::stl) {
         case_file.fail(specs[b].key + ".exclude_blocks",
                        region.key + " is not a box, an outline or an stl block: only their "
                                     "regions exclude");
       }
-      auto inside = [&](const Vec<D>& p) {
-        if constexpr (D == 2) {
-          if (region.shape == Shape::outline) {
-            return region.outline->contains(p);
-          }
-        }
-        if (region.shape == Shape::stl) {
-          return inside_stl<D>(region, p);
-        }
-        return strictly_inside<D>(region.region, p);
-      };
-      std::erase_if(blocks[b].positions, inside);
+      std::erase_if(blocks[b].positions,
+                    [&](const Vec<D>& p) { return in_excluding_region<D>(region, p); });
     }
     if (blocks[b].positions.empty()) {
       case_file.fail(specs[b].key, "the block holds no particles once exclude_blocks are left out");
@@ -826,6 +491,9 @@ template std::vector<PointBlockValues<3>> point_blocks_with_values<3>(const Case
 template std::vector<Vec<1>> lattice_points<1>(Lattice, const Box<1>&, double);
 template std::vector<Vec<2>> lattice_points<2>(Lattice, const Box<2>&, double);
 template std::vector<Vec<3>> lattice_points<3>(Lattice, const Box<3>&, double);
+template Vec<1> lattice_periods<1>(Lattice, double);
+template Vec<2> lattice_periods<2>(Lattice, double);
+template Vec<3> lattice_periods<3>(Lattice, double);
 template double lattice_cell_volume<1>(Lattice, double);
 template double lattice_cell_volume<2>(Lattice, double);
 template double lattice_cell_volume<3>(Lattice, double);

@@ -60,6 +60,10 @@ struct ParticleBlock {
 template <int D>
 std::vector<Vec<D>> lattice_points(Lattice lattice, const Box<D>& region, double spacing);
 
+// The lattice's period along each axis (the distance between its rows and layers).
+template <int D>
+Vec<D> lattice_periods(Lattice lattice, double spacing);
+
 // Volume (2D: area) of one lattice cell, the volume each particle represents.
 template <int D>
 double lattice_cell_volume(Lattice lattice, double spacing);

@@ -1,6 +1,7 @@
 #include "core/run_loop.hpp"
 
 #include <cstdio>
+#include <iterator>
 
 namespace revsph {
 
@@ -17,6 +18,16 @@ std::string energy_note(const EnergyLog* log) {
 }
 } // namespace
 
+std::vector<EnergyTerm> diagnostics_row(Simulation& simulation, const RunHooks& hooks) {
+  std::vector<EnergyTerm> row = simulation.diagnostics();
+  if (hooks.extra_diagnostics) {
+    std::vector<EnergyTerm> extra = hooks.extra_diagnostics(simulation);
+    row.insert(row.end(), std::make_move_iterator(extra.begin()),
+               std::make_move_iterator(extra.end()));
+  }
+  return row;
+}
+
 void run_steps(Simulation& simulation, std::int64_t steps, const RunHooks& hooks) {
   std::string flow;
   auto note = [&] {
@@ -32,7 +43,7 @@ void run_steps(Simulation& simulation, std::int64_t steps, const RunHooks& hooks
     }
     if (hooks.diagnostics_log != nullptr) {
       hooks.diagnostics_log->record(simulation.steps_taken(), simulation.time(),
-                                    simulation.diagnostics());
+                                    diagnostics_row(simulation, hooks));
     }
   };
   if (hooks.energy_log != nullptr && hooks.energy_log->empty()) {

@@ -9,6 +9,8 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace revsph {
 
@@ -22,7 +24,14 @@ struct RunHooks {
   // What the progress line adds about the flow (max |v| / c, say), taken at each energy record
   // (collective in a distributed run, like the record).
   std::function<std::string(Simulation&)> flow_note;
+  // Columns of the run's own after the model's diagnostics in each diagnostics.csv row (the
+  // moving particles inside walls, say), taken at each energy record (collective too). The same
+  // columns every record: a file's header is its first row's.
+  std::function<std::vector<EnergyTerm>(Simulation&)> extra_diagnostics;
 };
+
+// The row of diagnostics.csv now: the model's diagnostics, then the hooks' extra ones.
+std::vector<EnergyTerm> diagnostics_row(Simulation& simulation, const RunHooks& hooks);
 
 // Takes `steps` steps. SimulationFault propagates to the caller.
 void run_steps(Simulation& simulation, std::int64_t steps, const RunHooks& hooks);

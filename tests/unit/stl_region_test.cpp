@@ -1,11 +1,13 @@
 // A closed STL surface as a region (core/stl_region.hpp, CGAL): the inside of a cube written
 // here, whichever way its triangles face; a surface with a face missing, a file that is no STL
 // and a missing file are one-line errors; the obstacle script's box and cylinder read back closed
-// with their volumes; an "stl" block fills the inside on the lattice and excludes it from another.
+// with their volumes; an "stl" block fills the inside on the lattice and excludes it from another,
+// and as a wall its inside is its region (core/wall_regions.hpp).
 
 #include "core/case_file.hpp"
 #include "core/particle_blocks.hpp"
 #include "core/stl_region.hpp"
+#include "core/wall_regions.hpp"
 
 #include <gtest/gtest.h>
 
@@ -141,6 +143,21 @@ TEST_F(StlRegionTest, AnStlBlockFillsTheInsideAndExcludesItFromAnother) {
     EXPECT_LT(p[0], 1.5);
   }
   EXPECT_EQ(blocks[1].positions.size(), 20u * 10u * 10u - 125u);
+}
+
+TEST_F(StlRegionTest, AnStlWallBlocksRegionIsItsInside) {
+  write("cube.stl", cube_stl());
+  const CaseFile case_file = CaseFile::parse(
+      "[[particles]]\nkind = \"wall\"\nshape = \"stl\"\nfile = \"cube.stl\"\nscale = 0.5\n"
+      "offset = [1.0, 0.0, 0.0]\n",
+      (folder_ / "case.toml").string());
+  const std::vector<std::string> fixed{"wall"};
+  const auto regions = read_wall_regions<3>(case_file, 0.1, fixed);
+  ASSERT_EQ(regions.size(), 1u);
+  EXPECT_TRUE(regions[0].contains({1.25, 0.25, 0.25}));
+  EXPECT_TRUE(regions[0].contains({1.01, 0.49, 0.01}));
+  EXPECT_FALSE(regions[0].contains({0.75, 0.25, 0.25}));
+  EXPECT_FALSE(regions[0].contains({1.25, 0.25, 0.55}));
 }
 
 } // namespace

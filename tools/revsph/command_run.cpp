@@ -8,12 +8,15 @@
 #include "core/threads.hpp"
 #include "tools/revsph/commands.hpp"
 #include "tools/revsph/interruption.hpp"
+#include "tools/revsph/particle_checks.hpp"
 #include "tools/revsph/run_output.hpp"
 #include "tools/revsph/state_speeds.hpp"
 #include "tools/revsph/summary.hpp"
 #include "verify/state_hash.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -164,18 +167,44 @@ int run_command(const RunOptions& options) {
       moving_sets.push_back(set.particle_set);
     }
   }
+  const ParticleChecks checks(loaded.case_file, simulation.info());
   hooks.flow_note = [&](Simulation& s) {
-    const double largest =
-        distributed::max_over_processes(largest_own_speed(s.borrow_state(), moving_sets));
-    char note[64];
+    const StateSnapshot state = s.borrow_state();
+    const double largest = distributed::max_over_processes(largest_own_speed(state, moving_sets));
+    const double closest = checks.smallest_distance_over_dr(state);
+    char note[96];
     const double c = s.info().sound_speed;
-    if (c > 0.0) {
-      std::snprintf(note, sizeof note, "max|v|/c = %.3g", largest / c);
-    } else {
-      std::snprintf(note, sizeof note, "max|v| = %.3g m/s", largest);
+    const int length = c > 0.0 ? std::snprintf(note, sizeof note, "max|v|/c = %.3g", largest / c)
+                               : std::snprintf(note, sizeof note, "max|v| = %.3g m/s", largest);
+    if (std::isfinite(closest) && length > 0) {
+      std::snprintf(note + length, sizeof note - static_cast<std::size_t>(length),
+                    "  min r/dr = %.2g", closest);
     }
     return std::string(note);
   };
+  // Moving particles that passed into a wall: a column of diagnostics.csv and a warning each time
+  // their number exceeds the largest so far (in a continued run, the largest of the rows kept).
+  std::uint64_t most_in_walls = 0;
+  for (const EnergyTerm& maximum : diagnostics.maxima()) {
+    if (maximum.name == particles_in_walls) {
+      most_in_walls = static_cast<std::uint64_t>(std::max(0.0, maximum.value.value()));
+    }
+  }
+  if (checks.has_wall_regions()) {
+    hooks.extra_diagnostics = [&](Simulation& s) {
+      const WallCount count = checks.count_in_walls(s.borrow_state());
+      if (count.total > most_in_walls) {
+        most_in_walls = count.total;
+        if (distributed::process_rank() == 0) {
+          progress.announce(checks.wall_warning(s.steps_taken(), s.time(), count));
+        }
+      }
+      // An exact sum over the processes (count_in_walls): the run's number on every process.
+      return std::vector<EnergyTerm>{
+          {particles_in_walls, RunTotal::same_on_every_process(static_cast<double>(count.total)),
+           "1"}};
+    };
+  }
   const StopOnSignals signals;
   hooks.after_step = [&](Simulation& s, std::int64_t) {
     if (output.snapshot_due(s, s.steps_taken())) {
@@ -238,7 +267,8 @@ int run_command(const RunOptions& options) {
     try {
       // The rows of this last step, as at the end of any run (the signal came before them).
       energy.record(simulation.steps_taken(), simulation.time(), simulation.energy());
-      diagnostics.record(simulation.steps_taken(), simulation.time(), simulation.diagnostics());
+      diagnostics.record(simulation.steps_taken(), simulation.time(),
+                         diagnostics_row(simulation, hooks));
       output.write_snapshot(simulation);
     } catch (const SnapshotError& error) {
       summary.failure = *summary.failure + "; its last snapshot failed: " + error.what();
