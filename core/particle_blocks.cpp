@@ -216,6 +216,9 @@ template <int D>
 PeriodicBox read_periodic_box(const CaseFile& case_file) {
   PeriodicBox period;
   const std::string axes = case_file.string_or("domain.periodic", "");
+  if (axes.empty()) {
+    return period;
+  }
   for (const char axis : axes) {
     const int k = axis - 'x';
     if (k < 0 || k >= D) {
