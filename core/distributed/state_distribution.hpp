@@ -160,12 +160,17 @@ public:
       refresh_ghosts(state, /*every_field=*/false);
       return false;
     }
-    const bool rebalance = work_drifted_apart(state) || cut_on_time;
+    // One process (a periodic domain's images, nothing else) owns everything: no cut, no
+    // migration, only new image lists.
+    const bool alone = process_count() == 1;
+    const bool rebalance = !alone && (work_drifted_apart(state) || cut_on_time);
     if (rebalance) {
       cut_regions(state, /*whole_state_held=*/false, static_cast<float>(cost_factor_));
       ++rebalances_;
     }
-    migrate(state);
+    if (!alone) {
+      migrate(state);
+    }
     remake_ghost_lists(state);
     refresh_ghosts(state, /*every_field=*/true);
     if (rebalance) {
@@ -376,7 +381,7 @@ private:
   // to cut the regions again. Keeps this process's cost factor for the weights of the next cut.
   bool measured_times_uneven() {
     constexpr std::uint64_t refreshes_between_readings = 64;
-    if (time_balance_ == TimeBalance::off ||
+    if (time_balance_ == TimeBalance::off || process_count() == 1 ||
         ++refreshes_since_reading_ < refreshes_between_readings) {
       return false;
     }
