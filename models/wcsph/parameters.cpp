@@ -27,7 +27,7 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   // The viscosity's update is explicit: over a time tau it multiplies the approach speed of the
   // stiffest pattern by 1 - lambda tau, lambda ~ alpha c / h (h = support / 2). Measured on
   // stirred dam breaks and columns (tests/system/wcsph_viscosity_test.cpp), kinetic energy first
-  // grows from alpha c tau / h = 1.5 in 1D, 2 in 2D, 3 in 3D: 1 is refused beyond.
+  // grows at alpha c tau / h = 1.5 in 1D, 2 in 2D, 3 in 3D: a case above 1 is refused.
   if (p.artificial_viscosity > 0.0) {
     const double tau = p.splitting == Splitting::strang ? 0.5 * p.dt : p.dt;
     const double stiffness =
