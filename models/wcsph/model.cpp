@@ -21,7 +21,8 @@ Model<D, Arith>::Model(Parameters<D> parameters, SimulationInfo info, State<D, R
                  parameters_.cell_size_factor,
              state_.wall.position.count(), "wall"),
       density_sums_(SummedQuantity{"density", parameters_.density_scale}),
-      acceleration_sums_(components_of<D>("acceleration", parameters_.acceleration_scale)) {
+      acceleration_sums_(components_of<D>("acceleration", parameters_.acceleration_scale)),
+      viscosity_sums_(components_of<D>("velocity", parameters_.velocity_scale)) {
   if (parameters_.anti_clump_pressure > 0.0) {
     anti_clump_kernel_.emplace(0.5 * parameters_.dr); // App. A: support dr / 2
   }
@@ -165,17 +166,24 @@ std::array<std::vector<double>, D> Model<D, Arith>::real_velocity() const {
 }
 
 template <int D, class Arith>
-std::array<std::vector<double>, D> Model<D, Arith>::filtered_velocity() {
-  update_derived();
+void Model<D, Arith>::gather_slot_velocity(
+    std::array<std::vector<double>, D>& slot_velocity) const {
   const std::span<const std::uint32_t> fluid = layout_.slots_of(state_.fluid);
-  const std::array<std::vector<double>, D> velocity = real_velocity();
-  std::array<std::vector<double>, D> slot_velocity;
+  const auto& scale = state_.fluid.velocity.info().scale;
   for (int k = 0; k < D; ++k) {
     slot_velocity[k].assign(layout_.slot_count(), 0.0);
     for (std::size_t i = 0; i < fluid.size(); ++i) {
-      slot_velocity[k][fluid[i]] = velocity[k][i];
+      slot_velocity[k][fluid[i]] = Arith::real(state_.fluid.velocity.at(k, i), scale);
     }
   }
+}
+
+template <int D, class Arith>
+std::array<std::vector<double>, D> Model<D, Arith>::filtered_velocity() {
+  update_derived();
+  const std::span<const std::uint32_t> fluid = layout_.slots_of(state_.fluid);
+  std::array<std::vector<double>, D> slot_velocity;
+  gather_slot_velocity(slot_velocity);
   // The weights V w are about 1 in sum; the weighted velocities share the velocity's scale.
   std::array<SummedQuantity, D + 1> quantities{};
   quantities.fill({"filtered_velocity", parameters_.velocity_scale});
@@ -287,10 +295,16 @@ EnergyBudget Model<D, Arith>::energy() {
   auto total = [&](EnergyOf what) { return exact_sum_of(particle_energy(what)); };
   ExactDoubleSum compressional = total(EnergyOf::compressional);
   compressional.add(total(EnergyOf::dummy_compressional));
-  return EnergyBudget{{{"kinetic", global_total(total(EnergyOf::kinetic))},
+  EnergyBudget budget{{{"kinetic", global_total(total(EnergyOf::kinetic))},
                        {"gravitational", global_total(total(EnergyOf::gravitational))},
                        {"compressional", global_total(compressional)},
                        {"wall", global_total(total(EnergyOf::wall))}}};
+  // Only where the viscosity acts (or acted before a restart): the reversible cases' energy.csv
+  // keeps its columns.
+  if (viscosity_on() || dissipated_ != 0.0) {
+    budget.terms.push_back({"dissipated", dissipated_});
+  }
+  return budget;
 }
 
 template <int D, class Arith>

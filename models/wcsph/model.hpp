@@ -2,13 +2,16 @@
 // Symplectic WCSPH in fixed point (FixPA) or floating point (FloPA), paper 1 §2–4 and App. A:
 // velocity Verlet kick(dt/2) drift(dt) kick(dt/2), the acceleration a deterministic function of
 // the positions (closed-form density eq. 5, Tait pressure eq. 2, pressure force eq. 1b, gravity,
-// conservative wall eq. 7, dummy-particle walls and the anti-clump force of App. A). The active
-// Shepard filter of App. A is the one irreversible option (a step hook, step_hooks()).
+// conservative wall eq. 7, dummy-particle walls and the anti-clump force of App. A). Two options
+// are irreversible: the active Shepard filter of App. A (a step hook, step_hooks()) and Monaghan's
+// artificial viscosity (an operator the core places by step.splitting, irreversible_operators();
+// viscosity_term.hpp), whose energy is counted as dissipated.
 
 #include "core/fixed_targets.hpp"
 #include "core/model_api.hpp"
 #include "models/wcsph/parameters.hpp"
 #include "models/wcsph/state.hpp"
+#include "models/wcsph/viscosity_term.hpp"
 
 #include <array>
 #include <optional>
@@ -38,8 +41,17 @@ public:
   void initialise_density_constants(std::span<const double> target_density);
 
   static std::span<const Substep<Model>> palindrome();
+  // Monaghan's artificial viscosity over tau, where physics.artificial_viscosity > 0
+  // (artificial_viscosity.cpp).
+  static std::span<const IrreversibleOperator<Model>> irreversible_operators();
 
+  // Kinetic, gravitational, compressional and wall energy; with the artificial viscosity on, the
+  // kinetic energy it took ("dissipated"), so that the total stays constant.
   EnergyBudget energy();
+  // The account, carried by snapshots into restarted runs (core/simulation.hpp).
+  static auto energy_accounts() {
+    return std::array{EnergyAccount<Model>{"dissipated", &Model::dissipated_}};
+  }
   // Density, pressure, acceleration, each energy term per fluid particle (and the filtered
   // velocity with a Shepard filter); density and pressure of the dummy particles.
   void derived_views(const ViewSink& sink);
@@ -57,6 +69,8 @@ public:
   // Sub-steps (paper 1 §4, steps 1–3).
   void kick(double dt);
   void drift(double dt);
+  // The irreversible operator: v += tau dv/dt of the artificial viscosity (viscosity_term.hpp).
+  void apply_artificial_viscosity(double tau);
 
   // Derived quantities at the current positions, fluid particles first, then dummies.
   std::vector<double> density();
@@ -64,6 +78,10 @@ public:
 
 private:
   static std::string shepard_filter_acts(const Model& model);
+  static std::string artificial_viscosity_acts(const Model& model);
+  bool viscosity_on() const { return parameters_.artificial_viscosity > 0.0; }
+  // The fluid's velocities by slot, zero in the dummies' slots (after update_derived).
+  void gather_slot_velocity(std::array<std::vector<double>, D>& slot_velocity) const;
   enum class EnergyOf { kinetic, gravitational, compressional, wall, dummy_compressional };
   std::size_t fluid_count() const { return state_.fluid.position.count(); }
   double fluid_position(int axis, std::size_t a) const {
@@ -110,6 +128,11 @@ private:
   std::vector<double> inverse_density_squared_;       // slots, with the anti-clump force
   // For acceleration(), filled on demand.
   std::array<std::vector<double>, D> acceleration_; // fluid, canonical order
+  // The artificial viscosity: its inputs by slot, its velocity increments, and the kinetic
+  // energy it took since the run began (J, or J/m in 2D).
+  std::array<std::vector<double>, D> slot_velocity_;
+  PairSums<Arith, D> viscosity_sums_;
+  RunTotal dissipated_;
 };
 
 extern template class Model<1, FixedArithmetic>;

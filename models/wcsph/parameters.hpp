@@ -6,6 +6,7 @@
 #include "core/case_keys.hpp"
 #include "core/geometry.hpp"
 #include "core/particle_discretisation.hpp"
+#include "core/step_splitting.hpp"
 #include "fixedpoint/scale.hpp"
 #include "models/wcsph/equations.hpp"
 #include "models/wcsph/initial_state_correction.hpp"
@@ -26,6 +27,10 @@ struct Parameters : ParticleDiscretisation { // dr, support_radius, dt, cell_siz
   WallSettings wall;
   // [physics] anti_clump_pressure: p0 of the anti-clump force of App. A (0: off)
   double anti_clump_pressure = 0.0;
+  // [physics] artificial_viscosity: alpha of Monaghan's artificial viscosity (viscosity_term.hpp;
+  // irreversible, 0: off) and [step] splitting: where it goes (core/step_splitting.hpp)
+  double artificial_viscosity = 0.0;
+  Splitting splitting = Splitting::strang;
   // [filter]: the Shepard filter of App. A, every shepard_every steps; active replaces the
   // velocities (dissipative, irreversible), passive only reports the filtered field
   std::int64_t shepard_every = 0;

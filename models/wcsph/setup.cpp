@@ -216,6 +216,7 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
   attach_periodic_images(state, parameters.support_radius);
   SimulationInfo info = simulation_info(case_file, "wcsph", D, options.arithmetic, parameters.dt);
   info.sound_speed = parameters.sound_speed;
+  info.splitting = parameters.splitting;
   info.setup_report = std::move(setup_report);
   Model<D, Arith> model(parameters, std::move(info), std::move(state));
   model.initialise_density_constants(initial.target_density);

@@ -171,6 +171,26 @@ INSTANTIATE_TEST_SUITE_P(TwoFluid, TwoFluidRestart,
                                                "physics.separate_phase_viscosity=undiluted",
                                                "particles[1].wall_motion=rigid"}));
 
+// The settling dam break (wcsph with its artificial viscosity): the dissipated energy is the
+// model's account; a continued run takes it from the snapshot, with the same state and budget.
+TEST(Restart, WcsphDissipatedAccountGoesOn) {
+  TempDirectory directory("revsph-restart-test");
+  const std::int64_t n = 600;
+  run_whole_then_continue(directory.path(), "dambreak-settling",
+                          {"output.snapshot_every=300", "output.energy_every=300"}, n);
+  const auto uninterrupted_end =
+      revsph::read_checked_snapshot(directory.path() / "whole" / "snapshots" / snapshot_name(n));
+  const auto restarted_end =
+      revsph::read_checked_snapshot(directory.path() / "second" / "snapshots" / snapshot_name(n));
+  EXPECT_EQ(restarted_end.metadata.state_hash, uninterrupted_end.metadata.state_hash);
+  const auto uninterrupted = last_energy_row(directory.path() / "whole" / "energy.csv");
+  const auto restarted = last_energy_row(directory.path() / "second" / "energy.csv");
+  EXPECT_GT(uninterrupted.at("dissipated"), 0.0);
+  for (const char* column : {"dissipated", "kinetic", "total"}) {
+    EXPECT_EQ(restarted.at(column), uninterrupted.at(column)) << column;
+  }
+}
+
 TEST(Restart, OverridesOfTheOriginalRunAreKept) {
   TempDirectory directory("revsph-restart-test");
   RunOptions first;

@@ -104,6 +104,29 @@ TEST(VerifyCli, IrreversibleCaseFailsWhenItsBudgetDoesNotClose) {
       << result;
 }
 
+// The WCSPH model's artificial viscosity is an irreversible term like SHTC's relaxation: verify
+// names it with its placement, says how far the dam break lands, and checks the budget with the
+// dissipated energy in it.
+TEST(VerifyCli, ArtificialViscosityIsReportedIrreversibleWithHowFarItLands) {
+  Sandbox sandbox;
+  const CommandResult result = sandbox.revsph({"verify", "dambreak-settling", "--steps", "200"});
+  ASSERT_EQ(result.exit_status, 0) << result;
+  EXPECT_TRUE(contains(result.out, "irreversible term: artificial_viscosity: Monaghan's artificial "
+                                   "viscosity (alpha = 0.1"))
+      << result;
+  EXPECT_TRUE(contains(result.out, "half steps at the step's ends")) << result;
+  EXPECT_TRUE(contains(line_starting(result, "  fluid.velocity: max "), " m/s, RMS ")) << result;
+  const std::string verdict = line_starting(result, "verdict: ");
+  EXPECT_EQ(verdict.rfind("verdict: not reversible by design: 1 irreversible term "
+                          "(artificial_viscosity: Monaghan's artificial viscosity); returned to "
+                          "within ",
+                          0),
+            0u)
+      << verdict;
+  EXPECT_TRUE(contains(verdict, " m (fluid.position)")) << verdict;
+  EXPECT_TRUE(contains(verdict, "; energy budget closes to ")) << verdict;
+}
+
 TEST(VerifyCli, ReversibleCaseStillReturnsBitwise) {
   Sandbox sandbox;
   const CommandResult result = sandbox.revsph({"verify", "dambreak-small", "--steps", "200"});

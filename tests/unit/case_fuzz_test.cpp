@@ -525,6 +525,12 @@ TEST(CaseFuzz, MutantsOfDambreakSmallPeriodicInX) {
   fuzz(settings);
 }
 
+TEST(CaseFuzz, MutantsOfDambreakSettling) {
+  // The artificial viscosity and step.splitting of the wcsph model (issue 33 item 5); dr 0.1:
+  // 50 fluid and about 60 wall particles.
+  fuzz({"dambreak-settling", "dr = 0.02 ", "dr = 0.1 ", 3000, 14});
+}
+
 TEST(CaseFuzz, MutantsOfExpansionSmall) {
   // The entropic model (fixed point only); dr 0.1: 100 gas and about 130 wall particles.
   fuzz({"expansion-small", "dr = 0.05", "dr = 0.1", 8000, 2, false});
