@@ -4,6 +4,7 @@
 // dissipated, closes the budget to the Verlet step's second-order error; and a dam break with it
 // comes to rest in a hydrostatic pressure field.
 
+#include "core/threads.hpp"
 #include "simulation_fixture.hpp"
 
 #include <gtest/gtest.h>
@@ -21,6 +22,19 @@ namespace {
 using revsph::testing::make_simulation;
 using revsph::testing::named_value;
 using revsph::testing::Override;
+
+// One thread while it lives: the long runs of 300 particles are barrier-bound, and ctest -j2 runs
+// them beside other tests on two cores.
+class OneThread {
+public:
+  OneThread() : previous_(revsph::thread_count()) { revsph::set_thread_count(1); }
+  ~OneThread() { revsph::set_thread_count(previous_); }
+  OneThread(const OneThread&) = delete;
+  OneThread& operator=(const OneThread&) = delete;
+
+private:
+  int previous_;
+};
 
 double kinetic(revsph::Simulation& simulation) {
   return named_value(simulation.energy().terms, "kinetic");
@@ -145,6 +159,7 @@ TEST(WcsphViscosity, ExplicitUpdateTakesEnergyUpToTheRefusedLimit) {
 // four). `revsph run` at courant numbers 0.2, 0.1, 0.05: 1.0e-3, 2.0e-4, 6.4e-5 of the energy
 // moved; without the viscosity 2.8e-3, 7.7e-4, 1.9e-4.
 TEST(WcsphViscosity, EnergyBudgetClosesToTheVerletError) {
+  const OneThread one_thread;
   struct Budget {
     double drift = 0.0;
     double dissipated = 0.0;
@@ -206,6 +221,7 @@ Line least_squares(const revsph::FieldSnapshot& x, const std::vector<double>& pr
 // the density constants of eq. (5) keep marking the particles that started at the free surface or
 // a wall (README).
 TEST(WcsphViscosity, DambreakSettlesToHydrostaticPressure) {
+  const OneThread one_thread;
   const double dr = 0.04, width = 1.0, rho0 = 1000.0, g = 9.8;
   auto simulation = make_simulation("dambreak-settling", {{"discretisation.dr", "0.04"}});
   const double released_before = named_value(simulation->energy().terms, "gravitational");
