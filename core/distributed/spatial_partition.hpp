@@ -7,7 +7,8 @@
 // libtrilinos-zoltan-dev): recursive coordinate bisection, whose regions are boxes, or the
 // Hilbert space-filling curve; Zoltan keeps the cuts, so a point's owner and the processes whose
 // regions a box touches are answered locally. Without MPI there is one process, which owns
-// everything and needs no ghosts (spatial_partition_serial.cpp).
+// everything and needs ghosts only as periodic images of its own particles
+// (spatial_partition_serial.cpp, docs/periodic.md).
 
 #include <cstdint>
 #include <memory>

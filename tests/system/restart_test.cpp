@@ -137,6 +137,23 @@ TEST(Restart, EnergyAccountsOfHeaterAndWallsGoOn) {
   EXPECT_LT(restarted.at("relative_error"), 1e-6);
 }
 
+// After run_whole_then_continue: the continued run ends at step n in the uninterrupted run's
+// state, with energy.csv's last row the same in `columns`, its dissipated energy positive.
+void expect_same_end_and_accounts(const fs::path& folder, std::int64_t n,
+                                  std::initializer_list<const char*> columns) {
+  const auto uninterrupted_end =
+      revsph::read_checked_snapshot(folder / "whole" / "snapshots" / snapshot_name(n));
+  const auto restarted_end =
+      revsph::read_checked_snapshot(folder / "second" / "snapshots" / snapshot_name(n));
+  EXPECT_EQ(restarted_end.metadata.state_hash, uninterrupted_end.metadata.state_hash);
+  const auto uninterrupted = last_energy_row(folder / "whole" / "energy.csv");
+  const auto restarted = last_energy_row(folder / "second" / "energy.csv");
+  EXPECT_GT(uninterrupted.at("dissipated"), 0.0);
+  for (const char* column : columns) {
+    EXPECT_EQ(restarted.at(column), uninterrupted.at(column)) << column;
+  }
+}
+
 // The two-fluid rotating cylinder: the mutual friction's L(t) decays with the time (eq. 9), and
 // the dissipated energy and the walls' work are the model's accounts. A continued run must take
 // the time from the step count and the accounts from the snapshot: same state, same budget. Also
@@ -150,18 +167,8 @@ TEST_P(TwoFluidRestart, FrictionClockAndAccountsGoOn) {
   std::vector<std::string> overrides{"output.snapshot_every=30", "output.energy_every=30"};
   overrides.insert(overrides.end(), GetParam().begin(), GetParam().end());
   run_whole_then_continue(directory.path(), "rotating-cylinder-small", overrides, n);
-
-  const auto uninterrupted_end =
-      revsph::read_checked_snapshot(directory.path() / "whole" / "snapshots" / snapshot_name(n));
-  const auto restarted_end =
-      revsph::read_checked_snapshot(directory.path() / "second" / "snapshots" / snapshot_name(n));
-  EXPECT_EQ(restarted_end.metadata.state_hash, uninterrupted_end.metadata.state_hash);
-  const auto uninterrupted = last_energy_row(directory.path() / "whole" / "energy.csv");
-  const auto restarted = last_energy_row(directory.path() / "second" / "energy.csv");
-  EXPECT_GT(uninterrupted.at("dissipated"), 0.0);
-  for (const char* column : {"dissipated", "wall_work", "force_work", "total"}) {
-    EXPECT_EQ(restarted.at(column), uninterrupted.at(column)) << column;
-  }
+  expect_same_end_and_accounts(directory.path(), n,
+                               {"dissipated", "wall_work", "force_work", "total"});
 }
 
 INSTANTIATE_TEST_SUITE_P(TwoFluid, TwoFluidRestart,
@@ -178,17 +185,7 @@ TEST(Restart, WcsphDissipatedAccountGoesOn) {
   const std::int64_t n = 600;
   run_whole_then_continue(directory.path(), "dambreak-settling",
                           {"output.snapshot_every=300", "output.energy_every=300"}, n);
-  const auto uninterrupted_end =
-      revsph::read_checked_snapshot(directory.path() / "whole" / "snapshots" / snapshot_name(n));
-  const auto restarted_end =
-      revsph::read_checked_snapshot(directory.path() / "second" / "snapshots" / snapshot_name(n));
-  EXPECT_EQ(restarted_end.metadata.state_hash, uninterrupted_end.metadata.state_hash);
-  const auto uninterrupted = last_energy_row(directory.path() / "whole" / "energy.csv");
-  const auto restarted = last_energy_row(directory.path() / "second" / "energy.csv");
-  EXPECT_GT(uninterrupted.at("dissipated"), 0.0);
-  for (const char* column : {"dissipated", "kinetic", "total"}) {
-    EXPECT_EQ(restarted.at(column), uninterrupted.at(column)) << column;
-  }
+  expect_same_end_and_accounts(directory.path(), n, {"dissipated", "kinetic", "total"});
 }
 
 TEST(Restart, OverridesOfTheOriginalRunAreKept) {
