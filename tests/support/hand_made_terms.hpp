@@ -20,8 +20,7 @@ hand_made_terms(std::initializer_list<std::pair<const char*, double>> terms) {
   return made;
 }
 
-inline EnergyBudget
-hand_made_budget(std::initializer_list<std::pair<const char*, double>> terms) {
+inline EnergyBudget hand_made_budget(std::initializer_list<std::pair<const char*, double>> terms) {
   return EnergyBudget{hand_made_terms(terms)};
 }
 

@@ -83,7 +83,8 @@ TEST(MinimalModel, KeepsItsEnergyAsALeapfrogDoes) {
     simulation->advance(100);
     const EnergyBudget budget = simulation->energy();
     largest_error = std::max(largest_error, std::abs(total(budget) - e0));
-    kinetic = std::max(kinetic, budget.terms.front().value.value()); // "kinetic" (minimal_model.hpp)
+    kinetic =
+        std::max(kinetic, budget.terms.front().value.value()); // "kinetic" (minimal_model.hpp)
   }
   ASSERT_GT(kinetic, 0.0) << "the blob must expand";
   EXPECT_LT(largest_error, 1e-2 * kinetic);
