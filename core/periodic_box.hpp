@@ -33,10 +33,11 @@ using ImageShift = std::array<std::int8_t, 3>;
 // particle within `margin` of it across a periodic face finds it: +1 on an axis where it lies
 // within `margin` of the lower face (its image sits beyond the upper one), -1 near the upper
 // face, and every combination of those at edges and corners; the unshifted position is not among
-// them. Needs 2 margin < the period (one image per axis at most): PeriodicBox users check it.
-inline std::vector<ImageShift> image_shifts(const double* point, int dimension,
-                                            const PeriodicBox& box, double margin) {
-  std::vector<ImageShift> shifts{ImageShift{}};
+// them. Written into `shifts` (cleared first; a caller looping over particles keeps its storage).
+// Needs 2 margin < the period (one image per axis at most): PeriodicBox users check it.
+inline void image_shifts(const double* point, int dimension, const PeriodicBox& box, double margin,
+                         std::vector<ImageShift>& shifts) {
+  shifts.clear();
   for (int k = 0; k < dimension; ++k) {
     if (!box.periodic[k]) {
       continue;
@@ -50,14 +51,23 @@ inline std::vector<ImageShift> image_shifts(const double* point, int dimension,
     if (towards == 0) {
       continue;
     }
+    // The shift along k alone, then the images so far shifted along k too.
     const std::size_t before = shifts.size();
+    ImageShift alone{};
+    alone[k] = towards;
+    shifts.push_back(alone);
     for (std::size_t s = 0; s < before; ++s) {
       ImageShift shifted = shifts[s];
       shifted[k] = towards;
       shifts.push_back(shifted);
     }
   }
-  shifts.erase(shifts.begin());
+}
+
+inline std::vector<ImageShift> image_shifts(const double* point, int dimension,
+                                            const PeriodicBox& box, double margin) {
+  std::vector<ImageShift> shifts;
+  image_shifts(point, dimension, box, margin, shifts);
   return shifts;
 }
 

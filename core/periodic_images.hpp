@@ -30,9 +30,11 @@ struct ImageList {
 inline ImageList image_list(const std::vector<double>& points, int dimension,
                             const PeriodicBox& box, double margin) {
   ImageList images;
+  std::vector<ImageShift> shifts;
   const auto d = static_cast<std::size_t>(dimension);
   for (std::size_t i = 0; d > 0 && i < points.size() / d; ++i) {
-    for (const ImageShift& shift : image_shifts(points.data() + i * d, dimension, box, margin)) {
+    image_shifts(points.data() + i * d, dimension, box, margin, shifts);
+    for (const ImageShift& shift : shifts) {
       images.particle.push_back(static_cast<std::uint32_t>(i));
       images.shift.push_back(shift);
     }

@@ -18,6 +18,7 @@ GhostPlan::GhostPlan(const SpatialPartition& partition, std::span<const double> 
   };
   std::vector<std::vector<Destination>> needed_by(count);
   std::vector<int> processes;
+  std::vector<ImageShift> shifts;
   std::vector<double> image(d);
   for (std::size_t i = 0; i < count; ++i) {
     const std::span<const double> point = positions.subspan(i * d, d);
@@ -26,8 +27,8 @@ GhostPlan::GhostPlan(const SpatialPartition& partition, std::span<const double> 
       needed_by[i].push_back({p, ImageShift{}});
     }
     if (period.any()) {
-      for (const ImageShift& shift :
-           image_shifts(point.data(), static_cast<int>(d), period, reach)) {
+      image_shifts(point.data(), static_cast<int>(d), period, reach, shifts);
+      for (const ImageShift& shift : shifts) {
         for (std::size_t k = 0; k < d; ++k) {
           image[k] = point[k] + shift[k] * period.length(static_cast<int>(k));
         }
