@@ -4,8 +4,12 @@
 #include "core/point_file.hpp"
 #include "core/stl_region.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <string_view>
 
 namespace revsph {
 
@@ -250,6 +254,17 @@ BlockSpec<D> read_block_spec(const CaseFile& case_file, std::size_t index, doubl
     spec.spacing = case_file.positive_number(field("spacing"));
   }
   const std::string shape = case_file.string_or(field("shape"), "box");
+  // Checked before the shape's own keys, so a misspelt shape is named rather than a key that
+  // only another shape needs.
+  static constexpr std::array<std::string_view, 6> shapes = {"box",     "container", "annulus",
+                                                             "outline", "points",    "stl"};
+  if (std::find(shapes.begin(), shapes.end(), shape) == shapes.end()) {
+    std::string message = "unknown shape \"" + shape + "\"; expected one of";
+    for (const std::string_view known : shapes) {
+      message += (known == shapes.front() ? " " : ", ") + std::string(known);
+    }
+    case_file.fail(field("shape"), message);
+  }
   read_exclusions(case_file, spec.key, index, spec.exclude);
   if (shape == "annulus") {
     read_annulus<D>(case_file, spec);
@@ -297,11 +312,6 @@ BlockSpec<D> read_block_spec(const CaseFile& case_file, std::size_t index, doubl
         spec.outer.max[k] += static_cast<double>(layers) * period[k];
       }
     }
-  } else if (shape != "box") {
-    case_file.fail(field("shape"),
-                   "expected \"box\", \"container\", \"annulus\", \"outline\", \"points\" or "
-                   "\"stl\", got \"" +
-                       shape + "\"");
   } else if (case_file.has(field("layers")) || case_file.has(field("open_top"))) {
     case_file.fail(case_file.has(field("layers")) ? field("layers") : field("open_top"),
                    "only a \"container\" block has layers and open_top");

@@ -1,10 +1,45 @@
 #include "core/progress.hpp"
 
+#include "core/case_file.hpp"
+
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdlib>
 #include <unistd.h>
 
 namespace revsph {
+
+ProgressSetting progress_setting() {
+  const char* value = std::getenv("REVSPH_PROGRESS");
+  const std::string setting = value == nullptr ? "auto" : value;
+  if (setting == "auto") {
+    return ProgressSetting::automatic;
+  }
+  if (setting == "bar") {
+    return ProgressSetting::bar;
+  }
+  if (setting == "lines") {
+    return ProgressSetting::lines;
+  }
+  throw CaseError("REVSPH_PROGRESS", "", "expected auto, bar or lines, got \"" + setting + "\"");
+}
+
+bool progress_bar_on(std::FILE* stream) {
+  const ProgressSetting setting = progress_setting();
+  if (setting != ProgressSetting::automatic) {
+    return setting == ProgressSetting::bar;
+  }
+  // What Open MPI's mpirun, MPICH's Hydra and PMIx launchers (srun among them) give each process.
+  static constexpr std::array<const char*, 3> launcher_variables = {"OMPI_COMM_WORLD_SIZE",
+                                                                    "PMI_SIZE", "PMIX_RANK"};
+  for (const char* variable : launcher_variables) {
+    if (std::getenv(variable) != nullptr) {
+      return false;
+    }
+  }
+  return isatty(fileno(stream)) != 0;
+}
 
 std::string format_duration(double seconds) {
   if (!std::isfinite(seconds) || seconds < 0) {
@@ -24,7 +59,7 @@ std::string format_duration(double seconds) {
 ProgressReporter::ProgressReporter(std::FILE* stream, std::string label, std::int64_t total_steps,
                                    double dt, double plain_interval_seconds)
     : stream_(stream), label_(std::move(label)), total_steps_(total_steps), dt_(dt),
-      interval_seconds_(plain_interval_seconds), live_(isatty(fileno(stream)) != 0),
+      interval_seconds_(plain_interval_seconds), live_(progress_bar_on(stream)),
       start_(std::chrono::steady_clock::now()), last_print_(start_) {}
 
 void ProgressReporter::update(std::int64_t steps_done, const std::string& note) {

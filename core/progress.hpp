@@ -1,6 +1,7 @@
 #pragma once
 // Progress of a long run: on a terminal a live line (bar, steps/s, simulated time, ETA, a
 // caller-supplied note such as the energy error); otherwise a plain line every few seconds.
+// The environment variable REVSPH_PROGRESS chooses: "bar", "lines" or "auto" (unset: auto).
 
 #include <chrono>
 #include <cstdint>
@@ -8,6 +9,17 @@
 #include <string>
 
 namespace revsph {
+
+enum class ProgressSetting { automatic, bar, lines };
+
+// REVSPH_PROGRESS; throws CaseError (file "REVSPH_PROGRESS") on another value.
+ProgressSetting progress_setting();
+
+// Whether progress on `stream` is the live bar (carriage returns, escape codes). auto: on a
+// terminal, but not under an MPI launcher, whose processes write to a terminal of their own
+// (Open MPI forwards each one's output through a pseudo-terminal) even when the launcher's
+// output goes to a file.
+bool progress_bar_on(std::FILE* stream);
 
 class ProgressReporter {
 public:

@@ -2,6 +2,7 @@
 
 #include "core/atomic_file.hpp"
 
+#include <regex>
 #include <sstream>
 #include <stdexcept>
 
@@ -115,6 +116,20 @@ std::string xdmf_document(int dimension, const std::vector<XdmfSnapshot>& snapsh
 void write_xdmf(const std::filesystem::path& path, int dimension,
                 const std::vector<XdmfSnapshot>& snapshots) {
   write_file_atomically(path, xdmf_document(dimension, snapshots));
+}
+
+std::vector<std::string> xdmf_snapshot_files(const std::string& document) {
+  // data_item's text: FILE:/particles/SET/FIELD.
+  static const std::regex item(">([^<>]+\\.h5):/particles/");
+  std::vector<std::string> files;
+  for (auto match = std::sregex_iterator(document.begin(), document.end(), item);
+       match != std::sregex_iterator(); ++match) {
+    const std::string file = (*match)[1].str();
+    if (files.empty() || files.back() != file) { // one snapshot's items are together
+      files.push_back(file);
+    }
+  }
+  return files;
 }
 
 } // namespace revsph

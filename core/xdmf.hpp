@@ -34,4 +34,8 @@ std::string xdmf_document(int dimension, const std::vector<XdmfSnapshot>& snapsh
 void write_xdmf(const std::filesystem::path& path, int dimension,
                 const std::vector<XdmfSnapshot>& snapshots);
 
+// The snapshot files an XDMF document of xdmf_document lists, each once, in the order of its
+// series, as written there (relative to the XDMF file): the series every reader of a run uses.
+std::vector<std::string> xdmf_snapshot_files(const std::string& document);
+
 } // namespace revsph

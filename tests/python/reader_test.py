@@ -7,7 +7,8 @@
     energy and diagnostics tables with their units;
   - a chain of three segments continued in one folder reads as the same arrays, snapshot by
     snapshot, as the run that never stopped;
-  - a branch (run --from OTHER/... --out THIS) is stitched to the run it continues.
+  - a branch (run --from OTHER/... --out THIS) is stitched to the run it continues;
+  - a folder that holds no run is refused (NotARunError), not read as an empty run.
 
 Usage: reader_test.py PREFIX   (the install prefix: PREFIX/bin/revsph and the package)
 """
@@ -121,6 +122,17 @@ class Reader(unittest.TestCase):
         self.assertTrue(branch.snapshot_paths()[0].startswith(self.folder("whole")))
         self.assertEqual(branch.snapshots()[-1].state_hash,
                          revsph.open_run(self.folder("whole")).snapshots()[-1].state_hash)
+
+    def test_a_folder_that_is_not_a_run_is_refused(self):
+        empty = self.folder("empty")
+        os.makedirs(empty, exist_ok=True)
+        # An empty folder, a run's own snapshots/ (a likely slip) and a folder of other files.
+        for folder in [empty, os.path.join(self.folder("whole"), "snapshots"), PREFIX]:
+            with self.assertRaises(revsph.NotARunError) as raised:
+                revsph.open_run(folder)
+            self.assertIn(f"{folder}: not a run folder (no energy.csv)", str(raised.exception))
+        with self.assertRaises(FileNotFoundError):
+            revsph.open_run(self.folder("no_such_folder"))
 
 
 if __name__ == "__main__":

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -50,6 +51,33 @@ TEST(EntropyCliOut, OutputDirectoryThatCannotBeCreatedIsBadInput) {
   EXPECT_EQ(result.exit_status, 2) << result;
   EXPECT_NE(result.err.find("--out: "), std::string::npos) << result;
   EXPECT_NE(result.err.find(" is not a directory"), std::string::npos) << result;
+}
+
+// The snapshots analysed are the run's series, the one run.xdmf and the Python reader use: a run
+// stopped off its output cadence and continued in its folder keeps that stop's snapshot on disk,
+// out of the series.
+TEST(EntropyCliSeries, LeavesOutAnEarlierSegmentsOffCadenceEnd) {
+  Sandbox sandbox;
+  const fs::path run = sandbox.work() / "run";
+  const CommandResult first = sandbox.revsph({"run", "dambreak-small", "--steps", "7", "--set",
+                                              "output.snapshot_every=5", "--out", run.string()});
+  ASSERT_EQ(first.exit_status, 0) << first;
+  const fs::path stop = run / "snapshots" / "step_000000007.h5";
+  const CommandResult second = sandbox.revsph({"run", "--from", stop.string(), "--steps", "5"});
+  ASSERT_EQ(second.exit_status, 0) << second;
+  ASSERT_TRUE(fs::is_regular_file(stop));
+  const CommandResult result = sandbox.revsph({"entropy", run.string(), "--no-plots"});
+  ASSERT_EQ(result.exit_status, 0) << result;
+  std::ifstream csv(run / "analysis" / "entropy.csv");
+  std::string line;
+  std::getline(csv, line); // header
+  std::vector<std::string> steps;
+  while (std::getline(csv, line)) {
+    const std::size_t phase_end = line.find(',');
+    steps.push_back(line.substr(phase_end + 1, line.find(',', phase_end + 1) - phase_end - 1));
+  }
+  // Every 5 steps and the last, step 12.
+  EXPECT_EQ(steps, (std::vector<std::string>{"0", "5", "10", "12"})) << result;
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, EntropyCli,

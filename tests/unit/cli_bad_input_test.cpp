@@ -172,6 +172,18 @@ const std::vector<Defect>& defects() {
        "shape = \"box\"\nlattice = \"hexagnal\"",
        "particles[0].lattice",
        {"expected \"square\", \"hexagonal\", \"bcc\" or \"vogel\", got \"hexagnal\""}},
+      // A misspelt shape is named itself, not through a key that only a box needs.
+      {"misspelt_shape",
+       "shape = \"box\"\nlattice = \"square\"\nmin = [0.0, 0.0]\nmax = [1.0, 2.0]",
+       "shape = \"sphere\"\nlattice = \"square\"\ncentre = [0.5, 1.0]\nradius = 0.5",
+       "particles[0].shape",
+       {"unknown shape \"sphere\"; expected one of box, container, annulus, outline, points, "
+        "stl"}},
+      {"capitalised_shape",
+       "shape = \"box\"\nlattice = \"square\"\nmin = [0.0, 0.0]\nmax = [1.0, 2.0]",
+       "shape = \"Points\"\nfile = \"water.csv\"",
+       "particles[0].shape",
+       {"unknown shape \"Points\""}},
       {"min_with_three_components",
        "min = [-0.1, -0.1]",
        "min = [-0.1, -0.1, -0.1]",

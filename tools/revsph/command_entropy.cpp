@@ -2,6 +2,7 @@
 // §6 and Appendix B; the formulas are in tools/analysis/boltzmann_entropy.hpp).
 
 #include "core/atomic_file.hpp"
+#include "core/xdmf.hpp"
 #include "tools/analysis/boltzmann_entropy.hpp"
 #include "tools/revsph/commands.hpp"
 #include "tools/revsph/run_output.hpp"
@@ -18,6 +19,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <limits>
 
 #ifndef REVSPH_SOURCE_DIR
@@ -34,7 +36,7 @@ constexpr const char* python_interpreter = "/usr/bin/python3";
 
 struct Phase {
   std::string name; // forward, backward or run
-  fs::path snapshots;
+  fs::path folder;  // holds snapshots/ and (written by revsph) run.xdmf
 };
 
 // What the analysis needs of one snapshot; the speeds are kept so that every histogram can use
@@ -61,9 +63,21 @@ struct EntropyRow {
   double entropy_equilibrium_energy = 0.0;
 };
 
-std::vector<fs::path> snapshot_files(const fs::path& directory) {
+// The run's snapshot series: the one its run.xdmf lists (the output cadence and the last, an
+// earlier segment's off-cadence end left out: run_output.hpp), as the Python reader reads it;
+// without run.xdmf, every snapshot file of the folder.
+std::vector<fs::path> snapshot_files(const fs::path& run_folder) {
   std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(directory)) {
+  std::ifstream xdmf(run_folder / "run.xdmf");
+  if (xdmf) {
+    const std::string document{std::istreambuf_iterator<char>(xdmf),
+                               std::istreambuf_iterator<char>()};
+    for (const std::string& file : xdmf_snapshot_files(document)) {
+      files.push_back(run_folder / file);
+    }
+    return files;
+  }
+  for (const auto& entry : fs::directory_iterator(run_folder / "snapshots")) {
     const std::string name = entry.path().filename().string();
     if (entry.is_regular_file() && name.starts_with("step_") && name.ends_with(".h5")) {
       files.push_back(entry.path());
@@ -228,10 +242,9 @@ int entropy_command(const EntropyOptions& options) {
   std::vector<Phase> phases;
   if (fs::is_directory(run_dir / "forward" / "snapshots") &&
       fs::is_directory(run_dir / "backward" / "snapshots")) {
-    phases = {{"forward", run_dir / "forward" / "snapshots"},
-              {"backward", run_dir / "backward" / "snapshots"}};
+    phases = {{"forward", run_dir / "forward"}, {"backward", run_dir / "backward"}};
   } else if (fs::is_directory(run_dir / "snapshots")) {
-    phases = {{"run", run_dir / "snapshots"}};
+    phases = {{"run", run_dir}};
   } else {
     print_error(run_dir.string() + ": neither a run directory (snapshots/) nor a verify --out "
                                    "directory (forward/snapshots/, backward/snapshots/)");
@@ -249,9 +262,9 @@ int entropy_command(const EntropyOptions& options) {
   std::vector<SnapshotSpeeds> snapshots;
   std::string particle_set = options.particle_set;
   for (const Phase& phase : phases) {
-    const std::vector<fs::path> files = snapshot_files(phase.snapshots);
+    const std::vector<fs::path> files = snapshot_files(phase.folder);
     if (files.empty()) {
-      print_error(phase.snapshots.string() + ": no snapshots (step_*.h5)");
+      print_error((phase.folder / "snapshots").string() + ": no snapshots (step_*.h5)");
       return bad_input;
     }
     if (particle_set.empty()) {

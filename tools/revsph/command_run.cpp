@@ -2,6 +2,7 @@
 #include "core/distributed/processes.hpp"
 #include "core/energy_log.hpp"
 #include "core/logged_rows.hpp"
+#include "core/memory.hpp"
 #include "core/openmp_waiting.hpp"
 #include "core/progress.hpp"
 #include "core/run_loop.hpp"
@@ -290,6 +291,9 @@ int run_command(const RunOptions& options) {
   }
   summary.diagnostics_maxima = diagnostics.maxima();
   summary.diagnostics_minima = diagnostics.minima();
+  summary.peak_memory_bytes = peak_resident_bytes();
+  summary.peak_memory_bytes_max_over_processes = static_cast<std::size_t>(
+      distributed::max_over_processes(static_cast<double>(summary.peak_memory_bytes)));
   if (distributed::process_rank() == 0) {
     write_summary(output.summary_json(), simulation, summary, energy);
   }

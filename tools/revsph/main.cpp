@@ -2,6 +2,7 @@
 
 #include "core/build_info.hpp"
 #include "core/distributed/processes.hpp"
+#include "core/progress.hpp"
 #include "core/snapshot_file.hpp"
 #include "fixedpoint/conversion.hpp"
 #include "tools/revsph/commands.hpp"
@@ -251,6 +252,9 @@ int main(int argc, char** argv) {
   }
   try {
     revsph::fixedpoint::require_round_to_nearest();
+    if (*run_app || *verify_app || *hash_app) {
+      revsph::progress_setting(); // bad input, said before anything is written
+    }
     if (*run_app) {
       record_given(run_handles, run.case_options);
       return run_command(run);

@@ -2,7 +2,6 @@
 
 #include "core/atomic_file.hpp"
 #include "core/build_info.hpp"
-#include "core/memory.hpp"
 #include "core/openmp_waiting.hpp"
 
 #include <nlohmann/json.hpp>
@@ -75,7 +74,8 @@ void write_summary(const std::filesystem::path& path, Simulation& simulation, co
   // How the threads waited at barriers (core/openmp_waiting.hpp: chosen from the machine's
   // load at start), which a benchmark's throughput depends on.
   summary["openmp_waiting"] = openmp_waiting_description();
-  summary["peak_memory_bytes"] = peak_resident_bytes();
+  summary["peak_memory_bytes"] = run.peak_memory_bytes;
+  summary["peak_memory_bytes_max_over_processes"] = run.peak_memory_bytes_max_over_processes;
   summary["initial_hash"] = run.initial_hash;
   summary["final_hash"] = run.final_hash;
   summary["snapshots_written"] = run.snapshots_written;

@@ -30,6 +30,9 @@ struct RunSummary {
   std::vector<EnergyTerm> diagnostics_minima; // and the smallest
   std::optional<std::string> last_snapshot;
   std::optional<DistributionSummary> distribution; // after the steps (not after a fault)
+  // Peak resident memory at the end, of process 0 and the largest over the processes.
+  std::size_t peak_memory_bytes = 0;
+  std::size_t peak_memory_bytes_max_over_processes = 0;
 };
 
 // Written atomically (temporary file, then rename).

@@ -14,6 +14,6 @@ units. Installed with the project (`cmake --install`); needs numpy and h5py.
 docs/python.md says more.
 """
 
-from .run import Field, Run, Snapshot, Table, open_run, read_table
+from .run import Field, NotARunError, Run, Snapshot, Table, open_run, read_table
 
-__all__ = ["Field", "Run", "Snapshot", "Table", "open_run", "read_table"]
+__all__ = ["Field", "NotARunError", "Run", "Snapshot", "Table", "open_run", "read_table"]

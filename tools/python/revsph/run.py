@@ -94,6 +94,10 @@ class Table:
         return len(self.step)
 
 
+class NotARunError(ValueError):
+    """open_run was given a folder that `revsph run` did not write."""
+
+
 class Run:
     """A run folder written by `revsph run`: summary.json, energy.csv, diagnostics.csv and the
     snapshots. A run continued from another folder's snapshot (`revsph run --from OTHER/...
@@ -103,6 +107,13 @@ class Run:
         self.folder = os.fspath(folder)
         if not os.path.isdir(self.folder):
             raise FileNotFoundError(f"{self.folder}: no such run folder")
+        # Every run writes energy.csv at its start (the mark revsph's own --from looks for).
+        if not os.path.isfile(os.path.join(self.folder, "energy.csv")):
+            forward = os.path.join(self.folder, "forward", "energy.csv")
+            hint = ("; a verify --out folder holds two runs: open its forward/ and backward/"
+                    if os.path.isfile(forward) else
+                    "; open a folder that `revsph run --out FOLDER` wrote")
+            raise NotARunError(f"{self.folder}: not a run folder (no energy.csv){hint}")
         path = os.path.join(self.folder, "summary.json")
         self.summary = None
         if os.path.isfile(path):
@@ -175,7 +186,8 @@ class Run:
 
 
 def open_run(folder):
-    """The run in `folder` (what `revsph run --out FOLDER` wrote)."""
+    """The run in `folder` (what `revsph run --out FOLDER` wrote); NotARunError if it holds
+    none, FileNotFoundError if it does not exist."""
     return Run(folder)
 
 
