@@ -159,7 +159,7 @@ void read_points(const CaseFile& case_file, BlockSpec<D>& spec) {
   }
   spec.shape = BlockShape::points;
   try {
-    spec.points = read_point_file<D>(block_file_path(case_file, spec.key)).positions;
+    spec.points = read_point_file<D>(block_input_file(case_file, spec.key)).positions;
   } catch (const PointFileError& error) {
     case_file.fail(field("file"), error.what());
   }
@@ -199,7 +199,7 @@ void read_stl(const CaseFile& case_file, BlockSpec<D>& spec) {
                                        "lattice");
     }
     try {
-      spec.stl = std::make_shared<const StlRegion>(block_file_path(case_file, spec.key).string());
+      spec.stl = std::make_shared<const StlRegion>(block_input_file(case_file, spec.key));
     } catch (const StlError& error) {
       case_file.fail(field("file"), error.what());
     }

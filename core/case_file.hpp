@@ -10,6 +10,8 @@
 // default than declared, is a std::logic_error — a bug in the reader or its table, not in the
 // case. That makes the tables (core/case_keys.hpp) a complete reference of what is read.
 
+#include "core/case_inputs.hpp"
+
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -68,6 +70,9 @@ public:
   // so that a restart rebuilds exactly the same case.
   const std::string& text() const { return text_; }
   const std::vector<std::string>& overrides() const { return overrides_; }
+  // The files the case reads besides itself, as bytes (core/case_inputs.hpp): a snapshot stores
+  // those used and gives them back to the case it rebuilds.
+  CaseInputs& inputs() const { return inputs_; }
 
   // Keys are dotted paths with array indices: "discretisation.dr", "particles[1].min".
   bool has(std::string_view key) const;
@@ -129,6 +134,7 @@ private:
   std::string source_name_;
   std::string text_;
   std::vector<std::string> overrides_;
+  mutable CaseInputs inputs_;
   std::unique_ptr<toml::table> root_;
   mutable std::set<std::string, std::less<>> read_keys_;
   mutable std::set<std::string, std::less<>> accessed_keys_;

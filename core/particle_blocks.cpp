@@ -454,13 +454,20 @@ read_particle_blocks(const CaseFile& case_file, double default_spacing, const Bo
   return blocks;
 }
 
-std::filesystem::path block_file_path(const CaseFile& case_file, const std::string& block_key) {
-  const std::filesystem::path file = case_file.string(block_key + ".file");
-  if (file.empty()) {
+const InputFile& block_input_file(const CaseFile& case_file, const std::string& block_key) {
+  const std::string name = case_file.string(block_key + ".file");
+  if (name.empty()) {
     case_file.fail(block_key + ".file", "an empty path");
   }
-  return file.is_absolute() ? file
-                            : std::filesystem::path(case_file.source_name()).parent_path() / file;
+  const std::filesystem::path file = name;
+  try {
+    return case_file.inputs().get(
+        name, file.is_absolute()
+                  ? file
+                  : std::filesystem::path(case_file.source_name()).parent_path() / file);
+  } catch (const InputFileError& error) {
+    case_file.fail(block_key + ".file", error.what());
+  }
 }
 
 template <int D>
@@ -474,7 +481,7 @@ std::vector<PointBlockValues<D>> point_blocks_with_values(const CaseFile& case_f
       continue;
     }
     try {
-      PointFile<D> file = read_point_file<D>(block_file_path(case_file, key));
+      PointFile<D> file = read_point_file<D>(block_input_file(case_file, key));
       if (!file.columns.empty()) {
         blocks.push_back({key, std::move(file)});
       }

@@ -104,9 +104,9 @@ std::vector<ParticleBlock<D>>
 read_particle_blocks(const CaseFile& case_file, double default_spacing, const Box<D>& domain,
                      std::span<const std::string_view> kinds, const ParticleBudget& budget);
 
-// The file of block `block_key` ("particles[2]"): its key file, relative to the case file's
-// folder unless absolute.
-std::filesystem::path block_file_path(const CaseFile& case_file, const std::string& block_key);
+// The file of block `block_key` ("particles[2]"): its key file, as the case's inputs hold it (a
+// snapshot's copy) or else read from disk, relative to the case file's folder unless absolute.
+const InputFile& block_input_file(const CaseFile& case_file, const std::string& block_key);
 
 // The "points" blocks of `kind` whose files give field values besides positions, as read: what
 // fill_set gives the set's fields (core/state_fill.hpp).

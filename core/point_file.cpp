@@ -125,17 +125,15 @@ PointColumn column_of_header(const std::string& where, std::string_view cell) {
 }
 
 template <int D>
-PointFile<D> read_csv(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) {
-    throw PointFileError(path.string() + ": cannot be read");
-  }
+PointFile<D> read_csv(const InputFile& input) {
+  const std::string& path = input.path;
+  std::istringstream in(input.bytes);
   std::vector<PointColumn> columns;
   std::string line;
   std::size_t line_number = 0;
   while (std::getline(in, line)) {
     ++line_number;
-    const std::string where = path.string() + " line " + std::to_string(line_number);
+    const std::string where = path + " line " + std::to_string(line_number);
     const std::string text = trimmed(line);
     if (text.empty() || text.front() == '#') {
       continue;
@@ -162,13 +160,10 @@ PointFile<D> read_csv(const std::filesystem::path& path) {
       columns[c].values.push_back(value);
     }
   }
-  if (in.bad()) {
-    throw PointFileError(path.string() + ": read error");
-  }
   if (columns.empty()) {
-    throw PointFileError(path.string() + ": empty (no header row)");
+    throw PointFileError(path + ": empty (no header row)");
   }
-  return assemble<D>(path.string(), std::move(columns));
+  return assemble<D>(path, std::move(columns));
 }
 
 // The columns of one dataset (N) or (N, C), named by core/field_components.hpp.
@@ -213,50 +208,63 @@ void read_dataset_columns(hid_t file, const std::string& path, const std::string
   }
 }
 
+// The file opened from its bytes in memory (HDF5's core driver with a file image).
 template <int D>
-PointFile<D> read_hdf5(const std::filesystem::path& path) {
+PointFile<D> read_hdf5(const InputFile& input) {
   hdf5::silence_library_errors();
   using hdf5::Handle;
-  const Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose,
-                    path.string() + ": cannot be opened as HDF5");
+  const std::string& path = input.path;
+  const Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, path + ": no HDF5 file access list");
+  if (H5Pset_fapl_core(access.id(), 1 << 16, 0) < 0 ||
+      H5Pset_file_image(access.id(), const_cast<char*>(input.bytes.data()), input.bytes.size()) <
+          0) {
+    throw PointFileError(path + ": cannot be opened as HDF5 in memory");
+  }
+  const Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.id()), H5Fclose,
+                    path + ": cannot be opened as HDF5");
   std::vector<std::string> names;
   const auto collect = [](hid_t, const char* name, const H5L_info_t*, void* data) -> herr_t {
     static_cast<std::vector<std::string>*>(data)->emplace_back(name);
     return 0;
   };
   if (H5Literate(file.id(), H5_INDEX_NAME, H5_ITER_INC, nullptr, collect, &names) < 0) {
-    throw PointFileError(path.string() + ": its datasets cannot be listed");
+    throw PointFileError(path + ": its datasets cannot be listed");
   }
   if (names.empty()) {
-    throw PointFileError(path.string() + ": no datasets at the root");
+    throw PointFileError(path + ": no datasets at the root");
   }
   std::vector<PointColumn> columns;
   try {
     for (const std::string& name : names) {
-      read_dataset_columns<D>(file.id(), path.string(), name, columns);
+      read_dataset_columns<D>(file.id(), path, name, columns);
     }
   } catch (const hdf5::Hdf5Error& error) {
     throw PointFileError(error.what());
   }
   for (const PointColumn& column : columns) {
     if (column.values.size() != columns.front().values.size()) {
-      throw PointFileError(path.string() + ": dataset rows differ (" + column.name + " has " +
+      throw PointFileError(path + ": dataset rows differ (" + column.name + " has " +
                            std::to_string(column.values.size()) + ", " + columns.front().name +
                            " " + std::to_string(columns.front().values.size()) + ")");
     }
   }
-  return assemble<D>(path.string(), std::move(columns));
+  return assemble<D>(path, std::move(columns));
 }
 
 } // namespace
 
 template <int D>
+PointFile<D> read_point_file(const InputFile& file) {
+  return has_hdf5_signature(file.bytes) ? read_hdf5<D>(file) : read_csv<D>(file);
+}
+
+template <int D>
 PointFile<D> read_point_file(const std::filesystem::path& path) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) {
-    throw PointFileError(path.string() + ": no such file");
+  try {
+    return read_point_file<D>(read_input_file(path, path.string()));
+  } catch (const InputFileError& error) {
+    throw PointFileError(error.what());
   }
-  return is_hdf5_file(path) ? read_hdf5<D>(path) : read_csv<D>(path);
 }
 
 template <int D>
@@ -284,6 +292,9 @@ void write_point_csv(const std::filesystem::path& path, const PointFile<D>& file
   }
 }
 
+template PointFile<1> read_point_file<1>(const InputFile&);
+template PointFile<2> read_point_file<2>(const InputFile&);
+template PointFile<3> read_point_file<3>(const InputFile&);
 template PointFile<1> read_point_file<1>(const std::filesystem::path&);
 template PointFile<2> read_point_file<2>(const std::filesystem::path&);
 template PointFile<3> read_point_file<3>(const std::filesystem::path&);

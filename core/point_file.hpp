@@ -12,6 +12,7 @@
 // the datasets' components, named by the same rule: a file written with h5py from a snapshot's
 // arrays (edited) reads back as the same columns.
 
+#include "core/case_inputs.hpp"
 #include "core/geometry.hpp"
 
 #include <filesystem>
@@ -39,9 +40,12 @@ struct PointFile {
   std::vector<PointColumn> columns; // every column but the positions, in the file's order
 };
 
-// Reads a CSV or HDF5 point file (told apart by its first bytes, not its name). Every value must
-// be finite; a position column in another unit than m, a missing or repeated column, a row of
-// the wrong length and an empty file are refused.
+// Reads a CSV or HDF5 point file (told apart by its first bytes, not its name) from its bytes.
+// Every value must be finite; a position column in another unit than m, a missing or repeated
+// column, a row of the wrong length and an empty file are refused.
+template <int D>
+PointFile<D> read_point_file(const InputFile& file);
+// The same, of the file at `path`.
 template <int D>
 PointFile<D> read_point_file(const std::filesystem::path& path);
 

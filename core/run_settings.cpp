@@ -22,6 +22,13 @@ std::int64_t RunLength::steps_for(double dt) const {
   return 0;
 }
 
+std::string RunEnd::description() const {
+  const std::string where = length.steps
+                                ? "step " + std::to_string(*length.steps)
+                                : "t = " + format_number(length.t_end.value_or(0.0)) + " s";
+  return where + " from " + origin;
+}
+
 std::string case_name(const CaseFile& case_file) {
   return case_file.string_or("name",
                              std::filesystem::path(case_file.source_name()).stem().string());

@@ -29,6 +29,17 @@ struct RunLength {
   bool given() const { return steps.has_value() || t_end.has_value(); }
 };
 
+// Where a run ends (absolute: a step or a simulated time), what said so ("--steps 3000 given at
+// step 0", "[run] t_end of the case"), and the steps from the current one to it. Snapshots and
+// summary.json keep it, so that a continued run ends where the interrupted one would have.
+struct RunEnd {
+  RunLength length;
+  std::string origin;
+  std::int64_t steps = 0;
+  // "step 3000 from --steps 3000 given at step 0", "t = 0.5 s from --t-end 0.5".
+  std::string description() const;
+};
+
 struct RunSettings {
   std::string name;
   RunLength length;

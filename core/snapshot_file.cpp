@@ -3,6 +3,7 @@
 #include "core/fault.hpp"
 
 #include "core/hdf5_handle.hpp"
+#include "core/sha256.hpp"
 
 #include <array>
 #include <fstream>
@@ -43,6 +44,44 @@ std::vector<std::int64_t> read_raw_matrix(hid_t group, const std::string& name, 
   return component_major;
 }
 
+// The case's input files (/inputs/N), each checked against its recorded SHA-256.
+std::vector<InputFile> read_inputs(hid_t file) {
+  std::vector<InputFile> inputs;
+  if (H5Lexists(file, "inputs", H5P_DEFAULT) <= 0) {
+    return inputs;
+  }
+  const Handle group(H5Gopen2(file, "inputs", H5P_DEFAULT), H5Gclose, "unreadable group /inputs");
+  H5G_info_t info{};
+  if (H5Gget_info(group.id(), &info) < 0) {
+    throw Hdf5Error("unreadable group /inputs");
+  }
+  for (hsize_t i = 0; i < info.nlinks; ++i) {
+    const std::string where = "/inputs/" + std::to_string(i);
+    const Handle dataset(H5Dopen2(group.id(), std::to_string(i).c_str(), H5P_DEFAULT), H5Dclose,
+                         "missing dataset " + where);
+    const Handle space(H5Dget_space(dataset.id()), H5Sclose, "unreadable dataset " + where);
+    hsize_t size = 0;
+    if (H5Sget_simple_extent_ndims(space.id()) != 1 ||
+        H5Sget_simple_extent_dims(space.id(), &size, nullptr) < 0) {
+      throw Hdf5Error("dataset " + where + " is not a list of bytes");
+    }
+    InputFile input;
+    input.bytes.resize(size);
+    if (size > 0 && H5Dread(dataset.id(), H5T_NATIVE_UCHAR, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                            input.bytes.data()) < 0) {
+      throw Hdf5Error("cannot read dataset " + where + " (truncated file?)");
+    }
+    input.name = hdf5::read_string_attribute(dataset.id(), "name");
+    input.path = hdf5::read_string_attribute(dataset.id(), "path");
+    input.sha256 = hdf5::read_string_attribute(dataset.id(), "sha256");
+    if (sha256_hex(input.bytes) != input.sha256) {
+      throw Hdf5Error(where + " (" + input.name + "): its bytes do not have their recorded sha256");
+    }
+    inputs.push_back(std::move(input));
+  }
+  return inputs;
+}
+
 SnapshotMetadata read_metadata(hid_t file) {
   using namespace hdf5;
   SnapshotMetadata m;
@@ -57,6 +96,7 @@ SnapshotMetadata read_metadata(hid_t file) {
   m.case_source = read_string_attribute(file, "case_source");
   m.case_text = read_string_attribute(file, "case_text");
   m.overrides = read_strings_attribute(file, "overrides");
+  m.inputs = read_inputs(file);
   m.step = read_int_attribute(file, "step");
   m.time = read_double_attribute(file, "time");
   m.dt = read_double_attribute(file, "dt");
@@ -69,6 +109,15 @@ SnapshotMetadata read_metadata(hid_t file) {
       m.energy_accounts.push_back({name, RunTotal::same_on_every_process(read_double_attribute(
                                              file, "energy_account:" + name))});
     }
+  }
+  if (has_attribute(file, "run_end_step")) {
+    m.run_end_step = read_int_attribute(file, "run_end_step");
+  }
+  if (has_attribute(file, "run_end_time")) {
+    m.run_end_time = read_double_attribute(file, "run_end_time");
+  }
+  if (has_attribute(file, "run_end_origin")) {
+    m.run_end_origin = read_string_attribute(file, "run_end_origin");
   }
   m.state_hash = read_string_attribute(file, "state_hash");
   if (has_attribute(file, "derived_fields_error")) {
@@ -133,11 +182,15 @@ std::string view_dataset(const std::string& particle_set, const std::string& nam
   return "/particles/" + particle_set + "/" + name;
 }
 
-bool is_hdf5_file(const std::filesystem::path& path) {
+bool has_hdf5_signature(std::string_view bytes) {
   static constexpr char signature[8] = {'\x89', 'H', 'D', 'F', '\r', '\n', '\x1a', '\n'};
+  return bytes.starts_with(std::string_view(signature, 8));
+}
+
+bool is_hdf5_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   char head[8] = {};
-  return in.read(head, 8) && std::equal(head, head + 8, signature);
+  return in.read(head, 8) && has_hdf5_signature(std::string_view(head, 8));
 }
 
 SnapshotClock read_snapshot_clock(const std::filesystem::path& path) {

@@ -6,7 +6,11 @@
 //                            case_name, case_source, case_text, overrides, step, time, dt,
 //                            reference_energy (if known), state_hash, field_order, code_version,
 //                            git_commit, build_type, build_flags; energy_accounts (names) and
-//                            energy_account:NAME (values) if the model keeps energy accounts
+//                            energy_account:NAME (values) if the model keeps energy accounts;
+//                            run_end_step or run_end_time, and run_end_origin, if known
+//   /inputs/N                uint8 (bytes,): the case's input files (point files, STL surfaces)
+//                            byte for byte; attributes name (as the case writes it), path
+//                            (absolute, where it was read) and sha256
 //   /state/SET/VARIABLE      int64 (particles, components) or (particles,): the raw integers
 //                            (IEEE bit patterns for float state); attributes unit, parity,
 //                            components, scale_exponent, evolved, raw_kind
@@ -17,6 +21,7 @@
 // The layout follows each model's state declaration; nothing in here is written per model.
 
 #include "core/arithmetic.hpp"
+#include "core/case_inputs.hpp"
 #include "core/energy.hpp"
 #include "core/particle_view.hpp"
 #include "core/state_snapshot.hpp"
@@ -28,6 +33,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace revsph {
@@ -45,9 +51,11 @@ struct SnapshotMetadata {
   int dimension = 2;
   Arithmetic arithmetic = Arithmetic::fixed;
   std::string case_name;
-  std::string case_source;            // file name or built-in name it came from
+  std::string case_source;            // absolute file name, or built-in name, it came from
   std::string case_text;              // the case file as written
   std::vector<std::string> overrides; // --set key=value applied to it
+  // The files the case reads besides itself, byte for byte: a restart reads these, not the disk.
+  std::vector<InputFile> inputs;
   std::int64_t step = 0;
   double time = 0.0;
   double dt = 0.0;
@@ -57,6 +65,12 @@ struct SnapshotMetadata {
   // Energy exchanged with the outside so far (a heater's input, say; HasEnergyAccounts in
   // core/simulation.hpp), which the energy budget of a restarted run goes on from.
   std::vector<EnergyTerm> energy_accounts;
+  // Where the run that wrote it ends, absolute (a step or a simulated time), and what said so
+  // ("--steps 3000 given at step 0"): a run continued from it goes on to there. Unknown in files
+  // written before snapshots kept it.
+  std::optional<std::int64_t> run_end_step;
+  std::optional<double> run_end_time;
+  std::string run_end_origin;
   std::string state_hash;
   // Why the derived fields (density, forces, …) are missing, if they could not be computed for
   // this state (a restored state whose forces are not finite); empty normally.
@@ -103,6 +117,8 @@ SnapshotClock read_snapshot_clock(const std::filesystem::path& path);
 
 // True if the file starts with the HDF5 signature.
 bool is_hdf5_file(const std::filesystem::path& path);
+// True if these bytes (a file's, from its start) do.
+bool has_hdf5_signature(std::string_view bytes);
 
 // The physical-view dataset path of a set's variable: "/particles/SET/NAME".
 std::string view_dataset(const std::string& particle_set, const std::string& name);

@@ -123,6 +123,15 @@ void write_metadata(hid_t file, const SnapshotMetadata& m, const StateSnapshot& 
     }
     write_strings_attribute(file, "energy_accounts", names);
   }
+  if (m.run_end_step) {
+    write_int_attribute(file, "run_end_step", *m.run_end_step);
+  }
+  if (m.run_end_time) {
+    write_double_attribute(file, "run_end_time", *m.run_end_time);
+  }
+  if (!m.run_end_origin.empty()) {
+    write_string_attribute(file, "run_end_origin", m.run_end_origin);
+  }
   write_string_attribute(file, "state_hash", m.state_hash);
   if (!m.derived_fields_error.empty()) {
     write_string_attribute(file, "derived_fields_error", m.derived_fields_error);
@@ -136,6 +145,32 @@ void write_metadata(hid_t file, const SnapshotMetadata& m, const StateSnapshot& 
   write_string_attribute(file, "git_commit", m.git_commit);
   write_string_attribute(file, "build_type", m.build_type);
   write_string_attribute(file, "build_flags", m.build_flags);
+}
+
+// The case's input files, byte for byte, so that a restart needs none of them on disk.
+void write_inputs(hid_t file, const std::vector<InputFile>& inputs) {
+  if (inputs.empty()) {
+    return;
+  }
+  const Handle group(H5Gcreate2(file, "inputs", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                     "cannot create group /inputs");
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const InputFile& input = inputs[i];
+    const std::string name = std::to_string(i);
+    const hsize_t size = input.bytes.size();
+    const Handle space(H5Screate_simple(1, &size, nullptr), H5Sclose,
+                       "cannot describe /inputs/" + name);
+    const Handle dataset(H5Dcreate2(group.id(), name.c_str(), H5T_STD_U8LE, space.id(), H5P_DEFAULT,
+                                    H5P_DEFAULT, H5P_DEFAULT),
+                         H5Dclose, "cannot create /inputs/" + name);
+    if (size > 0 && H5Dwrite(dataset.id(), H5T_NATIVE_UCHAR, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                             input.bytes.data()) < 0) {
+      throw Hdf5Error("cannot write /inputs/" + name + " (" + input.name + ")");
+    }
+    hdf5::write_string_attribute(dataset.id(), "name", input.name);
+    hdf5::write_string_attribute(dataset.id(), "path", input.path);
+    hdf5::write_string_attribute(dataset.id(), "sha256", input.sha256);
+  }
 }
 
 // The order of a view's columns (core/field_components.hpp): x, y, z; a tensor's xx, xy, ...
@@ -208,6 +243,7 @@ std::vector<XdmfParticleSet> write_snapshot(const std::filesystem::path& path,
     writer.file.emplace(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
                         H5Fclose, "cannot create " + temporary.string());
     write_metadata(writer.file->id(), metadata, state);
+    write_inputs(writer.file->id(), metadata.inputs);
   });
   std::vector<XdmfParticleSet> sets;
   auto set_of = [&](const std::string& name, std::size_t count) -> XdmfParticleSet& {

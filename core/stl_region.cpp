@@ -11,8 +11,8 @@
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
-#include <filesystem>
 #include <optional>
+#include <sstream>
 
 namespace revsph {
 
@@ -25,25 +25,23 @@ struct StlRegion::Surface {
   std::optional<CGAL::Side_of_triangle_mesh<Mesh, Kernel>> side;
 };
 
-StlRegion::StlRegion(const std::string& path) : surface_(std::make_unique<Surface>()) {
+StlRegion::StlRegion(const InputFile& file) : surface_(std::make_unique<Surface>()) {
   try {
-    read(path);
+    read(file);
   } catch (const CGAL::Failure_exception& failure) {
     // A precondition of CGAL's repair or orientation that this surface breaks.
-    throw StlError(path + ": CGAL cannot use the surface (" + failure.expression() + ")");
+    throw StlError(file.path + ": CGAL cannot use the surface (" + failure.expression() + ")");
   }
 }
 
-void StlRegion::read(const std::string& path) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) {
-    throw StlError(path + ": no such file");
-  }
+void StlRegion::read(const InputFile& file) {
+  const std::string& path = file.path;
   // An STL file is a soup of triangles, each with its own copies of its corners: merged into
   // one mesh (repair), its faces turned consistently (orient), before anything asks inside.
   std::vector<Kernel::Point_3> points;
   std::vector<std::vector<std::size_t>> triangles;
-  if (!CGAL::IO::read_STL(path, points, triangles) || triangles.empty()) {
+  std::istringstream bytes(file.bytes); // CGAL tells ASCII from binary by the first word
+  if (!CGAL::IO::read_STL(bytes, points, triangles) || triangles.empty()) {
     throw StlError(path + ": not an STL file with triangles");
   }
   PMP::repair_polygon_soup(points, triangles);

@@ -4,6 +4,7 @@
 // block of shape "stl" fills with lattice points (core/particle_blocks.hpp), as DualSPHysics'
 // GenCase fills a closed surface.
 
+#include "core/case_inputs.hpp"
 #include "core/geometry.hpp"
 
 #include <memory>
@@ -22,10 +23,10 @@ public:
 
 class StlRegion {
 public:
-  // Reads and checks the surface: a file that cannot be read as STL, holds no triangles or does
-  // not enclose a volume (not closed once its duplicated vertices are merged) is refused. Its
-  // triangles may face either way: the surface is oriented outward here.
-  explicit StlRegion(const std::string& path);
+  // Reads and checks the surface from the file's bytes: a file that cannot be read as STL, holds
+  // no triangles or does not enclose a volume (not closed once its duplicated vertices are
+  // merged) is refused. Its triangles may face either way: the surface is oriented outward here.
+  explicit StlRegion(const InputFile& file);
   ~StlRegion();
   StlRegion(StlRegion&&) noexcept;
   StlRegion& operator=(StlRegion&&) noexcept;
@@ -39,7 +40,7 @@ public:
   std::vector<Vec<3>> inside(std::span<const Vec<3>> candidates) const;
 
 private:
-  void read(const std::string& path);
+  void read(const InputFile& file);
   struct Surface;
   std::unique_ptr<Surface> surface_;
 };

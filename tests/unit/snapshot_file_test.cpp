@@ -3,6 +3,7 @@
 
 #include "core/fault.hpp"
 #include "core/hdf5_handle.hpp"
+#include "core/sha256.hpp"
 #include "core/snapshot_file.hpp"
 #include "temp_directory.hpp"
 #include "verify/snapshot_check.hpp"
@@ -65,6 +66,11 @@ SnapshotMetadata toy_metadata(const StateSnapshot& state) {
   metadata.time = 0.1 + 0.2;
   metadata.dt = 1e-4;
   metadata.reference_energy = -12.5;
+  const std::string stl("solid\0\xff end", 12); // any bytes, a NUL among them
+  metadata.inputs = {{"tank.stl", "/cases/tank.stl", revsph::sha256_hex(stl), stl},
+                     {"points.csv", "/cases/points.csv", revsph::sha256_hex(""), ""}};
+  metadata.run_end_step = 3000;
+  metadata.run_end_origin = "--steps 3000 given at step 0";
   metadata.state_hash = revsph::state_hash(state);
   metadata.code_version = "1.2.3";
   metadata.git_commit = "abc";
@@ -119,7 +125,29 @@ TEST(SnapshotFile, RoundTripsStateAndMetadataExactly) {
   using M = SnapshotMetadata;
   expect_equal_members(read.metadata, metadata, &M::model, &M::dimension, &M::arithmetic,
                        &M::case_name, &M::case_source, &M::case_text, &M::overrides, &M::step,
-                       &M::time, &M::dt, &M::reference_energy, &M::code_version, &M::build_flags);
+                       &M::time, &M::dt, &M::reference_energy, &M::code_version, &M::build_flags,
+                       &M::inputs, &M::run_end_step, &M::run_end_time, &M::run_end_origin);
+}
+
+// An input file whose bytes changed since they were recorded is refused: a restart would rebuild
+// another case.
+TEST(SnapshotFile, RefusesAnInputFileThatLostItsHash) {
+  TempDirectory directory("revsph-snapshot-test");
+  const StateSnapshot state = toy_state();
+  SnapshotMetadata metadata = toy_metadata(state);
+  metadata.inputs[0].bytes[0] = 'S';
+  const fs::path path = directory.path() / "tampered.h5";
+  revsph::write_snapshot(path, metadata, state, std::vector<revsph::ParticleView>{});
+  try {
+    revsph::read_checked_snapshot(path);
+    FAIL() << "accepted";
+  } catch (const SnapshotError& error) {
+    EXPECT_NE(std::string(error.what())
+                  .find("/inputs/0 (tank.stl): its bytes do not have their "
+                        "recorded sha256"),
+              std::string::npos)
+        << error.what();
+  }
 }
 
 TEST(SnapshotFile, RefusesMissingForeignAndTruncatedFiles) {

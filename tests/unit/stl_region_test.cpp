@@ -65,8 +65,10 @@ protected:
   }
   std::string refusal(const std::string& path) {
     try {
-      StlRegion region(path);
+      StlRegion region(read_input_file(path, path));
     } catch (const StlError& error) {
+      return error.what();
+    } catch (const InputFileError& error) {
       return error.what();
     }
     return "";
@@ -76,7 +78,8 @@ protected:
 
 TEST_F(StlRegionTest, TheInsideOfACubeWhicheverWayItsTrianglesFace) {
   for (const bool inward : {false, true}) {
-    const StlRegion cube(write("cube.stl", cube_stl(inward)));
+    const std::string path = write("cube.stl", cube_stl(inward));
+    const StlRegion cube(read_input_file(path, path));
     EXPECT_EQ(cube.triangle_count(), 12u);
     EXPECT_NEAR(cube.volume(), 1.0, 1e-12);
     EXPECT_EQ(cube.bounds().min, (Vec<3>{0, 0, 0}));
@@ -120,10 +123,10 @@ TEST_F(StlRegionTest, TheObstacleScriptsSurfacesAreClosedWithTheirVolumes) {
                    " --cylinder 0.5 0.5 0.2 0 0.3 --segments 24 --out " + pillar + " > /dev/null")
                       .c_str()),
       0);
-  EXPECT_NEAR(StlRegion(box).volume(), 0.1 * 0.1 * 0.15, 1e-12);
+  EXPECT_NEAR(StlRegion(read_input_file(box, box)).volume(), 0.1 * 0.1 * 0.15, 1e-12);
   // A 24-sided prism: area n r^2 sin(2 pi / n) / 2.
-  EXPECT_NEAR(StlRegion(pillar).volume(), 24 * 0.04 * std::sin(2 * std::numbers::pi / 24) / 2 * 0.3,
-              1e-12);
+  EXPECT_NEAR(StlRegion(read_input_file(pillar, pillar)).volume(),
+              24 * 0.04 * std::sin(2 * std::numbers::pi / 24) / 2 * 0.3, 1e-12);
 }
 
 TEST_F(StlRegionTest, AnStlBlockFillsTheInsideAndExcludesItFromAnother) {

@@ -32,7 +32,7 @@ int hash_command(const HashOptions& options) {
   }
   LoadedCase loaded = load_simulation(case_options);
   Simulation& simulation = *loaded.simulation;
-  const std::int64_t steps = resolve_steps(loaded, options.steps, options.t_end, true);
+  const std::int64_t steps = resolve_run_end(loaded, options.steps, options.t_end, true).steps;
   // Progress on stderr: stdout carries only the hash, for scripts.
   ProgressReporter progress(stderr, "hash", simulation.steps_taken() + steps, simulation.info().dt,
                             loaded.settings.progress_interval);

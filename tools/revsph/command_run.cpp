@@ -66,7 +66,8 @@ int run_command(const RunOptions& options) {
   }
   LoadedCase loaded = load_simulation(options.case_options);
   Simulation& simulation = *loaded.simulation;
-  const std::int64_t steps = resolve_steps(loaded, options.steps, options.t_end, false);
+  const RunEnd end = resolve_run_end(loaded, options.steps, options.t_end, false);
+  const std::int64_t steps = end.steps;
   // A run from a snapshot of a run folder continues that run (docs/restart.md): in its folder
   // unless --out names another, with the rows of its logs up to the snapshot either way.
   std::optional<std::filesystem::path> source_folder;
@@ -81,11 +82,14 @@ int run_command(const RunOptions& options) {
   const bool continues_in_place =
       source_folder && std::filesystem::equivalent(directory, *source_folder, same_error);
   // Every check is done before the first file is written.
-  if (!continues_in_place) {
-    check_on_first_process([&] {
+  check_on_first_process([&] {
+    if (continues_in_place) {
+      RunOutput::check_later_snapshots(directory, simulation.steps_taken(), options.force,
+                                       options.case_options.from_snapshot);
+    } else {
       RunOutput::check_directory(directory, options.force, loaded.case_file.source_name());
-    });
-  }
+    }
+  });
   std::optional<LoggedRows> earlier_energy;
   std::optional<LoggedRows> earlier_diagnostics;
   if (source_folder) {
@@ -109,7 +113,7 @@ int run_command(const RunOptions& options) {
   // first energy record.
   const std::optional<double> reference_energy =
       loaded.from_snapshot ? loaded.from_snapshot->metadata.reference_energy : std::nullopt;
-  RunOutput output(directory, run_metadata(simulation, loaded.case_file, reference_energy),
+  RunOutput output(directory, run_metadata(simulation, loaded.case_file, reference_energy, end),
                    loaded.settings.snapshot_every, loaded.settings.snapshot_interval);
   if (continues_in_place) {
     output.continue_run(simulation);
@@ -153,6 +157,7 @@ int run_command(const RunOptions& options) {
   }
   summary.start_step = simulation.steps_taken();
   summary.steps_requested = steps;
+  summary.end = end;
   summary.threads = thread_count();
   summary.processes = distributed::process_count();
   summary.initial_hash = state_hash(simulation.borrow_state());

@@ -86,7 +86,8 @@ void print_irreversible_terms(const SimulationInfo& info) {
 int verify_command(const VerifyCommandOptions& options) {
   LoadedCase loaded = load_simulation(options.case_options);
   Simulation& simulation = *loaded.simulation;
-  const std::int64_t steps = resolve_steps(loaded, options.steps, options.t_end, true);
+  const RunEnd end = resolve_run_end(loaded, options.steps, options.t_end, true);
+  const std::int64_t steps = end.steps;
   const fs::path out(options.out_dir);
   if (!options.out_dir.empty()) {
     check_on_first_process(
@@ -116,7 +117,8 @@ int verify_command(const VerifyCommandOptions& options) {
     reference_energy = loaded.from_snapshot->metadata.reference_energy;
   }
   if (!out.empty()) {
-    const SnapshotMetadata metadata = run_metadata(simulation, loaded.case_file, reference_energy);
+    const SnapshotMetadata metadata =
+        run_metadata(simulation, loaded.case_file, reference_energy, end);
     output.forward =
         std::make_unique<RunOutput>(out / "forward", metadata, loaded.settings.snapshot_every,
                                     loaded.settings.snapshot_interval);

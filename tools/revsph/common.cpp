@@ -6,9 +6,11 @@
 #include "core/threads.hpp"
 #include "verify/snapshot_check.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <string_view>
 
 namespace revsph::cli {
 
@@ -50,6 +52,11 @@ LoadedCase load_from_snapshot(const CaseOptions& options) {
                         "-point state; --arithmetic " + options.arithmetic + " cannot continue it");
   }
   CaseFile case_file = CaseFile::parse(metadata.case_text, metadata.case_source);
+  // Its input files as the snapshot keeps them: none is read from disk again (older snapshots
+  // keep none, and their case reads them where it names them).
+  for (const InputFile& input : metadata.inputs) {
+    case_file.inputs().give(input);
+  }
   apply_overrides(case_file, metadata.overrides);
   apply_overrides(case_file, options.overrides);
   LoadedCase loaded = build(std::move(case_file), metadata.arithmetic);
@@ -102,26 +109,87 @@ LoadedCase load_simulation(const CaseOptions& options) {
                options.arithmetic == "fixed" ? Arithmetic::fixed : Arithmetic::floating);
 }
 
-std::int64_t resolve_steps(const LoadedCase& loaded, std::optional<std::int64_t> steps,
-                           std::optional<double> t_end, bool required_on_command_line) {
+namespace {
+
+// The value of `key` given with --set (the last), if any.
+std::optional<std::string> overridden(const std::vector<std::string>& overrides,
+                                      std::string_view key) {
+  std::optional<std::string> value;
+  for (const std::string& assignment : overrides) {
+    if (assignment.starts_with(key) && assignment.size() > key.size() &&
+        assignment[key.size()] == '=') {
+      value = assignment.substr(key.size() + 1);
+    }
+  }
+  return value;
+}
+
+// The end the case's [run] gives, with what said so.
+RunEnd case_end(const LoadedCase& loaded, std::string& key) {
+  RunEnd end;
+  end.length = loaded.settings.length;
+  key = end.length.steps ? "run.steps" : "run.t_end";
+  const std::optional<std::string> given = overridden(loaded.case_file.overrides(), key);
+  end.origin = given ? "--set " + key + "=" + *given : "[run] " + key.substr(4) + " of the case";
+  return end;
+}
+
+// The end the snapshot continued from keeps, unless the continuing command sets the run's length
+// (--set run.steps / run.t_end): then the case's.
+std::optional<RunEnd> snapshot_end(const LoadedCase& loaded) {
+  if (!loaded.from_snapshot) {
+    return std::nullopt;
+  }
+  const SnapshotMetadata& from = loaded.from_snapshot->metadata;
+  const std::vector<std::string>& all = loaded.case_file.overrides();
+  const std::vector<std::string> added(
+      all.begin() + static_cast<std::ptrdiff_t>(std::min(from.overrides.size(), all.size())),
+      all.end());
+  if ((!from.run_end_step && !from.run_end_time) || overridden(added, "run.steps") ||
+      overridden(added, "run.t_end")) {
+    return std::nullopt;
+  }
+  RunEnd end;
+  end.length.steps = from.run_end_step;
+  end.length.t_end = from.run_end_time;
+  end.origin = from.run_end_origin;
+  return end;
+}
+
+} // namespace
+
+RunEnd resolve_run_end(const LoadedCase& loaded, std::optional<std::int64_t> steps,
+                       std::optional<double> t_end, bool required_on_command_line) {
   const std::string& source = loaded.case_file.source_name();
   const Simulation& simulation = *loaded.simulation;
+  const std::int64_t now = simulation.steps_taken();
+  RunEnd end;
   if (steps) {
     if (*steps < 0) {
       throw CaseError(source, "--steps", "must be >= 0");
     }
-    return *steps;
+    end.length.steps = now + *steps;
+    end.origin = "--steps " + std::to_string(*steps) + " given at step " + std::to_string(now);
+    end.steps = *steps;
+    return end;
   }
-  RunLength end;
+  std::string key;
   if (t_end) {
     if (!(*t_end > 0.0)) {
       throw CaseError(source, "--t-end", "must be > 0");
     }
-    end.t_end = t_end;
+    end.length.t_end = t_end;
+    end.origin = "--t-end " + format_number(*t_end);
+    key = "--t-end";
   } else if (!required_on_command_line) {
-    end = loaded.settings.length;
+    if (const std::optional<RunEnd> kept = snapshot_end(loaded)) {
+      end = *kept;
+      key = "--from";
+    } else {
+      end = case_end(loaded, key);
+    }
   }
-  if (!end.given()) {
+  if (!end.length.given()) {
     throw CaseError(source, "run",
                     required_on_command_line
                         ? "give the number of steps with --steps N or --t-end T"
@@ -136,18 +204,20 @@ std::int64_t resolve_steps(const LoadedCase& loaded, std::optional<std::int64_t>
         dt);
     throw CaseError(source, "--t-end", reason);
   }
-  if (end.t_end) {
+  RunLength in_steps = end.length;
+  if (in_steps.t_end) {
     // Continued at another dt than its snapshot's, the run's clock is offset from steps * dt
     // (Simulation::time_at); 0 otherwise, exactly.
-    *end.t_end -= simulation.time() - static_cast<double>(simulation.steps_taken()) * dt;
+    *in_steps.t_end -= simulation.time() - static_cast<double>(now) * dt;
   }
-  const std::int64_t remaining = end.steps_for(dt) - simulation.steps_taken();
-  if (remaining < 0) {
-    throw CaseError(source, t_end ? "--t-end" : "run",
-                    "the run is already at step " + std::to_string(simulation.steps_taken()) +
-                        " (t = " + std::to_string(simulation.time()) + " s), past that end");
+  end.steps = in_steps.steps_for(dt) - now;
+  if (end.steps < 0) {
+    throw CaseError(source, key,
+                    "the run is already at step " + std::to_string(now) +
+                        " (t = " + std::to_string(simulation.time()) + " s), past the run's end, " +
+                        end.description());
   }
-  return remaining;
+  return end;
 }
 
 void apply_thread_count(int threads) {

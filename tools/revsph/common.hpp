@@ -51,10 +51,12 @@ struct LoadedCase {
 // Throws CaseError or SnapshotError.
 LoadedCase load_simulation(const CaseOptions& options);
 
-// Steps to take: --steps N (N more), else up to the absolute end given by --t-end T or by the
-// case's [run] steps / t_end. Throws CaseError if nothing says.
-std::int64_t resolve_steps(const LoadedCase& loaded, std::optional<std::int64_t> steps,
-                           std::optional<double> t_end, bool required_on_command_line);
+// Where the run ends and the steps to there: --steps N (N more), else the absolute end given by
+// --t-end T; unless required_on_command_line, else the end of the run a snapshot continues (kept
+// in it, docs/restart.md) or the case's [run] steps / t_end. Throws CaseError if nothing says,
+// or if the run is already past that end (naming it).
+RunEnd resolve_run_end(const LoadedCase& loaded, std::optional<std::int64_t> steps,
+                       std::optional<double> t_end, bool required_on_command_line);
 
 void apply_thread_count(int threads);
 

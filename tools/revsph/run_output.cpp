@@ -117,6 +117,22 @@ std::optional<std::int64_t> step_of_snapshot_name(const fs::path& path) {
 }
 } // namespace
 
+void RunOutput::check_later_snapshots(const fs::path& directory, std::int64_t step, bool force,
+                                      const std::string& snapshot) {
+  std::size_t later = 0;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(directory / "snapshots", error)) {
+    const std::optional<std::int64_t> snapshot_step = step_of_snapshot_name(entry.path());
+    later += snapshot_step && *snapshot_step > step ? 1 : 0;
+  }
+  if (later > 0 && !force) {
+    throw CaseError(snapshot, "--from",
+                    std::to_string(later) + " later snapshot" + (later == 1 ? "" : "s") + " of " +
+                        directory.string() + " (after step " + std::to_string(step) +
+                        ") would be removed: --force replaces them, --out DIR continues elsewhere");
+  }
+}
+
 void RunOutput::continue_run(const Simulation& simulation) {
   const std::int64_t step = simulation.steps_taken();
   std::vector<std::pair<std::int64_t, fs::path>> earlier;
@@ -214,16 +230,28 @@ std::optional<fs::path> RunOutput::last_snapshot() const {
 }
 
 SnapshotMetadata run_metadata(const Simulation& simulation, const CaseFile& case_file,
-                              std::optional<double> reference_energy) {
+                              std::optional<double> reference_energy, const RunEnd& end) {
   const SimulationInfo& info = simulation.info();
   SnapshotMetadata metadata;
   metadata.model = info.model;
   metadata.dimension = info.dimension;
   metadata.arithmetic = info.arithmetic;
   metadata.case_name = info.case_name;
-  metadata.case_source = case_file.source_name();
+  // Absolute, so that a restart from another folder names the same file (a built-in case keeps
+  // its name); the inputs travel in the snapshot, which restarts without any of them.
+  const fs::path source = case_file.source_name();
+  std::error_code error;
+  metadata.case_source =
+      fs::is_regular_file(source, error) ? fs::absolute(source).string() : source.string();
   metadata.case_text = case_file.text();
   metadata.overrides = case_file.overrides();
+  metadata.inputs = case_file.inputs().used();
+  for (InputFile& input : metadata.inputs) {
+    input.path = fs::absolute(input.path, error).string();
+  }
+  metadata.run_end_step = end.length.steps;
+  metadata.run_end_time = end.length.t_end;
+  metadata.run_end_origin = end.origin;
   metadata.dt = info.dt;
   metadata.reference_energy = reference_energy;
   metadata.code_version = build_info::version;

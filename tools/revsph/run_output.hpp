@@ -7,6 +7,7 @@
 //   summary.json          what ran and how it ended, written at the end (also after a failure)
 
 #include "core/case_file.hpp"
+#include "core/run_settings.hpp"
 #include "core/simulation.hpp"
 #include "core/snapshot_file.hpp"
 #include "core/xdmf.hpp"
@@ -25,6 +26,11 @@ public:
   // `force`; with `force`, removes the files a previous run left there. Nothing is created.
   static void check_directory(const std::filesystem::path& directory, bool force,
                               const std::string& case_source);
+  // Refuses (CaseError on key "--from", naming `snapshot`) to continue the run of `directory` from
+  // step `step` when it holds snapshots after that step, which the continuation would replace,
+  // unless `force`. Touches nothing.
+  static void check_later_snapshots(const std::filesystem::path& directory, std::int64_t step,
+                                    bool force, const std::string& snapshot);
   // Refuses (CaseError on key "--out") a directory that cannot be created: its nearest existing
   // ancestor is not a directory, or this process may not write into it. Touches nothing, so the
   // run calls it before the case's set-up.
@@ -40,6 +46,7 @@ public:
   // continuation replaces, are removed (how many: removed_later_snapshots()). The series lists
   // what the run that never stopped writes: the snapshots on the output cadence and the last;
   // an earlier segment's last snapshot off the cadence stays on disk, out of the series.
+  // (check_later_snapshots, before, asks for --force to remove any.)
   void continue_run(const Simulation& simulation);
   std::size_t removed_later_snapshots() const { return removed_later_; }
 
@@ -79,8 +86,9 @@ private:
 // energy.csv, none otherwise.
 std::optional<std::filesystem::path> run_folder_of(const std::filesystem::path& snapshot);
 
-// Snapshot metadata common to every snapshot of a run (everything but step, time and hash).
+// Snapshot metadata common to every snapshot of a run (everything but step, time and hash): the
+// case with its source made absolute and its input files, and where the run ends.
 SnapshotMetadata run_metadata(const Simulation& simulation, const CaseFile& case_file,
-                              std::optional<double> reference_energy);
+                              std::optional<double> reference_energy, const RunEnd& end);
 
 } // namespace revsph::cli

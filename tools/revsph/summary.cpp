@@ -32,6 +32,14 @@ void write_summary(const std::filesystem::path& path, Simulation& simulation, co
     summary["setup"][name] = value;
   }
   summary["steps_requested"] = run.steps_requested;
+  // Absolute, as a continued run goes on to it (docs/restart.md).
+  if (run.end.length.steps) {
+    summary["run_end"]["step"] = *run.end.length.steps;
+  }
+  if (run.end.length.t_end) {
+    summary["run_end"]["t_end"] = *run.end.length.t_end;
+  }
+  summary["run_end"]["from"] = run.end.origin;
   summary["steps"] = simulation.steps_taken() - run.start_step;
   summary["final_step"] = simulation.steps_taken();
   summary["time"] = simulation.time();

@@ -2,6 +2,7 @@
 // summary.json of a run: what ran, how fast, with which build, and the final state hash.
 
 #include "core/energy_log.hpp"
+#include "core/run_settings.hpp"
 #include "core/simulation.hpp"
 #include "tools/revsph/distribution_summary.hpp"
 
@@ -18,6 +19,7 @@ struct RunSummary {
   std::optional<std::string> from_snapshot; // the snapshot a restarted run began from
   std::int64_t start_step = 0;
   std::int64_t steps_requested = 0;
+  RunEnd end;                    // where the run ends, absolute, and what said so
   double wall_seconds = 0.0;     // the whole run: stepping, energy log and snapshot writes
   double stepping_seconds = 0.0; // the time steps alone (no initial or final snapshot)
   int threads = 1;
