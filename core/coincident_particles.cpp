@@ -29,7 +29,7 @@ struct CellHash {
 template <int D>
 void refuse_coincident_particles(const CaseFile& case_file,
                                  const std::vector<ParticleBlock<D>>& blocks) {
-  if (blocks.size() < 2) {
+  if (blocks.empty()) {
     return;
   }
   double spacing = std::numeric_limits<double>::infinity();
@@ -64,9 +64,6 @@ void refuse_coincident_particles(const CaseFile& case_file,
           continue;
         }
         for (const auto& [other_block, other] : found->second) {
-          if (other_block == b) {
-            continue;
-          }
           double distance_squared = 0.0;
           const Vec<D>& y = blocks[other_block].positions[other];
           for (int k = 0; k < D; ++k) {
@@ -78,9 +75,14 @@ void refuse_coincident_particles(const CaseFile& case_file,
             for (int k = 0; k < D; ++k) {
               reason << (k > 0 ? ", " : "") << x[k];
             }
-            reason << ") lies on particle " << other << " of " << blocks[other_block].key
-                   << ": the blocks overlap (move one, or leave the overlap out with "
-                      "exclude_blocks)";
+            if (other_block == b) {
+              reason << ") lies on its particle " << other
+                     << ": two particles at one place (a point file's rows too close)";
+            } else {
+              reason << ") lies on particle " << other << " of " << blocks[other_block].key
+                     << ": the blocks overlap (move one, or leave the overlap out with "
+                        "exclude_blocks)";
+            }
             case_file.fail(blocks[b].key, reason.str());
           }
         }

@@ -1,7 +1,8 @@
 #pragma once
-// Particles of two [[particles]] blocks at the same place: overlapping blocks. Fluid over fluid
-// would double the mass there without a word, fluid over a wall ends in an overflow that does not
-// say why; both are refused at set-up with one line naming the two blocks.
+// Particles at the same place: two [[particles]] blocks overlapping, or two rows of one point
+// file. Fluid over fluid would double the mass there without a word (and a point file's values
+// reach only one of the two), fluid over a wall ends in an overflow that does not say why; all
+// are refused at set-up with one line naming the blocks.
 
 #include "core/case_file.hpp"
 #include "core/particle_blocks.hpp"
@@ -10,8 +11,8 @@
 
 namespace revsph {
 
-// Fails (CaseError on the later block's key) if a particle of one block lies closer than
-// 1e-6 of the smaller block spacing to a particle of another.
+// Fails (CaseError on the later block's key) if a particle lies closer than 1e-6 of the smallest
+// block spacing to another particle, of its own block or another.
 template <int D>
 void refuse_coincident_particles(const CaseFile& case_file,
                                  const std::vector<ParticleBlock<D>>& blocks);

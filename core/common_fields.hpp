@@ -22,7 +22,7 @@ VariableInfo position_field(bool evolved = true) {
 // A particle's mass, fixed at setup (kg per m^(3-D)).
 template <int D>
 VariableInfo mass_field() {
-  return {.name = "mass", .unit = mass_unit<D>, .evolved = false};
+  return {.name = "mass", .unit = mass_unit<D>, .evolved = false, .positive = true};
 }
 
 // Paper 1 eq. (5)'s integration constant C_a, fixed at setup, in the density's scale.

@@ -4,11 +4,14 @@
 #include "core/hdf5_handle.hpp"
 #include "core/snapshot_file.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <numeric>
 #include <set>
 #include <sstream>
 
@@ -85,10 +88,36 @@ ColumnPlan<D> plan_columns(const std::string& where, const std::vector<PointColu
   return plan;
 }
 
+// Two particles at one place would be one particle counted twice (and a file's values could
+// reach only one of them): refused, naming both rows.
 template <int D>
-PointFile<D> assemble(const std::string& where, std::vector<PointColumn> columns) {
+void refuse_repeated_positions(const PointFile<D>& file) {
+  std::vector<std::size_t> order(file.positions.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return file.positions[a] < file.positions[b];
+  });
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const std::size_t first = order[k - 1];
+    const std::size_t second = order[k];
+    if (file.positions[first] == file.positions[second]) {
+      const std::string row = file.lines.empty() ? "row " : "line ";
+      const auto number = [&](std::size_t i) {
+        return std::to_string(file.lines.empty() ? i : file.lines[i]);
+      };
+      throw PointFileError(file.source + " " + row + number(second) + ": the same position as " +
+                           row + number(first) + " (two particles at one place)");
+    }
+  }
+}
+
+template <int D>
+PointFile<D> assemble(const std::string& where, std::vector<PointColumn> columns,
+                      std::vector<std::size_t> lines) {
   const ColumnPlan<D> plan = plan_columns<D>(where, columns);
   PointFile<D> file;
+  file.source = where;
+  file.lines = std::move(lines);
   const std::size_t count = columns.front().values.size();
   if (count == 0) {
     throw PointFileError(where + ": no particles (a header and no rows)");
@@ -103,6 +132,7 @@ PointFile<D> assemble(const std::string& where, std::vector<PointColumn> columns
   for (const std::size_t c : plan.fields) {
     file.columns.push_back(std::move(columns[c]));
   }
+  refuse_repeated_positions<D>(file);
   return file;
 }
 
@@ -129,10 +159,15 @@ PointFile<D> read_csv(const InputFile& input) {
   const std::string& path = input.path;
   std::istringstream in(input.bytes);
   std::vector<PointColumn> columns;
+  std::vector<std::size_t> lines;
   std::string line;
   std::size_t line_number = 0;
   while (std::getline(in, line)) {
     ++line_number;
+    // A byte-order mark, which spreadsheet programs write before UTF-8 text.
+    if (line_number == 1 && line.starts_with("\xEF\xBB\xBF")) {
+      line.erase(0, 3);
+    }
     const std::string where = path + " line " + std::to_string(line_number);
     const std::string text = trimmed(line);
     if (text.empty() || text.front() == '#') {
@@ -159,11 +194,12 @@ PointFile<D> read_csv(const InputFile& input) {
       }
       columns[c].values.push_back(value);
     }
+    lines.push_back(line_number);
   }
   if (columns.empty()) {
     throw PointFileError(path + ": empty (no header row)");
   }
-  return assemble<D>(path, std::move(columns));
+  return assemble<D>(path, std::move(columns), std::move(lines));
 }
 
 // The columns of one dataset (N) or (N, C), named by core/field_components.hpp.
@@ -248,14 +284,24 @@ PointFile<D> read_hdf5(const InputFile& input) {
                            " " + std::to_string(columns.front().values.size()) + ")");
     }
   }
-  return assemble<D>(path, std::move(columns));
+  return assemble<D>(path, std::move(columns), {});
 }
 
 } // namespace
 
 template <int D>
 PointFile<D> read_point_file(const InputFile& file) {
-  return has_hdf5_signature(file.bytes) ? read_hdf5<D>(file) : read_csv<D>(file);
+  if (has_hdf5_signature(file.bytes)) {
+    return read_hdf5<D>(file);
+  }
+  std::string extension = std::filesystem::path(file.path).extension().string();
+  std::ranges::transform(extension, extension.begin(),
+                         [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".h5" || extension == ".hdf5" || extension == ".hdf") {
+    throw PointFileError(file.path + ": named " + extension +
+                         " but not an HDF5 file (it does not start with HDF5's signature)");
+  }
+  return read_csv<D>(file);
 }
 
 template <int D>
@@ -265,6 +311,14 @@ PointFile<D> read_point_file(const std::filesystem::path& path) {
   } catch (const InputFileError& error) {
     throw PointFileError(error.what());
   }
+}
+
+template <int D>
+std::string point_place(const PointFile<D>& file, std::size_t row, std::string_view column) {
+  return file.source +
+         (file.lines.empty() ? " row " + std::to_string(row)
+                             : " line " + std::to_string(file.lines[row])) +
+         ", column " + std::string(column);
 }
 
 template <int D>
@@ -295,6 +349,9 @@ void write_point_csv(const std::filesystem::path& path, const PointFile<D>& file
 template PointFile<1> read_point_file<1>(const InputFile&);
 template PointFile<2> read_point_file<2>(const InputFile&);
 template PointFile<3> read_point_file<3>(const InputFile&);
+template std::string point_place<1>(const PointFile<1>&, std::size_t, std::string_view);
+template std::string point_place<2>(const PointFile<2>&, std::size_t, std::string_view);
+template std::string point_place<3>(const PointFile<3>&, std::size_t, std::string_view);
 template PointFile<1> read_point_file<1>(const std::filesystem::path&);
 template PointFile<2> read_point_file<2>(const std::filesystem::path&);
 template PointFile<3> read_point_file<3>(const std::filesystem::path&);

@@ -43,6 +43,8 @@ struct VariableInfo {
   // A position field's periodic axes ([domain] periodic; core/periodic_box.hpp): the drift wraps
   // it, the distribution gives its particles images across the periodic faces. Set by fill_set.
   PeriodicBox period;
+  // Positive by its nature (a mass, an absolute temperature): a point file's value must be > 0.
+  bool positive = false;
 
   const std::string& quantity() const { return scaled_as.empty() ? name : scaled_as; }
 };

@@ -11,9 +11,12 @@
 #include "core/periodic_wrap.hpp"
 #include "core/state_field.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <initializer_list>
 #include <map>
+#include <set>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -51,12 +54,31 @@ struct FieldFill {
   std::variant<std::span<const Vec<D>>, std::span<const double>, double> values;
 };
 
+// A per-particle value a set-up computes state from rather than a state field (wcsph's initial
+// density, which sets the density constants C_a): a point file's column `name` [unit] replaces
+// values[i] of the particles it places with from_file(its value), which is NaN for a value the
+// model does not admit (`admits` says which it does). Values that share one span are one thing
+// (`what`) given in different ways: a file gives one of them.
+struct SetUpValue {
+  std::string_view name;
+  std::string_view unit;
+  std::span<double> values;
+  std::function<double(double)> from_file;
+  std::string admits; // "above 0 kg/m^3"
+  std::string what;   // "the initial density"
+};
+
 namespace detail {
 
-// Whether fill `a` and fill `b` were given the same per-particle values (a field and its copy,
-// such as superfluid's velocity and velocity_copy): a file's values for one go to both.
+// Whether fill `copy` is the copy of fill `original` (a field NAME_copy filled with the same
+// per-particle values, such as superfluid's velocity_copy): a file's values for the original go
+// to both, and the copy is not given on its own (the copies start equal). Fields that merely
+// start from the same values (superfluid's wall velocity and superflow velocity) stay separate.
 template <int D>
-bool same_values(const FieldFill<D>& a, const FieldFill<D>& b) {
+bool is_copy_of(const FieldFill<D>& copy, const FieldFill<D>& original) {
+  if (copy.field != std::string(original.field) + "_copy") {
+    return false;
+  }
   return std::visit(
       [](const auto& x, const auto& y) {
         using X = std::decay_t<decltype(x)>;
@@ -67,23 +89,58 @@ bool same_values(const FieldFill<D>& a, const FieldFill<D>& b) {
           return false;
         }
       },
-      a.values, b.values);
+      copy.values, original.values);
 }
 
-// The fills a point file may give values to: every one but the positions (its x, y, z columns)
-// and the constants a model computes after filling them with 0 (integration constants).
+// The fills a point file may give values to: every one but the positions (its x, y, z columns),
+// the copies of others and the constants a model computes after filling them with 0
+// (integration constants).
 template <int D, class Field>
-bool file_may_give(const FieldFill<D>& fill, const Field& field) {
+bool file_may_give(const FieldFill<D>& fill, const Field& field,
+                   std::initializer_list<FieldFill<D>> fills) {
   const bool computed_later = std::holds_alternative<double>(fill.values) && !field.info().evolved;
-  return fill.field != "position" && !computed_later;
+  const bool copy = std::ranges::any_of(
+      fills, [&](const FieldFill<D>& original) { return is_copy_of(fill, original); });
+  return fill.field != "position" && !computed_later && !copy;
+}
+
+// Where each of a point file's columns goes: a component of a filled field, or a set-up value.
+template <int D>
+struct ColumnTarget {
+  const FieldFill<D>* fill = nullptr;
+  int component = 0;
+  const SetUpValue* set_up = nullptr;
+};
+
+// A field of several components (a vector, a tensor) that a file gives in part would start with
+// the set-up's value in the others: refused, naming the first missing column.
+template <int D, class Field>
+void require_every_component(const CaseFile& case_file, const std::string& file_key,
+                             const Field& field, const std::set<std::string>& given) {
+  bool some = false;
+  std::string missing;
+  for (int c = 0; c < field.components(); ++c) {
+    const std::string name = component_name(field.info().name, D, field.components(), c);
+    some = some || given.contains(name);
+    if (missing.empty() && !given.contains(name)) {
+      missing = name;
+    }
+  }
+  if (some && !missing.empty()) {
+    case_file.fail(file_key, "no column " + missing + " [" + field.info().unit +
+                                 "]: a file gives " + "every component of " + field.info().name +
+                                 " or none");
+  }
 }
 
 // The values the "points" blocks of this set's kind give its fields (core/point_file.hpp),
 // after the set-up's own: each file particle is found by its position in the set (where the
-// set-up put it), each column is a component of a filled field in that field's unit.
+// set-up put it), each column is a component of a filled field in that field's unit or one of
+// the set-up's values.
 template <class Arith, int D, ParticleSet Set>
 void fill_from_point_files(const CaseFile& case_file, Set& set,
-                           std::initializer_list<FieldFill<D>> fills) {
+                           std::initializer_list<FieldFill<D>> fills,
+                           std::initializer_list<SetUpValue> set_up_values) {
   using Raw = typename Arith::Raw;
   using Field = StateField<Raw>;
   const std::vector<PointBlockValues<D>> blocks =
@@ -104,11 +161,12 @@ void fill_from_point_files(const CaseFile& case_file, Set& set,
   }
   for (const PointBlockValues<D>& block : blocks) {
     const std::string file_key = block.key + ".file";
-    std::vector<std::size_t> rows(block.file.positions.size());
+    const PointFile<D>& file = block.file;
+    std::vector<std::size_t> rows(file.positions.size());
     for (std::size_t p = 0; p < rows.size(); ++p) {
       std::array<Raw, D> key{};
       for (int k = 0; k < D; ++k) {
-        Arith::try_from_real(block.file.positions[p][k], position.info().scale, key[k]);
+        Arith::try_from_real(file.positions[p][k], position.info().scale, key[k]);
       }
       const auto found = row_at.find(key);
       if (found == row_at.end()) {
@@ -119,43 +177,90 @@ void fill_from_point_files(const CaseFile& case_file, Set& set,
       }
       rows[p] = found->second;
     }
-    for (const PointColumn& column : block.file.columns) {
-      const FieldFill<D>* given = nullptr;
-      int component = 0;
+    std::vector<ColumnTarget<D>> targets;
+    std::set<std::string> given;
+    std::map<const double*, std::string> set_up_given; // a set-up value and the column giving it
+    for (const PointColumn& column : file.columns) {
+      ColumnTarget<D> target;
       std::string allowed;
       for (const FieldFill<D>& fill : fills) {
         Field& field = *fields.at(fill.field);
-        if (!file_may_give(fill, field)) {
+        if (!file_may_give(fill, field, fills)) {
           continue;
         }
         for (int c = 0; c < field.components(); ++c) {
           const std::string name = component_name(field.info().name, D, field.components(), c);
           allowed += (allowed.empty() ? "" : ", ") + name + " [" + field.info().unit + "]";
           if (name == column.name) {
-            given = &fill;
-            component = c;
+            target.fill = &fill;
+            target.component = c;
           }
         }
       }
-      if (given == nullptr) {
+      for (const SetUpValue& value : set_up_values) {
+        allowed += (allowed.empty() ? "" : ", ") + std::string(value.name) + " [" +
+                   std::string(value.unit) + "]";
+        if (value.name == column.name) {
+          target.set_up = &value;
+        }
+      }
+      if (target.fill == nullptr && target.set_up == nullptr) {
         case_file.fail(file_key, "column " + column.name + ": no such initial value of set " +
                                      std::string(Set::set.name) + " (it takes " + allowed + ")");
       }
-      const std::string& unit = fields.at(given->field)->info().unit;
+      const std::string unit = target.fill != nullptr ? fields.at(target.fill->field)->info().unit
+                                                      : std::string(target.set_up->unit);
       if (column.unit != unit) {
         case_file.fail(file_key, "column " + column.name + " is in [" + column.unit +
                                      "]; the field is in [" + unit + "]");
       }
+      if (target.set_up != nullptr) {
+        const auto [other, fresh] = set_up_given.emplace(target.set_up->values.data(), column.name);
+        if (!fresh) {
+          case_file.fail(file_key, "columns " + other->second + " and " + column.name +
+                                       " give one thing (" + target.set_up->what +
+                                       "): give one of them");
+        }
+      }
+      given.insert(column.name);
+      targets.push_back(target);
+    }
+    for (const FieldFill<D>& fill : fills) {
+      require_every_component<D>(case_file, file_key, *fields.at(fill.field), given);
+    }
+    for (std::size_t c = 0; c < file.columns.size(); ++c) {
+      const PointColumn& column = file.columns[c];
+      const ColumnTarget<D>& target = targets[c];
+      if (target.set_up != nullptr) {
+        const SetUpValue& value = *target.set_up;
+        for (std::size_t p = 0; p < rows.size(); ++p) {
+          const double converted =
+              value.from_file ? value.from_file(column.values[p]) : column.values[p];
+          if (!std::isfinite(converted)) { // the model does not admit it
+            case_file.fail(file_key, point_place<D>(file, p, column.name) + ": " +
+                                         format_number(column.values[p]) + " [" + column.unit +
+                                         "], but it must be " + value.admits);
+          }
+          value.values[rows[p]] = converted;
+        }
+        continue;
+      }
       for (const FieldFill<D>& fill : fills) {
-        if (&fill != given && !same_values(fill, *given)) {
+        if (&fill != target.fill && !is_copy_of(fill, *target.fill)) {
           continue;
         }
         Field& field = *fields.at(fill.field);
         for (std::size_t p = 0; p < rows.size(); ++p) {
+          if (field.info().positive && !(column.values[p] > 0.0)) {
+            case_file.fail(file_key, point_place<D>(file, p, column.name) + ": " +
+                                         format_number(column.values[p]) + " [" + column.unit +
+                                         "], but a " + field.info().name + " is positive");
+          }
           if (!Arith::try_from_real(column.values[p], field.info().scale,
-                                    field.at(component, rows[p]))) {
-            case_file.fail(file_key, "particle " + std::to_string(p) + "'s " + column.name +
-                                         " does not fit its fixed-point scale (see [fixed_point])");
+                                    field.at(target.component, rows[p]))) {
+            case_file.fail(file_key,
+                           point_place<D>(file, p, column.name) +
+                               ": does not fit its fixed-point scale (see [fixed_point])");
           }
         }
       }
@@ -199,10 +304,11 @@ void set_period(const CaseFile& case_file, StateField<typename Arith::Raw>& posi
 // Fills the named fields of `set`, `count` particles each (values of another length, or a name
 // the set does not declare, are a logic error); its other fields are left as they are. Then the
 // point files of the set's kind give their values (detail::fill_from_point_files): a field in
-// `fills` is a field whose initial value a user may give.
+// `fills` is a field whose initial value a user may give, and so is each of `set_up_values`.
 template <class Arith, int D, ParticleSet Set>
 void fill_set(const CaseFile& case_file, Set& set, std::size_t count,
-              std::initializer_list<FieldFill<D>> fills) {
+              std::initializer_list<FieldFill<D>> fills,
+              std::initializer_list<SetUpValue> set_up_values = {}) {
   using Field = StateField<typename Arith::Raw>;
   for (const FieldFill<D>& fill : fills) {
     Field* target = nullptr;
@@ -246,7 +352,7 @@ void fill_set(const CaseFile& case_file, Set& set, std::size_t count,
       detail::set_period<Arith, D>(case_file, *target);
     }
   }
-  detail::fill_from_point_files<Arith, D>(case_file, set, fills);
+  detail::fill_from_point_files<Arith, D>(case_file, set, fills, set_up_values);
 }
 
 } // namespace revsph

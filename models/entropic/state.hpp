@@ -68,7 +68,7 @@ struct Thermal {
   Field position{position_field<D>(false)};
   Field entropy{{.name = "entropy", .unit = entropy_unit<D>, .evolved = false}};
   Field mass{mass_field<D>()};
-  Field temperature{{.name = "temperature", .unit = "K", .evolved = false}};
+  Field temperature{{.name = "temperature", .unit = "K", .evolved = false, .positive = true}};
   auto fields() { return std::tie(position, entropy, mass, temperature); }
 };
 

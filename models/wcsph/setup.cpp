@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <sstream>
 
 namespace revsph::wcsph {
@@ -65,6 +66,36 @@ InitialFields<D> initial_fields(const Parameters<D>& parameters,
     fields.target_density.push_back(target(p));
   }
   return fields;
+}
+
+// A point file's initial density (kg/m^3) of the carriers it places: their density at t = 0,
+// eq. (5) with C_a chosen so.
+SetUpValue initial_density_from_file(std::span<double> target_density) {
+  return {.name = "density",
+          .unit = "kg/m^3",
+          .values = target_density,
+          .from_file = [](double density) { return density > 0.0 ? density : std::nan(""); },
+          .admits = "above 0 kg/m^3",
+          .what = "the initial density"};
+}
+
+// A point file's initial pressure (Pa): the density at which the Tait equation (2) gives it,
+// defined above -rho0 c^2 / 7 (the pressure at zero density).
+template <int D>
+SetUpValue initial_pressure_from_file(const Parameters<D>& parameters,
+                                      std::span<double> target_density) {
+  const double rho0 = parameters.rest_density;
+  const double c = parameters.sound_speed;
+  const double lowest = -rho0 * c * c / 7.0;
+  return {.name = "pressure",
+          .unit = "Pa",
+          .values = target_density,
+          .from_file =
+              [=](double pressure) {
+                return pressure > lowest ? tait_density(pressure, rho0, c) : std::nan("");
+              },
+          .admits = "above " + format_number(lowest) + " Pa (-rho0 c^2 / 7, zero density)",
+          .what = "the initial density"};
 }
 
 template <int D>
@@ -193,18 +224,28 @@ std::unique_ptr<Simulation> create_in(const CaseFile& case_file, const Simulatio
                      {"velocity", parameters.velocity_scale},
                      {"mass", masses},
                      {"density", parameters.density_scale}});
-  // The density constants start at zero: initialise_density_constants sets them.
+  // The density constants start at zero: initialise_density_constants sets them. A point file
+  // may give a carrier's initial density or its pressure (Taylor-Green's), either one the target
+  // density of the carriers it places.
+  const std::span<double> fluid_target =
+      std::span(initial.target_density).first(fluid_positions.size());
+  const std::span<double> dummy_target =
+      std::span(initial.target_density).subspan(fluid_positions.size());
   fill_set<Arith, D>(case_file, state.fluid, fluid_positions.size(),
                      {{"position", "particles", fluid_positions},
                       {"velocity", "initial.field", initial.velocity},
                       {"mass", "physics.rest_density", fluid_masses},
-                      {"density_constant", "particles", 0.0}});
+                      {"density_constant", "particles", 0.0}},
+                     {initial_density_from_file(fluid_target),
+                      initial_pressure_from_file(parameters, fluid_target)});
   fill_set<Arith, D>(case_file, state.wall, wall_positions.size(),
                      {{"position", "particles", wall_positions}});
   fill_set<Arith, D>(case_file, state.dummy, dummy_positions.size(),
                      {{"position", "particles", dummy_positions},
                       {"mass", "physics.rest_density", dummy_masses},
-                      {"density_constant", "particles", 0.0}});
+                      {"density_constant", "particles", 0.0}},
+                     {initial_density_from_file(dummy_target),
+                      initial_pressure_from_file(parameters, dummy_target)});
   free_storage(fluid_positions);
   free_storage(wall_positions);
   free_storage(dummy_positions);

@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -80,6 +81,56 @@ TEST_F(PointFileTest, BadCsvIsOneLineNamingFileAndLine) {
   EXPECT_EQ(refusal("x [m], y [m]\n0, 0\n"), "");
 }
 
+// A spreadsheet's UTF-8 export starts with a byte-order mark: the header is read after it.
+TEST_F(PointFileTest, ByteOrderMarkBeforeTheHeaderIsSkipped) {
+  EXPECT_EQ(refusal("\xEF\xBB\xBFx [m], y [m]\n0, 0\n"), "");
+  const PointFile<2> file =
+      read_point_file<2>(write("bom.csv", "\xEF\xBB\xBFx [m], y [m], mass [kg/m]\n0, 0, 2\n"));
+  ASSERT_EQ(file.columns.size(), 1u);
+  EXPECT_EQ(file.columns[0].name, "mass");
+}
+
+// Two rows at one position: the second would be a particle the file's values never reach.
+TEST_F(PointFileTest, RepeatedPositionIsRefusedNamingBothLines) {
+  const std::string csv = "# points\nx [m], y [m]\n0, 0\n1, 0.5\n0, 1\n1, 0.5\n";
+  const std::string error = refusal(csv);
+  EXPECT_NE(error.find("bad.csv line 6: the same position as line 4"), std::string::npos) << error;
+  EXPECT_EQ(refusal("x [m], y [m]\n0, 0\n0, 1e-300\n"), ""); // near is not the same
+}
+
+// Rows closer than the set-up's tolerance (1e-6 of the spacing) but not equal: one point block's
+// own particles on each other, refused as two blocks' are (core/coincident_particles.hpp).
+TEST_F(PointFileTest, ParticlesOfOneBlockOnEachOtherAreRefused) {
+  write("near.csv", "x [m], y [m]\n0.5, 0.5\n0.2, 0.2\n0.5, 0.5000000001\n");
+  const CaseFile case_file =
+      CaseFile::parse("[domain]\nmin = [0, 0]\nmax = [1, 1]\n[[particles]]\nkind = \"fluid\"\n"
+                      "shape = \"points\"\nfile = \"near.csv\"\n",
+                      (folder_ / "case.toml").string());
+  constexpr std::string_view kinds[] = {"fluid"};
+  std::string error;
+  try {
+    read_particle_blocks<2>(case_file, 0.1, read_domain<2>(case_file), kinds,
+                            ParticleBudget{400.0, std::size_t{1} << 30});
+  } catch (const CaseError& e) {
+    error = e.what();
+  }
+  EXPECT_NE(error.find("particles[0]: particle 2 at (0.5, 0.5) lies on its particle 0"),
+            std::string::npos)
+      << error;
+}
+
+// A file named as HDF5 that is not (a CSV renamed, a truncated download) is not read as CSV.
+TEST_F(PointFileTest, FileNamedH5WithoutTheHdf5SignatureIsRefused) {
+  std::string error;
+  try {
+    read_point_file<2>(write("points.h5", "x [m], y [m]\n0, 0\n"));
+  } catch (const PointFileError& e) {
+    error = e.what();
+  }
+  EXPECT_NE(error.find("points.h5: named .h5 but not an HDF5 file"), std::string::npos) << error;
+  EXPECT_NO_THROW(read_point_file<2>(write("points.txt", "x [m], y [m]\n0, 0\n")));
+}
+
 // h5py's way: one dataset per field, (N) or (N, C), with a unit attribute.
 void write_dataset(hid_t file, const char* name, const std::vector<double>& rows, hsize_t count,
                    hsize_t components, const char* unit) {
@@ -130,32 +181,62 @@ struct Fluid {
                                           .parity = Parity::odd,
                                           .components = 2,
                                           .scaled_as = "velocity"}};
+  // Filled from the velocity's values but not its copy (superfluid's wall).
+  StateField<std::int64_t> superflow_velocity{{.name = "superflow_velocity",
+                                               .unit = "m/s",
+                                               .parity = Parity::odd,
+                                               .components = 2,
+                                               .scaled_as = "velocity"}};
+  StateField<std::int64_t> mass{mass_field<2>()};
   StateField<std::int64_t> density_constant{density_constant_field()};
-  auto fields() { return std::tie(position, velocity, velocity_copy, density_constant); }
+  auto fields() {
+    return std::tie(position, velocity, velocity_copy, superflow_velocity, mass, density_constant);
+  }
 };
 
 class FillFromPointFile : public PointFileTest {
 protected:
-  // fill_set's error for a fluid whose particles are a box block's two and the file's two.
+  // fill_set's error for a fluid whose particles are a box block's two and the file's two; the
+  // set-up's density (as wcsph's) may be given as `density` or as a pressure twice the density.
   std::string fill(const std::string& csv, Fluid& fluid) {
+    std::vector<double> density(4, 1.0);
+    return fill(csv, fluid, density);
+  }
+  std::string fill(const std::string& csv, Fluid& fluid, std::vector<double>& density) {
     write("fluid.csv", csv);
     const CaseFile case_file =
         CaseFile::parse("[[particles]]\nkind = \"fluid\"\nmin = [0, 0]\nmax = [1, 1]\n"
                         "[[particles]]\nkind = \"fluid\"\nshape = \"points\"\n"
                         "file = \"fluid.csv\"\n",
                         (folder_ / "case.toml").string());
-    for (auto* field :
-         {&fluid.position, &fluid.velocity, &fluid.velocity_copy, &fluid.density_constant}) {
+    for (auto* field : {&fluid.position, &fluid.velocity, &fluid.velocity_copy,
+                        &fluid.superflow_velocity, &fluid.mass, &fluid.density_constant}) {
       field->set_scale(fixedpoint::Scale(-40));
     }
     const std::vector<Vec<2>> positions = {{0.5, 0.5}, {0.1, 0.2}, {3.0, 4.0}, {2.0, 0.25}};
     const std::vector<Vec<2>> velocities(4, Vec<2>{9.0, 9.0});
+    const std::vector<double> masses(4, 0.5);
+    const SetUpValue as_density{.name = "density",
+                                .unit = "kg/m^3",
+                                .values = density,
+                                .from_file = [](double d) { return d > 0.0 ? d : std::nan(""); },
+                                .admits = "above 0",
+                                .what = "the density"};
+    const SetUpValue as_pressure{.name = "pressure",
+                                 .unit = "Pa",
+                                 .values = density,
+                                 .from_file = [](double p) { return 0.5 * p; },
+                                 .admits = "",
+                                 .what = "the density"};
     try {
       fill_set<FixedArithmetic, 2>(case_file, fluid, 4,
                                    {{"position", "particles", positions},
                                     {"velocity", "initial.field", velocities},
                                     {"velocity_copy", "initial.field", velocities},
-                                    {"density_constant", "particles", 0.0}});
+                                    {"superflow_velocity", "initial.field", velocities},
+                                    {"mass", "physics.rest_density", masses},
+                                    {"density_constant", "particles", 0.0}},
+                                   {as_density, as_pressure});
     } catch (const CaseError& error) {
       return error.what();
     }
@@ -168,12 +249,27 @@ protected:
 
 TEST_F(FillFromPointFile, GivesTheFilesValuesToTheParticlesItPlacesAndToCopies) {
   Fluid fluid;
-  ASSERT_EQ(fill("x [m], y [m], velocity_y [m/s]\n2.0, 0.25, -1.5\n3.0, 4.0, 0.5\n", fluid), "");
+  ASSERT_EQ(fill("x [m], y [m], velocity_y [m/s], velocity_x [m/s]\n2.0, 0.25, -1.5, 2.5\n"
+                 "3.0, 4.0, 0.5, 0.5\n",
+                 fluid),
+            "");
   EXPECT_EQ(velocity(fluid.velocity, 1, 3), -1.5);
   EXPECT_EQ(velocity(fluid.velocity, 1, 2), 0.5);
   EXPECT_EQ(velocity(fluid.velocity_copy, 1, 3), -1.5);
-  EXPECT_EQ(velocity(fluid.velocity, 0, 3), 9.0); // not given: the set-up's
-  EXPECT_EQ(velocity(fluid.velocity, 1, 0), 9.0); // the box block's particle
+  EXPECT_EQ(velocity(fluid.velocity, 0, 3), 2.5);
+  EXPECT_EQ(fixedpoint::to_real(fluid.mass.at(0, 3), fluid.mass.info().scale), 0.5); // the set-up's
+  EXPECT_EQ(velocity(fluid.velocity, 1, 0), 9.0);           // the box block's particle
+  EXPECT_EQ(velocity(fluid.superflow_velocity, 1, 3), 9.0); // the same start, not a copy
+  ASSERT_EQ(fill("x [m], y [m], superflow_velocity_y [m/s], superflow_velocity_x [m/s]\n"
+                 "2.0, 0.25, 4, 3\n",
+                 fluid),
+            "");
+  EXPECT_EQ(velocity(fluid.superflow_velocity, 1, 3), 4.0);
+  EXPECT_EQ(velocity(fluid.velocity, 1, 3), 9.0);
+  EXPECT_NE(
+      fill("x [m], y [m], velocity_copy_x [m/s], velocity_copy_y [m/s]\n2.0, 0.25, 1, 1\n", fluid)
+          .find("no such initial value"),
+      std::string::npos); // a copy starts as its original
 }
 
 TEST_F(FillFromPointFile, RefusesWrongUnitsUnknownFieldsConstantsAndMovedParticles) {
@@ -190,8 +286,52 @@ TEST_F(FillFromPointFile, RefusesWrongUnitsUnknownFieldsConstantsAndMovedParticl
   EXPECT_NE(fill("x [m], y [m], velocity_y [m/s]\n2.0, 0.26, 1\n", fluid)
                 .find("not where the set-up left it"),
             std::string::npos);
-  EXPECT_NE(fill("x [m], y [m], velocity_y [m/s]\n2.0, 0.25, 1e300\n", fluid)
+  EXPECT_NE(fill("x [m], y [m], velocity_y [m/s], velocity_x [m/s]\n2.0, 0.25, 1e300, 0\n", fluid)
                 .find("does not fit its fixed-point scale"),
+            std::string::npos);
+}
+
+// A mass of zero or less ended as a run fault ("density not positive"): bad input, naming the
+// file's line and column.
+TEST_F(FillFromPointFile, MassNotPositiveNamesTheLineAndColumn) {
+  Fluid fluid;
+  const std::string error =
+      fill("x [m], y [m], mass [kg/m]\n# second\n2.0, 0.25, 0.5\n3.0, 4.0, -0.25\n", fluid);
+  EXPECT_NE(error.find("particles[1].file: "), std::string::npos) << error;
+  EXPECT_NE(error.find("fluid.csv line 4, column mass: -0.25 [kg/m], but a mass is positive"),
+            std::string::npos)
+      << error;
+  EXPECT_NE(fill("x [m], y [m], mass [kg/m]\n2.0, 0.25, 0\n", fluid).find("line 2, column mass"),
+            std::string::npos);
+  EXPECT_EQ(fill("x [m], y [m], mass [kg/m]\n2.0, 0.25, 0.75\n", fluid), "");
+  EXPECT_EQ(fixedpoint::to_real(fluid.mass.at(0, 3), fluid.mass.info().scale), 0.75);
+}
+
+// velocity_x alone would leave velocity_y at the set-up's value: the missing column is named.
+TEST_F(FillFromPointFile, PartOfAVectorIsRefusedNamingTheMissingColumn) {
+  Fluid fluid;
+  EXPECT_NE(fill("x [m], y [m], velocity_x [m/s]\n2.0, 0.25, 1\n", fluid)
+                .find("no column velocity_y [m/s]: a file gives every component of velocity or "
+                      "none"),
+            std::string::npos);
+  EXPECT_EQ(fill("x [m], y [m], velocity_y [m/s], velocity_x [m/s]\n2.0, 0.25, 1, 2\n", fluid), "");
+}
+
+// A set-up value (wcsph's initial density): given directly or converted from another quantity,
+// one of them per file; a value the model does not admit names its line and column.
+TEST_F(FillFromPointFile, SetUpValuesReachTheParticlesTheFilePlaces) {
+  Fluid fluid;
+  std::vector<double> density(4, 1.0);
+  ASSERT_EQ(fill("x [m], y [m], pressure [Pa]\n2.0, 0.25, 3\n3.0, 4.0, 5\n", fluid, density), "");
+  EXPECT_EQ(density, (std::vector<double>{1.0, 1.0, 2.5, 1.5}));
+  ASSERT_EQ(fill("x [m], y [m], density [kg/m^3]\n3.0, 4.0, 7\n", fluid, density), "");
+  EXPECT_EQ(density[2], 7.0);
+  EXPECT_NE(fill("x [m], y [m], density [kg/m^3]\n2.0, 0.25, 0\n", fluid)
+                .find("fluid.csv line 2, column density: 0 [kg/m^3], but it must be above 0"),
+            std::string::npos);
+  EXPECT_NE(fill("x [m], y [m], density [kg/m^3], pressure [Pa]\n2.0, 0.25, 1, 2\n", fluid)
+                .find("columns density and pressure give one thing (the density): give one of "
+                      "them"),
             std::string::npos);
 }
 
