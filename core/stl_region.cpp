@@ -16,7 +16,6 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <optional>
 

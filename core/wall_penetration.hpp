@@ -8,7 +8,7 @@
 // into nothing. An annulus's rings fill it: its region alone decides.
 //
 // The wall particles are the fixed particles of the block's set that lie in its region, at their
-// positions in the state (a turning wall's are where it has turned to).
+// positions in the state.
 
 #include "core/cell_list.hpp"
 #include "core/geometry.hpp"
