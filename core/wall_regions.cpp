@@ -50,6 +50,14 @@ bool WallRegion<D>::contains(const Vec<D>& p) const {
 }
 
 template <int D>
+std::optional<Vec<D>> WallRegion<D>::particle_cell() const {
+  if (block_.shape == BlockShape::annulus) {
+    return std::nullopt;
+  }
+  return lattice_periods<D>(block_.lattice, block_.spacing);
+}
+
+template <int D>
 std::vector<WallRegion<D>> read_wall_regions(const CaseFile& case_file, double default_spacing,
                                              std::span<const std::string> kinds) {
   std::vector<WallRegion<D>> regions;

@@ -3,7 +3,8 @@
 // block's region as an inside test, read from its [[particles]] block, so that a run can count the
 // moving particles that have passed into a wall, which the pair forces do not stop by themselves
 // when a wall's repulsion is too weak for the flow (diagnostics.csv's particles_in_walls,
-// docs/running.md).
+// docs/running.md). The count asks the region and the cells of the block's particles
+// (core/wall_penetration.hpp).
 //
 //   box        strictly inside [min, max]
 //   container  inside its walls: strictly inside the box grown by its layers (with open_top not
@@ -19,6 +20,7 @@
 #include "core/case_file.hpp"
 #include "core/geometry.hpp"
 
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -34,6 +36,9 @@ public:
   const std::string& kind() const { return block_.kind; }
   // Whether p lies in the block's solid (see above). NaN is outside.
   bool contains(const Vec<D>& p) const;
+  // The extents of the lattice cell each of the block's particles stands for (its lattice
+  // periods), or nothing for an annulus, whose rings are no lattice (core/wall_penetration.hpp).
+  std::optional<Vec<D>> particle_cell() const;
 
 private:
   bool in_shape(const Vec<D>& p) const;

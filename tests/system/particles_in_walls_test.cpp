@@ -2,9 +2,12 @@
 // a fluid falling through a floor that does not push back (wall energy 0) gets a warning naming
 // the floor's block, and diagnostics.csv's particles_in_walls at the end equals the count made
 // here from the last snapshot with the box test itself; the dam break of the shipped case keeps
-// its fluid out of its container (0, no warning). Both progress lines give min r/dr.
+// its fluid out of its container (0, no warning), as does a tank whose floor is a sloped stl
+// ramp, though its fluid settles into the notches of the ramp's staircase of wall particles,
+// under the smooth surface. Both progress lines give min r/dr.
 
 #include "cli_sandbox.hpp"
+#include "ramp_stl.hpp"
 
 #include "core/logged_rows.hpp"
 #include "core/snapshot_file.hpp"
@@ -123,6 +126,82 @@ TEST(ParticlesInWalls, TheDamBreakKeepsItsFluidOutOfItsContainer) {
   for (const std::vector<double>& row : logged.rows) {
     EXPECT_EQ(row.back(), 0.0) << "step " << row.front();
   }
+}
+
+// The fluid of a tank [0, 0.4] x [0, 0.1] x [0, 0.4] whose floor is the ramp of ramp_stl.hpp.
+const char* ramp_case = R"(model = "wcsph"
+dimension = 3
+name = "ramp"
+
+[physics]
+rest_density = 1000.0
+sound_speed = 20.0
+gravity = 9.8
+
+[discretisation]
+dr = 0.02
+support_radius_over_dr = 3.0
+courant_number = 0.2
+
+[wall]
+radius_over_dr = 0.95
+energy_per_mass = 20.0
+
+[domain]
+min = [-0.1, -0.1, -0.1]
+max = [0.5, 0.2, 0.5]
+
+[[particles]]
+kind = "fluid"
+min = [0.0, 0.0, 0.0]
+max = [0.4, 0.1, 0.2]
+exclude_blocks = [2]
+
+[[particles]]
+kind = "wall"
+shape = "container"
+min = [0.0, 0.0, 0.0]
+max = [0.4, 0.1, 0.4]
+
+[[particles]]
+kind = "wall"
+shape = "stl"
+file = "ramp.stl"
+
+[output]
+energy_every = 50
+)";
+
+TEST(ParticlesInWalls, AFluidOnASlopedStlRampIsInNoWall) {
+  Sandbox sandbox;
+  sandbox.write_case(ramp_case);
+  std::ofstream(sandbox.work() / "ramp.stl") << revsph::testing::ramp_stl();
+  const CommandResult result =
+      sandbox.revsph({"run", "case.toml", "--steps", "200", "--set", "output.snapshot_every=100",
+                      "--out", sandbox.out().string()});
+  ASSERT_EQ(result.exit_status, 0) << result;
+  EXPECT_EQ(result.out.find("warning:"), std::string::npos) << result;
+  const revsph::LoggedRows logged = revsph::read_logged_rows(sandbox.out() / "diagnostics.csv");
+  ASSERT_EQ(logged.rows.size(), 5u); // steps 0, 50, ..., 200
+  for (const std::vector<double>& row : logged.rows) {
+    EXPECT_EQ(row.back(), 0.0) << "step " << row.front();
+  }
+  // What the ramp's surface alone would count: fluid under z = 0.04 + 0.3 x, within 0.4 dr of
+  // it (the staircase's notches are no deeper).
+  const revsph::Snapshot last =
+      revsph::read_snapshot(sandbox.out() / "snapshots" / "step_000000200.h5");
+  const revsph::FieldSnapshot* position = last.state.find("fluid", "position");
+  ASSERT_NE(position, nullptr);
+  int under = 0;
+  for (std::size_t i = 0; i < position->count; ++i) {
+    const double x = position->real(0, i);
+    const double depth = 0.04 + 0.3 * x - position->real(2, i);
+    if (x > 0.0 && x < 0.4 && depth > 0.0) {
+      ++under;
+      EXPECT_LT(depth, 0.4 * 0.02);
+    }
+  }
+  EXPECT_GT(under, 0);
 }
 
 } // namespace

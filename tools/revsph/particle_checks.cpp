@@ -2,6 +2,7 @@
 
 #include "core/distributed/processes.hpp"
 #include "core/smallest_distance.hpp"
+#include "core/wall_penetration.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -24,18 +25,16 @@ Vec<D> position_of(const FieldSnapshot& position, std::size_t particle) {
 template <int D>
 void count_own(const std::vector<WallRegion<D>>& regions, const StateSnapshot& state,
                const std::vector<std::string>& moving_sets, std::vector<std::uint64_t>& counts) {
+  const WallPenetration<D> walls(regions, state);
   for (const std::string& set : moving_sets) {
     const FieldSnapshot* position = state.find(set, "position");
     if (position == nullptr) {
       continue;
     }
     for (std::size_t i = 0; i < position->count; ++i) {
-      const Vec<D> p = position_of<D>(*position, i);
-      for (std::size_t r = 0; r < regions.size(); ++r) {
-        if (regions[r].contains(p)) {
-          ++counts[r];
-          break;
-        }
+      const std::size_t r = walls.region_holding(position_of<D>(*position, i));
+      if (r < regions.size()) {
+        ++counts[r];
       }
     }
   }

@@ -19,7 +19,7 @@ namespace revsph::cli {
 // The column of diagnostics.csv (unit "1": a number of particles).
 inline constexpr const char* particles_in_walls = "particles_in_walls";
 
-// Moving particles inside wall regions, over the whole run.
+// Moving particles inside walls, over the whole run.
 struct WallCount {
   std::vector<std::uint64_t> per_region; // in the order of ParticleChecks' regions
   std::uint64_t total = 0;
@@ -34,7 +34,8 @@ public:
 
   bool has_wall_regions() const { return !keys_.empty(); }
 
-  // How many moving particles lie in each wall region (a particle in two counts for the first).
+  // How many moving particles have passed into each wall (core/wall_penetration.hpp; a particle
+  // in two counts for the first).
   // Collective in a distributed run: each process counts its own, and the counts are summed
   // exactly.
   WallCount count_in_walls(const StateSnapshot& state) const;
