@@ -256,7 +256,8 @@ PointFile<D> read_hdf5(const InputFile& input) {
           0) {
     throw PointFileError(path + ": cannot be opened as HDF5 in memory");
   }
-  const Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.id()), H5Fclose,
+  // HDF5 refuses an image under the name of a file that exists: a name no file can have.
+  const Handle file(H5Fopen("/dev/null/revsph-point-file", H5F_ACC_RDONLY, access.id()), H5Fclose,
                     path + ": cannot be opened as HDF5");
   std::vector<std::string> names;
   const auto collect = [](hid_t, const char* name, const H5L_info_t*, void* data) -> herr_t {

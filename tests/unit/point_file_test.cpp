@@ -2,13 +2,16 @@
 // (core/state_fill.hpp): CSV and HDF5 read to the same columns; a header without units, a row of
 // the wrong length, a value that is no number, a position not in metres are one-line errors
 // naming the file and line; a file's values reach the particles it places, in their field's
-// unit, and a copy filled from the same values gets them too.
+// unit, and a copy filled from the same values gets them too; a case given a block's file (by a
+// snapshot) reads that, not the disk.
 
 #include "core/arithmetic.hpp"
 #include "core/case_file.hpp"
 #include "core/common_fields.hpp"
 #include "core/hdf5_handle.hpp"
+#include "core/particle_blocks.hpp"
 #include "core/point_file.hpp"
+#include "core/sha256.hpp"
 #include "core/state_fill.hpp"
 
 #include <gtest/gtest.h>
@@ -168,6 +171,29 @@ TEST_F(PointFileTest, Hdf5DatasetsReadAsTheSameColumnsAsCsv) {
   const PointFile<2> again = read_point_file<2>(folder_ / "again.csv");
   EXPECT_EQ(again.positions, file.positions);
   EXPECT_EQ(again.columns[1].values, file.columns[1].values);
+}
+
+// A block reads its file once from disk, relative to the case, and keeps its bytes; a case given
+// the file (by a snapshot) reads that, with the disk's copy gone.
+TEST_F(PointFileTest, ABlockReadsTheFileItsCaseWasGivenNotTheDisk) {
+  const std::string on_disk = "x [m], y [m]\n0.5, 0.5\n";
+  write("fluid.csv", on_disk);
+  const std::string text = "[[particles]]\nshape = \"points\"\nfile = \"fluid.csv\"\n";
+  const std::string source = (folder_ / "case.toml").string();
+  const CaseFile from_disk = CaseFile::parse(text, source);
+  EXPECT_EQ(read_point_file<2>(block_input_file(from_disk, "particles[0]")).positions.size(), 1u);
+  ASSERT_EQ(from_disk.inputs().used().size(), 1u);
+  EXPECT_EQ(from_disk.inputs().used()[0].sha256, sha256_hex(on_disk));
+  EXPECT_EQ(from_disk.inputs().used()[0].path, (folder_ / "fluid.csv").string());
+
+  fs::remove(folder_ / "fluid.csv");
+  const std::string kept = "x [m], y [m]\n0.25, 0.75\n1, 1\n";
+  const CaseFile from_snapshot = CaseFile::parse(text, source);
+  from_snapshot.inputs().give({"fluid.csv", "/elsewhere/fluid.csv", sha256_hex(kept), kept});
+  EXPECT_EQ(read_point_file<2>(block_input_file(from_snapshot, "particles[0]")).positions.size(),
+            2u);
+  ASSERT_EQ(from_snapshot.inputs().used().size(), 1u);
+  EXPECT_EQ(from_snapshot.inputs().used()[0].bytes, kept);
 }
 
 // A set like a model's fluid: velocity and a copy of it filled from the same values.
