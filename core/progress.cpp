@@ -1,11 +1,12 @@
 #include "core/progress.hpp"
 
 #include "core/case_file.hpp"
+#include "core/distributed/processes.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdlib>
+#include <initializer_list>
 #include <unistd.h>
 
 namespace revsph {
@@ -25,20 +26,31 @@ ProgressSetting progress_setting() {
   throw CaseError("REVSPH_PROGRESS", "", "expected auto, bar or lines, got \"" + setting + "\"");
 }
 
+namespace {
+
+// One of several processes started together: MPI's count, or, built without MPI, the count its
+// launcher gives (Open MPI's mpirun, MPICH's Hydra). A lone MPI process may set them itself, to 1.
+bool among_several_processes() {
+  if (distributed::process_count() > 1) {
+    return true;
+  }
+  for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
+    const char* count = std::getenv(variable);
+    if (count != nullptr && std::atoi(count) > 1) {
+      return true;
+    }
+  }
+  return false;
+}
+
+} // namespace
+
 bool progress_bar_on(std::FILE* stream) {
   const ProgressSetting setting = progress_setting();
   if (setting != ProgressSetting::automatic) {
     return setting == ProgressSetting::bar;
   }
-  // What Open MPI's mpirun, MPICH's Hydra and PMIx launchers (srun among them) give each process.
-  static constexpr std::array<const char*, 3> launcher_variables = {"OMPI_COMM_WORLD_SIZE",
-                                                                    "PMI_SIZE", "PMIX_RANK"};
-  for (const char* variable : launcher_variables) {
-    if (std::getenv(variable) != nullptr) {
-      return false;
-    }
-  }
-  return isatty(fileno(stream)) != 0;
+  return !among_several_processes() && isatty(fileno(stream)) != 0;
 }
 
 std::string format_duration(double seconds) {

@@ -16,9 +16,9 @@ enum class ProgressSetting { automatic, bar, lines };
 ProgressSetting progress_setting();
 
 // Whether progress on `stream` is the live bar (carriage returns, escape codes). auto: on a
-// terminal, but not under an MPI launcher, whose processes write to a terminal of their own
-// (Open MPI forwards each one's output through a pseudo-terminal) even when the launcher's
-// output goes to a file.
+// terminal, but not in a run of several processes, which write to terminals of their launcher's
+// (Open MPI forwards each one's output through a pseudo-terminal) even when its output goes to a
+// file.
 bool progress_bar_on(std::FILE* stream);
 
 class ProgressReporter {

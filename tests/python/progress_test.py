@@ -1,11 +1,12 @@
 #!/usr/bin/python3
 """Progress output (core/progress.hpp, docs/running.md "Progress"): on a terminal the live bar
-(carriage returns and escape codes), under an MPI launcher plain lines although each process
+(carriage returns and escape codes), on several processes plain lines although each process
 writes to a terminal of its own (Open MPI forwards their output through a pseudo-terminal, also
 into a redirected log), and REVSPH_PROGRESS=bar|lines|auto choosing; another value is bad input.
 
-Each run writes to a pseudo-terminal, as a process under mpirun does; the launcher is simulated by
-the variable Open MPI sets in each process (OMPI_COMM_WORLD_SIZE).
+Each run writes to a pseudo-terminal, as a process under mpirun does; a launch on 2 processes is
+simulated by the variable Open MPI sets in each (OMPI_COMM_WORLD_SIZE), which a build without MPI
+reads (tests/mpi/log_and_memory_on_processes.cmake launches 2 processes of an MPI build).
 
 Usage: progress_test.py REVSPH   (run by CTest as python.progress)
 """
@@ -18,7 +19,7 @@ import tempfile
 import unittest
 
 REVSPH = os.path.abspath(sys.argv.pop(1))
-LAUNCHER_VARIABLES = ("OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK")
+LAUNCHER_VARIABLES = ("OMPI_COMM_WORLD_SIZE", "PMI_SIZE")
 ESCAPES = ("\r", "\x1b")
 
 
@@ -73,7 +74,7 @@ class Progress(unittest.TestCase):
     def test_a_terminal_shows_the_bar(self):
         self.assert_bar(self.run_case())
 
-    def test_under_an_mpi_launcher_plain_lines(self):
+    def test_on_several_processes_plain_lines(self):
         self.assert_lines(self.run_case(OMPI_COMM_WORLD_SIZE="2", OMPI_COMM_WORLD_RANK="0"))
 
     def test_the_setting_chooses(self):
