@@ -31,7 +31,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from docstring_cli import parser_from_docstring  # noqa: E402
-from revsph_runs import REPO  # noqa: E402
+from revsph_runs import REPO, write_dict_rows  # noqa: E402
 
 # The reference state of eq. (31) at T0 (Table I), the capillary's width: as superfluid_fountain.py.
 T0, S0, RHO0, D_CAPILLARY = 1.65, 335.0, 145.2, 1.55e-3
@@ -108,11 +108,7 @@ def main():
     args = parser.parse_args()
     rows = [r for r in (summarise(run, columns, args.start, args.end, args.block)
                         for run, columns in read_series(args.jet).items()) if r is not None]
-    with open(args.out, "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
-        writer.writeheader()
-        for row in rows:
-            writer.writerow({k: v if isinstance(v, str) else f"{v:.6g}" for k, v in row.items()})
+    write_dict_rows(args.out, rows)
     for r in rows:
         print(f"{r['run']}: {r['mean_jet_speed']:.4f} m/s over [{r['t_from']:.3f}, "
               f"{r['t_to']:.4f}] s; {r['deficit_percent']:.2f} +- {r['block_error_points']:.2f} "

@@ -32,7 +32,7 @@ from scipy.optimize import curve_fit
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from docstring_cli import parser_from_docstring  # noqa: E402
-from revsph_runs import REPO  # noqa: E402
+from revsph_runs import REPO, write_dict_rows  # noqa: E402
 
 L, U1, S0 = 0.01, 40.0, 725.5
 MODE = np.sqrt(2.0) * np.pi / L  # |k| of the mode cos(pi x/L) cos(pi y/L)
@@ -117,11 +117,7 @@ def main():
     rows = [summarise(run, *series, errors, args.wide)
             for run, series in read_probes(args.probes).items()]
     rows.sort(key=lambda r: (r["support_over_dr"], r["N"]))
-    with open(args.out, "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
-        writer.writeheader()
-        for row in rows:
-            writer.writerow({k: v if isinstance(v, str) else f"{v:.6g}" for k, v in row.items()})
+    write_dict_rows(args.out, rows)
     for r in rows:
         print(f"{r['run']}: u = {r['probe_speed']:.4f} m/s against u2 = {r['u2']:.4f} "
               f"({100 * r['speed_difference']:+.3f} %), {r['phase_lag_at_end']:.4f} rad behind "
