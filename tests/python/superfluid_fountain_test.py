@@ -29,6 +29,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
                                 "plots"))
 
 import superfluid_fountain as fountain  # noqa: E402
+import superfluid_fountain_blocks as blocks  # noqa: E402
 
 REVSPH = None
 WORK = None
@@ -181,6 +182,41 @@ class PairEntropyFluxTest(unittest.TestCase):
         self.assertAlmostEqual(
             fountain.pair_entropy_flux(snapshot, fountain.SUPERLEAK_PLANE, support), -measured,
             delta=1e-9 * abs(measured))
+
+
+class BlockMeansTest(unittest.TestCase):
+    """superfluid_fountain_blocks.py on a jet series with known block means."""
+
+    def series(self, deficits, per_block=10, interval=0.0025, start=0.19):
+        """A series from `start` whose 25 ms blocks after 0.2 s lie `deficits` percent below a
+        constant eq. (31) of 0.64 m/s; before 0.2 s the jet is far off (it must not count)."""
+        t = start + interval * np.arange(4 + per_block * len(deficits) + 1)
+        jet = np.concatenate([np.full(4, 0.1)] + [np.full(per_block, 0.64 * (1 - d / 100))
+                                                  for d in deficits])
+        return t[:-1], t[1:], jet, np.full(len(jet), 0.64)
+
+    def test_window_mean_and_block_scatter(self):
+        columns = self.series([1.0, 3.0, 2.0, 2.0])
+        row = blocks.summarise("fountain-n6-w80", columns, 0.2, 0.2999, 0.025)
+        self.assertEqual((row["N"], row["power_W_per_m"], row["blocks"]), (6, 80.0, 4))
+        self.assertAlmostEqual(row["deficit_percent"], 2.0, places=9)
+        spread = np.std([1.0, 3.0, 2.0, 2.0], ddof=1)
+        self.assertAlmostEqual(row["block_std_points"], spread, places=9)
+        self.assertAlmostEqual(row["block_error_points"], spread / 2.0, places=9)
+        # Eq. (31) at T0, s0, rho0: W / (T0 s0 rho0 d), against which the same jet is slower.
+        reference = 80.0 / (blocks.T0 * blocks.S0 * blocks.RHO0 * blocks.D_CAPILLARY)
+        self.assertAlmostEqual(row["deficit_T0_percent"], 100 * (1 - 0.64 * 0.98 / reference),
+                               places=9)
+
+    def test_a_short_last_block_joins_the_one_before(self):
+        columns = self.series([1.0, 3.0, 2.0])
+        row = blocks.summarise("fountain-n4-w80", columns, 0.2, 0.2549, 0.025)
+        self.assertEqual(row["blocks"], 2)
+        self.assertEqual(row["block_deficits"], "1.00 2.83")  # (10 x 3 + 2 x 2) / 12
+
+    def test_a_run_that_stops_before_the_window_ends_is_left_out(self):
+        columns = self.series([1.0, 3.0])
+        self.assertIsNone(blocks.summarise("fountain-n6-w80", columns, 0.2, 0.2924, 0.025))
 
 
 if __name__ == "__main__":

@@ -96,6 +96,15 @@ def write_csv(path, columns):
             writer.writerow([f"{v:.10g}" for v in row])
 
 
+def write_dict_rows(path, rows):
+    """Rows of equal keys (dicts) as a CSV with those keys as its header, numbers to 6 digits."""
+    with open(path, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        writer.writeheader()
+        for row in rows:
+            writer.writerow({k: v if isinstance(v, str) else f"{v:.6g}" for k, v in row.items()})
+
+
 def snapshots(run):
     return sorted((run / "snapshots").glob("step_*.h5"))
 

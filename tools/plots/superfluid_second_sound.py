@@ -21,8 +21,9 @@ Writes into --out (default docs/figures):
                                at (L/4, L/4) against time with eq. (25) (Fig. 6), and for the
                                sine runs the solution of the adiabatic square (below).
   superfluid_second_sound.csv  run, shape, N, M, A, eps1, eps2.
-  superfluid_second_sound_probe.csv  run, time, entropy at the probe, eq. (25) there (the
-                               N = 300 runs, or the N = 100 ones at A = 0.01 until those exist).
+  superfluid_second_sound_probe.csv  run, time, entropy at the probe, eq. (25) there, for
+                               every run (the figure's panel: the N = 300 runs, or the N = 100
+                               ones at A = 0.01 until those exist).
   superfluid_second_sound.md   the numbers (also printed).
 
 eps1 is eq. (27) with the sum over particles taken as an RMS (the model's second_sound_error),
@@ -153,7 +154,6 @@ def make_figures(runs, out, report, names):
     # Fig. 6 from the N = 300 runs, or, until they exist, from the N = 100 ones at A = 0.01.
     chosen = [p for p in probes if p[0] in ("eps1-cosine-N300-A0.01", "probe-sine-N300-A0.01")] or [
         p for p in probes if p[0] in ("eps1-cosine-N100-A0.01", "eps1-sine-N100-A0.01")]
-    probe_rows = []
     for name, shape, n, a, diag in chosen:
         t = diag["time"]
         axes[2].plot(t * 1e3, diag["probe_entropy"], label=f"SPH, {shape}")
@@ -161,8 +161,10 @@ def make_figures(runs, out, report, names):
         if shape == "sine":
             axes[2].plot(t * 1e3, adiabatic_series(L / 4, L / 4, t, a), ":",
                          label="adiabatic square, sine start")
-        probe_rows += [(name, t[i], diag["probe_entropy"][i], diag["probe_entropy_exact"][i])
-                       for i in range(len(t))]
+    # Every run's series (the simulated second-sound speed is fitted to them:
+    # superfluid_second_sound_speed.py).
+    probe_rows = [(name, diag["time"][i], diag["probe_entropy"][i], diag["probe_entropy_exact"][i])
+                  for name, _, _, _, diag in probes for i in range(len(diag["time"]))]
     if probes:
         write_rows(out / "superfluid_second_sound_probe.csv",
                    ["run", "time", "probe_entropy", "eq25"], probe_rows)

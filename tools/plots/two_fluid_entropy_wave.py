@@ -5,7 +5,7 @@ by dl in random directions; the relative error E_r at t = 0.03 s against the vol
 rate dD, for c = 135 and 20 m/s, and S at a probe particle against t.
 
 Usage: /usr/bin/python3 tools/plots/two_fluid_entropy_wave.py [--make-runs] [--quick] [--runs DIR]
-           [--out DIR] [--tool PATH]
+           [--out DIR] [--tool PATH] [--fits]
 
 --make-runs runs the tool (default build/bin/revsph_two_fluid_entropy_wave) on one thread for
 every run missing in RUNS (default out/two_fluid_entropy_wave, with --quick
@@ -27,6 +27,10 @@ Writes into --out (default docs/figures; with --quick RUNS, and the names end in
                               3 %, FD and the exact curve; (d) their differences from the exact
                               curve. (e) E_r at c = 135, dD = 0.5 % against dt for each support;
                               (f) E_r at c = 20 against the support.
+
+--fits makes no runs and no figure: it reads --out's two_fluid_entropy_wave.csv and writes
+two_fluid_entropy_wave_fits.csv there, the fit E_r = a + b dD^p over dD > 0 for each speed, kernel
+(support, dt) and denominator (the fits the figure draws).
 
 E_r = mean_i |S_i - S_a| / (|S_a| + 1) x 100; the paper prints |S_a + A| (zero where S_a = -1),
 also reported ("|S_a + A|", open symbols).
@@ -108,6 +112,32 @@ def power_fit(fluctuation, error):
     except RuntimeError:
         return None
     return parameters
+
+
+def write_fits(out, suffix):
+    """The fits of E_r = a + b dD^p of the summary CSV in `out`, into a CSV beside it."""
+    rows = read_rows(out / f"two_fluid_entropy_wave{suffix}.csv")
+    fits = []
+    for speed in SPEEDS:
+        for support, dt_factor in (DEFAULT, SHORT):
+            chosen = sorted((r for r in rows if r["method"] == "sph" and
+                             int(float(r["speed"])) == speed and
+                             float(r["support_over_l"]) == support and
+                             # the tool rounds dt to whole steps to t_end: within 2 %
+                             abs(float(r["dt"]) * speed * float(r["particles"]) / dt_factor - 1)
+                             < 0.02),
+                            key=lambda r: float(r["fluctuation"]))
+            for column in ("mean_error_percent", "literal_error_percent"):
+                fit = power_fit([float(r["fluctuation"]) for r in chosen],
+                                [float(r[column]) for r in chosen])
+                fits.append([speed, support, dt_factor, column, len(chosen)] +
+                            (["nan"] * 3 if fit is None else [f"{v:.4g}" for v in fit]))
+    with open(out / f"two_fluid_entropy_wave_fits{suffix}.csv", "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["speed", "support_over_l", "dt_over_l_per_c", "error", "points", "a",
+                         "b", "p"])
+        writer.writerows(fits)
+    print("\n".join(",".join(str(v) for v in row) for row in fits))
 
 
 def error_panel(ax, table, speed, report):
@@ -217,11 +247,15 @@ def main():
     parser.add_argument("--out")
     parser.add_argument("--tool", default=str(REPO / "build" / "bin" /
                                               "revsph_two_fluid_entropy_wave"))
+    parser.add_argument("--fits", action="store_true")
     args = parser.parse_args()
     suffix = "_quick" if args.quick else ""
     runs = Path(args.runs or REPO / "out" / f"two_fluid_entropy_wave{suffix}")
     out = Path(args.out or (runs if args.quick else REPO / "docs" / "figures"))
     out.mkdir(parents=True, exist_ok=True)
+    if args.fits:
+        write_fits(out, suffix)
+        return 0
     if args.make_runs:
         make_missing_runs(runs, Path(args.tool), 100 if args.quick else 400)
     missing = [run_name(*r) for r in RUNS if not (runs / (run_name(*r) + ".csv")).is_file()]

@@ -16,6 +16,10 @@ on one thread) into RUNS/NAME (default RUNS = out/two_fluid). Runs:
   rt-mode-nN        the same with the interface moved by its linear mode's displacement
                     (interface.perturbation = "displacement": a smooth interface, not a
                     staircase of lattice rows)
+  rt-linear-n96-pb0.05, rt-mode-n96-pbP
+                    the background pressure 0.05 Pa (the case: 0.2), and P = 0.05, 0.02 Pa
+  rt-ka0.1-nN-pbP   the mode start at k a = 0.1 (amplitude 1.6 um, 1.5 to 3 spacings), N = 96,
+                    144, 192, background pressure P = 0 or 0.02 Pa
   rt-paper          models/two_fluid/cases/rayleigh-taylor.toml: 240 x 480 particles, every
                     coupling on, to 7.49 ms (20 to 60 minutes on one thread)
 Writes into --out (default docs/figures):
@@ -59,21 +63,29 @@ K = 2.0 * np.pi / L_X
 ATWOOD = (RHO_S - RHO_N) / (RHO_S + RHO_N)
 SIGMA = np.sqrt(ATWOOD * K * G)
 LINEAR_SLOPE = 0.15
-RUNS = {"rt-linear-n96": (96, False, False), "rt-linear-n192": (192, False, False),
+# (L_x / dr, hydrostatic start, displaced interface, further --set KEY=VALUE)
+RUNS = {"rt-linear-n96": (96, False, False, ()), "rt-linear-n192": (192, False, False, ()),
         "rt-paper": None}
-RUNS.update({f"rt-hydro-n{n}": (n, True, False) for n in (96, 144, 192)})
-RUNS.update({f"rt-mode-n{n}": (n, True, True) for n in (96, 144, 192)})
+RUNS.update({f"rt-hydro-n{n}": (n, True, False, ()) for n in (96, 144, 192)})
+RUNS.update({f"rt-mode-n{n}": (n, True, True, ()) for n in (96, 144, 192)})
+RUNS["rt-linear-n96-pb0.05"] = (96, False, False, ("physics.background_pressure=0.05",))
+RUNS.update({f"rt-mode-n96-pb{p}": (96, True, True, (f"physics.background_pressure={p}",))
+             for p in ("0.05", "0.02")})
+RUNS.update({f"rt-ka0.1-n{n}-pb{p}": (n, True, True, ("interface.amplitude=1.6e-6",
+                                                      f"physics.background_pressure={p}"))
+             for p in ("0", "0.02") for n in (96, 144, 192)})
 
 
 def command(run):
     if run is None:
         return ["run", str(PAPER_CASE)]
-    n, hydrostatic, displaced = run
+    n, hydrostatic, displaced, sets = run
     dr = L_X / n
     return ["run", str(CASE), "--set", f"discretisation.dr={dr!r}",
             "--set", f"output.snapshot_every={max(1, round(80 * n / 96))}",
             "--set", f"initial.hydrostatic={'true' if hydrostatic else 'false'}",
-            "--set", f"interface.perturbation={'displacement' if displaced else 'kinds'}"]
+            "--set", f"interface.perturbation={'displacement' if displaced else 'kinds'}",
+            *[word for key in sets for word in ("--set", key)]]
 
 
 def interface_amplitude(path):
