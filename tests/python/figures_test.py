@@ -207,6 +207,26 @@ class FiguresTest(unittest.TestCase):
         self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
         for name in names:
             self.assert_png(os.path.join(figures, name))
+        # paper1_numbers.csv: one row per run present, numbers against summary.json and energy.csv.
+        with open(os.path.join(figures, "paper1_numbers.csv"), newline="") as f:
+            numbers = {row["run"]: row for row in csv.DictReader(f)}
+        self.assertEqual(set(numbers), {"dambreak-full", "dambreak-small-fixed",
+                                        "dambreak-small-float", "dambreak-small-courant0.1",
+                                        "dambreak-small-courant0.05"})
+        with open(os.path.join(self.fixed, "summary.json")) as f:
+            expected = json.load(f)["energy"]["max_relative_error_forward"]
+        fixed = numbers["dambreak-small-fixed"]
+        self.assertAlmostEqual(float(fixed["max_relative_energy_error"]), expected,
+                               delta=1e-3 * expected)
+        with open(os.path.join(self.fixed, "forward", "energy.csv"), newline="") as f:
+            rows = [{k.split(" [")[0]: float(v) for k, v in row.items()}
+                    for row in csv.DictReader(f)]
+        drop = rows[0]["gravitational"] - rows[-1]["gravitational"]
+        kinetic = (rows[-1]["kinetic"] - rows[0]["kinetic"]) / drop
+        self.assertAlmostEqual(float(fixed["kinetic_share_at_end"]), kinetic, delta=1e-4)
+        self.assertEqual(fixed["dr"], "0.04")
+        self.assertEqual(fixed["returned_bitwise"], "true")
+        self.assertEqual(numbers["dambreak-small-float"]["returned_bitwise"], "false")
 
 
 if __name__ == "__main__":

@@ -20,6 +20,16 @@ Usage: /usr/bin/python3 tools/plots/paper1_figures.py [--list] [--runs DIR] [--o
   --threads N  passed to revsph (default: revsph's own, all cores)
   --refdata    the published reference data for Fig. 4 (default: leading_edge.py's)
 
+Besides the figures, OUT/paper1_numbers.csv gets one row per dam-break run present in RUNS (the
+runs below, whichever exist; a run directory holding only summary.json and forward/energy.csv,
+such as the committed record of the Table-1 run, counts): dr, dt, particles, the largest
+relative energy error |E - E0| / |E0| of the forward run (Fig. 8, sec. 5's "less than 2e-4 %"),
+its error bar (how much the maximum changes when only every fifth energy sample is kept: the
+samples may miss the peak), the largest |Fig. 5 quantity| (E(t) - E(0)) / (E_g(0) - E_g(t_end)),
+the shares of the released potential energy E_g(0) - E_g(t_end) found as kinetic and as
+compressional energy at t_end (sec. 5: "approximately 3/4 to the kinetic and 1/4 to the
+internal") and, for a reversal, whether it returned bitwise.
+
 Without --make-runs, figures whose runs are missing are skipped (the exit status is then 1).
 tools/plots/gresho_table.py (Table 2, Gresho vortex), when present, is called as
 `gresho_table.py --runs RUNS --out OUT --revsph REVSPH [--threads N]`; it makes the Gresho runs
@@ -28,12 +38,16 @@ with summary.json; when absent it is skipped with a note. Exit status 0 only if 
 was made.
 """
 
+import csv
+import json
 import os
 import shlex
 import shutil
 import subprocess
 import sys
 from pathlib import Path
+
+import numpy as np
 
 from docstring_cli import parser_from_docstring
 
@@ -42,6 +56,7 @@ PLOTS = REPO / "tools" / "plots"
 PYTHON = "/usr/bin/python3" if os.access("/usr/bin/python3", os.X_OK) else sys.executable
 SMALL_TAG = "_dambreak-small"
 SIZE_LIMIT = 300_000  # bytes per PNG, so the figures can live in the repository
+CASE_DR = {"dambreak": "0.005", "dambreak-small": "0.02"}  # the cases' own dr (m)
 
 
 class Run:
@@ -86,7 +101,13 @@ SMALL_DT2 = Run("dambreak-small-courant0.1", *small(
 SMALL_DT4 = Run("dambreak-small-courant0.05", *small(
     ["--set", "discretisation.courant_number=0.05", "--set", "output.snapshot_every=0",
      "--set", "output.energy_every=80"], "dt/4 = 2.5e-5 s: about 8 min on 1 core"))
-RUNS = (FULL, SMALL_FIXED, SMALL_FLOAT, SMALL_DT2, SMALL_DT4)
+DR01 = Run("dambreak-dr0.01",
+           ["run", "dambreak", "--t-end", "1", "--set", "discretisation.dr=0.01",
+            "--set", "output.snapshot_every=0", "--set", "output.energy_every=50"],
+           "Table 1 at dr = 0.01 m (20 000 fluid particles, dt = 5e-5 s), 1 s forward: the energy "
+           "error at a second resolution, about 4 min on 1 core")
+RUNS = (FULL, SMALL_FIXED, SMALL_FLOAT, SMALL_DT2, SMALL_DT4, DR01)
+NUMBERS = "paper1_numbers.csv"
 
 
 def figures(use_full):
@@ -120,6 +141,46 @@ def figures(use_full):
          "Fig. 6 right (Boltzmann entropy) and left (speed histogram)", [main],
          ("entropy", main, tag)),
     ]
+
+
+def read_columns(path):
+    """An energy.csv by column name (header cells are `name [unit]`, or `name` in older runs)."""
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    return {key.split(" [")[0]: np.array([float(r[key]) for r in rows]) for key in rows[0]}
+
+
+def energy_numbers(run_dir):
+    """The row of paper1_numbers.csv for one run directory (see the module docstring)."""
+    summary = json.loads((run_dir / "summary.json").read_text())
+    forward = run_dir / "forward" / "energy.csv"
+    energy = read_columns(forward if forward.is_file() else run_dir / "energy.csv")
+    error = np.abs(energy["total"] - energy["total"][0]) / abs(energy["total"][0])
+    drop = energy["gravitational"][0] - energy["gravitational"][-1]
+    overrides = dict(o.split("=", 1) for o in summary.get("overrides", []))
+    identical = summary.get("identical")
+    return {"run": run_dir.name, "case": summary["case"],
+            "dr": overrides.get("discretisation.dr", CASE_DR.get(summary["case"], "")),
+            "dt": summary["dt"], "particles": summary["particles"]["fluid"],
+            "energy_samples": len(error),
+            "max_relative_energy_error": f"{error.max():.4e}",
+            "error_bar": f"{error.max() - error[::5].max():.1e}",
+            "max_fig5_quantity": f"{np.max(np.abs(energy['total'] - energy['total'][0])) / drop:.4e}",
+            "kinetic_share_at_end": f"{(energy['kinetic'][-1] - energy['kinetic'][0]) / drop:.4f}",
+            "compressional_share_at_end":
+                f"{(energy['compressional'][-1] - energy['compressional'][0]) / drop:.4f}",
+            "returned_bitwise": "" if identical is None else str(bool(identical)).lower()}
+
+
+def write_numbers(runs, out):
+    rows = [energy_numbers(r.path(runs)) for r in RUNS if r.present(runs)]
+    if not rows:
+        return
+    with open(out / NUMBERS, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
+    print(f"wrote {out / NUMBERS} ({len(rows)} runs)")
 
 
 def find_revsph(given):
@@ -234,6 +295,8 @@ def main(argv=None):
             for name, target in zip(("entropy.png", "histogram.png"), files):
                 shutil.copyfile(analysis / name, out / target)
         made += files
+
+    write_numbers(runs, out)
 
     gresho = PLOTS / "gresho_table.py"
     # gresho_table.py makes whatever Gresho runs it lacks, so it is only called where runs may
