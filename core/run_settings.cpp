@@ -68,6 +68,7 @@ RunSettings read_run_settings(const CaseFile& case_file) {
   if (case_file.has("output.progress_interval")) {
     settings.progress_interval = case_file.positive_number("output.progress_interval");
   }
+  settings.health = read_health_limits(case_file);
   case_file.accept_table("run");
   case_file.accept_table("output");
   return settings;
