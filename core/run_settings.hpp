@@ -9,10 +9,8 @@
 //   snapshot_every = 1000       steps between snapshots (0: only at the start and the end)
 //   snapshot_interval = 0.5     simulated seconds between snapshots (with or instead of the above)
 //   progress_interval = 10.0    seconds between progress lines when not on a terminal
-//   [health]                    limits of the run's health checks (core/health_limits.hpp)
 
 #include "core/case_file.hpp"
-#include "core/health_limits.hpp"
 #include "core/simulation.hpp"
 
 #include <cstdint>
@@ -38,7 +36,6 @@ struct RunSettings {
   std::int64_t snapshot_every = 0;
   double snapshot_interval = 0.0; // s; 0: none
   double progress_interval = 10.0;
-  HealthLimits health = default_health_limits();
 };
 
 RunSettings read_run_settings(const CaseFile& case_file);

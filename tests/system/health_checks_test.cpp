@@ -6,6 +6,7 @@
 // starting at rest stay healthy.
 
 #include "cli_sandbox.hpp"
+#include "shear_layer_example.hpp"
 
 #include "core/logged_rows.hpp"
 #include "core/snapshot_file.hpp"
@@ -14,7 +15,6 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -100,13 +100,7 @@ TEST(HealthChecks, AShearLayerBlownUpByTheAntiClumpForceIsUnhealthy) {
   // is outside the budget; relative_error 1.02) and max|v|/c is 4.4, by step 500 49.5. The same
   // run without the force stays below 0.16 and 2e-5.
   Sandbox sandbox;
-  const std::filesystem::path example =
-      std::filesystem::path(REVSPH_SOURCE_DIR) / "docs" / "examples" / "periodic-shear-layer";
-  std::filesystem::copy_file(example / "shear-layer.toml", sandbox.work() / "shear-layer.toml");
-  const std::string make = "cd '" + sandbox.work().string() + "' && /usr/bin/python3 '" +
-                           (example / "make_points.py").string() +
-                           "' --cells 20 --out shear_layer.csv > /dev/null";
-  ASSERT_EQ(std::system(make.c_str()), 0);
+  ASSERT_TRUE(revsph::testing::write_shear_layer_example(sandbox, 20));
   const std::vector<std::string> run = {
       "run",   "shear-layer.toml",       "--steps", "500",
       "--set", "discretisation.dr=0.05", "--set",   "physics.anti_clump_pressure=10",

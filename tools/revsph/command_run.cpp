@@ -209,15 +209,15 @@ int run_command(const RunOptions& options) {
   }
   // The health checks (core/run_health.hpp) at each record: a warning line when one is first
   // crossed, columns of diagnostics.csv (before the walls' one), summary.json's healthy.
-  RunHealth health(loaded.settings.health);
+  const HealthLimits limits = read_health_limits(loaded.case_file);
+  RunHealth health(limits);
   if (earlier_energy || earlier_diagnostics) {
     health.replay(earlier_energy.value_or(LoggedRows{}),
                   earlier_diagnostics.value_or(LoggedRows{}));
   }
-  const ClosePairCount close_pairs(loaded.case_file, simulation.info(),
-                                   loaded.settings.health.close_pair_fraction);
+  const ClosePairCount close_pairs(loaded.case_file, simulation.info(), limits.close_pair_fraction);
   const ClosePairCount merged_pairs(loaded.case_file, simulation.info(),
-                                    loaded.settings.health.merged_pair_fraction);
+                                    limits.merged_pair_fraction);
   hooks.extra_diagnostics = [&, walls = std::move(hooks.extra_diagnostics)](Simulation& s) {
     std::vector<EnergyTerm> columns;
     HealthReading reading;
