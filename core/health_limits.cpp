@@ -1,5 +1,7 @@
 #include "core/health_limits.hpp"
 
+#include <limits>
+
 namespace revsph {
 
 HealthLimits default_health_limits() {
@@ -13,12 +15,10 @@ HealthLimits default_health_limits() {
 
 HealthLimits read_health_limits(const CaseFile& case_file) {
   HealthLimits limits = default_health_limits();
+  // 0 turns a limit off: no value is beyond infinity (but NaN).
   const auto limit = [&](const char* key, double fallback) {
-    const double value = case_file.number_or(key, fallback);
-    if (!(value > 0.0)) {
-      case_file.fail(key, "must be > 0 (inf: no check)");
-    }
-    return value;
+    const double value = case_file.non_negative_number_or(key, fallback, "no check");
+    return value > 0.0 ? value : std::numeric_limits<double>::infinity();
   };
   limits.max_energy_error = limit("health.max_energy_error", limits.max_energy_error);
   limits.max_speed_over_c = limit("health.max_speed_over_c", limits.max_speed_over_c);

@@ -93,7 +93,7 @@ TEST(RunHealth, AContinuedRunReplaysItsRowsWithoutWarningAgain) {
   EXPECT_NE(health.reasons()[0].find("first at step 100, t = 0.5 s"), std::string::npos);
   // The pairs were the earlier run's to warn of; the speed is this one's.
   EXPECT_TRUE(health.observe(200, 1.0, reading(0.0, 0.3, 5)).empty());
-  EXPECT_EQ(health.observe(300, 1.5, reading(0.0, 1.5, 5)).size(), 1u);
+  EXPECT_EQ(health.observe(300, 1.5, reading(0.0, 15.0, 5)).size(), 1u);
 }
 
 TEST(RunHealth, ReadsTheHealthTableAndRefusesBadLimits) {
@@ -108,13 +108,14 @@ TEST(RunHealth, ReadsTheHealthTableAndRefusesBadLimits) {
   EXPECT_EQ(defaults.close_pair_fraction, default_health_limits().close_pair_fraction);
   EXPECT_EQ(defaults.merged_pair_fraction, default_health_limits().merged_pair_fraction);
   const HealthLimits given =
-      limits_of("max_energy_error = 0.5\nmax_speed_over_c = inf\nclose_pair_fraction = 0\n"
+      limits_of("max_energy_error = 0.5\nmax_speed_over_c = 0\nclose_pair_fraction = 0\n"
                 "merged_pair_fraction = 0.01\n");
   EXPECT_EQ(given.max_energy_error, 0.5);
   EXPECT_TRUE(std::isinf(given.max_speed_over_c));
   EXPECT_EQ(given.close_pair_fraction, 0.0);
   EXPECT_EQ(given.merged_pair_fraction, 0.01);
-  EXPECT_THROW(limits_of("max_energy_error = 0\n"), CaseError);
+  EXPECT_THROW(limits_of("max_energy_error = -0.1\n"), CaseError);
+  EXPECT_THROW(limits_of("max_energy_error = inf\n"), CaseError);
   EXPECT_THROW(limits_of("max_speed_over_c = -1\n"), CaseError);
   EXPECT_THROW(limits_of("max_speed_over_c = nan\n"), CaseError);
   EXPECT_THROW(limits_of("close_pair_fraction = 1.5\n"), CaseError);
