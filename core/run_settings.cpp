@@ -1,5 +1,7 @@
 #include "core/run_settings.hpp"
 
+#include "core/health_limits.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -75,6 +77,9 @@ RunSettings read_run_settings(const CaseFile& case_file) {
   if (case_file.has("output.progress_interval")) {
     settings.progress_interval = case_file.positive_number("output.progress_interval");
   }
+  // [health] is checked here with the rest, before the set-up; `revsph run` reads it again for
+  // its health checks (core/health_limits.hpp).
+  read_health_limits(case_file);
   case_file.accept_table("run");
   case_file.accept_table("output");
   return settings;

@@ -92,8 +92,8 @@ class Reader(unittest.TestCase):
         v, m = last.field("fluid", "velocity").values, last.field("fluid", "mass").values
         kinetic = 0.5 * np.sum(m * np.sum(v * v, axis=1))
         self.assertAlmostEqual(energy["kinetic"][-1] / kinetic, 1.0, delta=1e-12)
-        # The dam break's model reports no diagnostics: only the run's count of fluid particles
-        # inside its container's walls, none.
+        # The dam break's model reports no diagnostics: only the run's own columns, among them
+        # its count of fluid particles inside its container's walls, none.
         in_walls = whole.diagnostics()
         self.assertEqual(in_walls.unit("particles_in_walls"), "1")
         self.assertEqual(list(in_walls["particles_in_walls"]), [0.0] * len(in_walls.step))

@@ -29,7 +29,8 @@ inline const std::vector<std::string>& key_names() {
       "density_exponent", "acceleration_exponent", "particles", "physics", "domain", "wall", "run",
       "output", "fixed_point", "discretisation", "x", "dr2", "DR", "\"quoted key\"",
       "'literal key'", "\"\"", "a.b", "physics.dr", "domain.min", "particles.kind", "min.x",
-      "\"dr\"", "d r", "1", "-", "_"};
+      "\"dr\"", "d r", "1", "-", "_", "health", "max_energy_error", "max_speed_over_c",
+      "close_pair_fraction"};
   // clang-format on
   return names;
 }
@@ -40,7 +41,7 @@ inline const std::vector<std::string>& table_headers() {
       "[physics]", "[discretisation]", "[wall]", "[domain]", "[run]", "[output]", "[fixed_point]",
       "[[particles]]", "[particles]", "[[physics]]", "[domain.min]", "[particles.0]",
       "[[particles.kind]]", "[]", "[[]]", "[ physics ]", "[\"physics\"]", "[run.steps]",
-      "[[domain]]", "[x]", "[physics.dr]"};
+      "[[domain]]", "[x]", "[physics.dr]", "[health]", "[[health]]"};
   // clang-format on
   return headers;
 }
@@ -260,7 +261,9 @@ public:
         "particles[-1].min", "particles[x].min", "particles[].min", "particles[0]",
         "particles[0].min[0]", "particles.kind", "run.steps", "run.t_end", "run",
         "output.energy_every", "fixed_point.position_exponent", "fixed_point.velocity_exponent",
-        "fixed_point.density_exponent", "fixed_point.acceleration_exponent", "a..b", ".a", "a.",
+        "fixed_point.density_exponent", "fixed_point.acceleration_exponent",
+        "health.max_energy_error", "health.max_speed_over_c", "health.close_pair_fraction",
+        "health", "a..b", ".a", "a.",
         "", "physics.rest_density.x", "domain.min.x", "wall", "wall.epsilon", "x.y.z"};
     // clang-format on
     std::string value = chance(0.2) ? std::string(1, random_byte()) : random_value();

@@ -5,11 +5,10 @@
 // checked by periodic_test (random states) and python.periodic (a shear layer in a moving frame).
 
 #include "cli_sandbox.hpp"
+#include "shear_layer_example.hpp"
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <filesystem>
 #include <string>
 
 namespace {
@@ -59,13 +58,7 @@ TEST(PeriodicDomain, RefusesGravityAlongAPeriodicAxisAndAPeriodTooShort) {
 // the period cut to x < 0.7, which leaves a quarter of its particles outside.
 TEST(PeriodicDomain, RefusesAPeriodTooShortAndParticlesOutsideIt) {
   Sandbox sandbox;
-  const std::filesystem::path example =
-      std::filesystem::path(REVSPH_SOURCE_DIR) / "docs" / "examples" / "periodic-shear-layer";
-  std::filesystem::copy_file(example / "shear-layer.toml", sandbox.work() / "shear-layer.toml");
-  const std::string make = "cd '" + sandbox.work().string() + "' && /usr/bin/python3 '" +
-                           (example / "make_points.py").string() +
-                           "' --cells 4 --out shear_layer.csv > /dev/null";
-  ASSERT_EQ(std::system(make.c_str()), 0);
+  ASSERT_TRUE(revsph::testing::write_shear_layer_example(sandbox, 4));
   const CommandResult short_period = sandbox.revsph(
       {"run", "shear-layer.toml", "--steps", "1", "--set", "discretisation.dr=0.25"});
   EXPECT_EQ(short_period.exit_status, 2) << short_period;

@@ -1,3 +1,4 @@
+#include "core/close_pairs.hpp"
 #include "core/diagnostics_log.hpp"
 #include "core/distributed/processes.hpp"
 #include "core/energy_log.hpp"
@@ -5,6 +6,7 @@
 #include "core/memory.hpp"
 #include "core/openmp_waiting.hpp"
 #include "core/progress.hpp"
+#include "core/run_health.hpp"
 #include "core/run_loop.hpp"
 #include "core/threads.hpp"
 #include "tools/revsph/commands.hpp"
@@ -211,6 +213,54 @@ int run_command(const RunOptions& options) {
            "1"}};
     };
   }
+  // The health checks (core/run_health.hpp) at each record: a warning line when one is first
+  // crossed, columns of diagnostics.csv (before the walls' one), summary.json's healthy.
+  const HealthLimits limits = read_health_limits(loaded.case_file);
+  RunHealth health(limits);
+  if (earlier_energy || earlier_diagnostics) {
+    health.replay(earlier_energy.value_or(LoggedRows{}),
+                  earlier_diagnostics.value_or(LoggedRows{}));
+  }
+  const ClosePairCount close_pairs(loaded.case_file, simulation.info(), limits.close_pair_fraction);
+  const ClosePairCount merged_pairs(loaded.case_file, simulation.info(),
+                                    limits.merged_pair_fraction);
+  hooks.extra_diagnostics = [&, walls = std::move(hooks.extra_diagnostics)](Simulation& s) {
+    std::vector<EnergyTerm> columns;
+    HealthReading reading;
+    // relative_error is 0 / 0 while E(0) and every term are 0 (a driven flow still at rest).
+    const double error = energy.last_relative_error();
+    reading.energy_error = std::isnan(error) && energy.max_deviation() == 0.0 ? 0.0 : error;
+    const StateSnapshot state = s.borrow_state();
+    const double c = s.info().sound_speed;
+    if (c > 0.0) {
+      reading.speed_over_c =
+          distributed::max_over_processes(largest_own_speed(state, moving_sets)) / c;
+      columns.push_back(
+          {speed_over_c_column, RunTotal::same_on_every_process(*reading.speed_over_c), "1"});
+    }
+    if (close_pairs.active()) {
+      reading.close_pairs = close_pairs.count(state);
+      columns.push_back({close_pairs_column,
+                         RunTotal::same_on_every_process(static_cast<double>(*reading.close_pairs)),
+                         "1"});
+    }
+    if (merged_pairs.active()) {
+      reading.merged_pairs = merged_pairs.count(state);
+      columns.push_back(
+          {merged_pairs_column,
+           RunTotal::same_on_every_process(static_cast<double>(*reading.merged_pairs)), "1"});
+    }
+    for (const std::string& warning : health.observe(s.steps_taken(), s.time(), reading)) {
+      if (distributed::process_rank() == 0) {
+        progress.announce(warning);
+      }
+    }
+    if (walls) {
+      const std::vector<EnergyTerm> in_walls = walls(s);
+      columns.insert(columns.end(), in_walls.begin(), in_walls.end());
+    }
+    return columns;
+  };
   const StopOnSignals signals;
   hooks.after_step = [&](Simulation& s, std::int64_t) {
     if (output.snapshot_due(s, s.steps_taken())) {
@@ -294,6 +344,8 @@ int run_command(const RunOptions& options) {
   if (const auto last = output.last_snapshot()) {
     summary.last_snapshot = last->string();
   }
+  summary.healthy = health.healthy();
+  summary.health_reasons = health.reasons();
   summary.diagnostics_maxima = diagnostics.maxima();
   summary.diagnostics_minima = diagnostics.minima();
   summary.peak_memory_bytes = peak_resident_bytes();
@@ -322,6 +374,9 @@ int run_command(const RunOptions& options) {
   if (summary.distribution && summary.processes > 1) {
     std::cout << distribution_line(*summary.distribution) << "\n";
   }
+  for (const std::string& reason : summary.health_reasons) {
+    std::cout << "unhealthy: " << reason << "\n";
+  }
   std::cout << "state hash: " << summary.final_hash << "\n";
   std::cout << "wrote " << output.directory().string() << "/: energy.csv, summary.json, run.xdmf, "
             << output.snapshot_count() << " snapshots";
@@ -329,6 +384,10 @@ int run_command(const RunOptions& options) {
     std::cout << " (last: " << *summary.last_snapshot << ")";
   }
   std::cout << "\n";
+  if (options.strict && !summary.healthy && status == success) {
+    print_error("the run is unhealthy (--strict): " + summary.health_reasons.front());
+    status = simulation_failed;
+  }
   return status;
 }
 

@@ -16,6 +16,7 @@ struct RunOptions {
   std::optional<std::int64_t> steps;
   std::optional<double> t_end;
   bool force = false;
+  bool strict = false; // an unhealthy run (core/run_health.hpp) exits with simulation_failed
 };
 
 struct VerifyCommandOptions {

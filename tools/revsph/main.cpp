@@ -138,12 +138,16 @@ int main(int argc, char** argv) {
              "another folder): its files up to step N are kept and this run's follow them.\n"
              "SIGINT or SIGTERM ends the run after the step under way with a last snapshot to "
              "continue from (exit 130 or 143).\n"
-             "Exit status: 0 the run reached its end; " +
-                 stopped_statuses);
+             "Exit status: 0 the run reached its end (with --strict: and stayed healthy); " +
+                 stopped_statuses + " With --strict, 3 also for an unhealthy run.");
   const auto run_handles = add_running_options(*run_app, run, case_help);
   add_output_options(*run_app, run.out_dir, run.force,
                      "output directory (default: out/CASE_NAME; after --from, the snapshot's "
                      "run folder)");
+  run_app->add_flag("--strict", run.strict,
+                    "exit with status 3 if the run was unhealthy: a health check of the case's "
+                    "[health] limits crossed (energy error, max|v|/c, close pairs; "
+                    "docs/running.md)");
 
   VerifyCommandOptions verify;
   auto* verify_app = app.add_subcommand(

@@ -47,6 +47,8 @@ void write_summary(const std::filesystem::path& path, Simulation& simulation, co
   if (run.failure) {
     summary["failure"] = *run.failure;
   }
+  summary["healthy"] = run.healthy;
+  summary["health_reasons"] = run.health_reasons;
   summary["wall_seconds"] = run.wall_seconds;
   const double particle_steps = static_cast<double>(info.moving_particle_count()) *
                                 static_cast<double>(simulation.steps_taken() - run.start_step);

@@ -26,7 +26,9 @@ struct RunSummary {
   int processes = 1; // of a distributed run (MPI)
   std::string initial_hash;
   std::string final_hash;
-  std::optional<std::string> failure; // the fault message if the run stopped early
+  std::optional<std::string> failure;      // the fault message if the run stopped early
+  bool healthy = true;                     // the health checks (core/run_health.hpp)
+  std::vector<std::string> health_reasons; // one line per check crossed
   std::size_t snapshots_written = 0;
   std::vector<EnergyTerm> diagnostics_maxima; // the largest value of each diagnostic
   std::vector<EnergyTerm> diagnostics_minima; // and the smallest
