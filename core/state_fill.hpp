@@ -116,7 +116,8 @@ struct ColumnTarget {
 // the set-up's value in the others: refused, naming the first missing column.
 template <int D, class Field>
 void require_every_component(const CaseFile& case_file, const std::string& file_key,
-                             const Field& field, const std::set<std::string>& given) {
+                             const std::string& source, const Field& field,
+                             const std::set<std::string>& given) {
   bool some = false;
   std::string missing;
   for (int c = 0; c < field.components(); ++c) {
@@ -127,7 +128,7 @@ void require_every_component(const CaseFile& case_file, const std::string& file_
     }
   }
   if (some && !missing.empty()) {
-    case_file.fail(file_key, "no column " + missing + " [" + field.info().unit +
+    case_file.fail(file_key, source + ": no column " + missing + " [" + field.info().unit +
                                  "]: a file gives " + "every component of " + field.info().name +
                                  " or none");
   }
@@ -170,8 +171,8 @@ void fill_from_point_files(const CaseFile& case_file, Set& set,
       }
       const auto found = row_at.find(key);
       if (found == row_at.end()) {
-        case_file.fail(file_key, "particle " + std::to_string(p) +
-                                     " of the file is not where the set-up left it (an initial "
+        case_file.fail(file_key, point_place<D>(file, p, "x") + ": the particle" +
+                                     " is not where the set-up left it (an initial "
                                      "state correction moves particles): its values have no "
                                      "particle");
       }
@@ -205,20 +206,21 @@ void fill_from_point_files(const CaseFile& case_file, Set& set,
         }
       }
       if (target.fill == nullptr && target.set_up == nullptr) {
-        case_file.fail(file_key, "column " + column.name + ": no such initial value of set " +
+        case_file.fail(file_key, file.source + ": column " + column.name +
+                                     ": no such initial value of set " +
                                      std::string(Set::set.name) + " (it takes " + allowed + ")");
       }
       const std::string unit = target.fill != nullptr ? fields.at(target.fill->field)->info().unit
                                                       : std::string(target.set_up->unit);
       if (column.unit != unit) {
-        case_file.fail(file_key, "column " + column.name + " is in [" + column.unit +
-                                     "]; the field is in [" + unit + "]");
+        case_file.fail(file_key, file.source + ": column " + column.name + " is in [" +
+                                     column.unit + "]; the field is in [" + unit + "]");
       }
       if (target.set_up != nullptr) {
         const auto [other, fresh] = set_up_given.emplace(target.set_up->values.data(), column.name);
         if (!fresh) {
-          case_file.fail(file_key, "columns " + other->second + " and " + column.name +
-                                       " give one thing (" + target.set_up->what +
+          case_file.fail(file_key, file.source + ": columns " + other->second + " and " +
+                                       column.name + " give one thing (" + target.set_up->what +
                                        "): give one of them");
         }
       }
@@ -226,7 +228,7 @@ void fill_from_point_files(const CaseFile& case_file, Set& set,
       targets.push_back(target);
     }
     for (const FieldFill<D>& fill : fills) {
-      require_every_component<D>(case_file, file_key, *fields.at(fill.field), given);
+      require_every_component<D>(case_file, file_key, file.source, *fields.at(fill.field), given);
     }
     for (std::size_t c = 0; c < file.columns.size(); ++c) {
       const PointColumn& column = file.columns[c];
