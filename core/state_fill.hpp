@@ -70,15 +70,10 @@ struct SetUpValue {
 
 namespace detail {
 
-// Whether fill `copy` is the copy of fill `original` (a field NAME_copy filled with the same
-// per-particle values, such as superfluid's velocity_copy): a file's values for the original go
-// to both, and the copy is not given on its own (the copies start equal). Fields that merely
-// start from the same values (superfluid's wall velocity and superflow velocity) stay separate.
+// Whether fills `a` and `b` were given the same per-particle values: fields that start equal
+// (superfluid's velocity and velocity_copy; its wall's velocity and superflow velocity).
 template <int D>
-bool is_copy_of(const FieldFill<D>& copy, const FieldFill<D>& original) {
-  if (copy.field != std::string(original.field) + "_copy") {
-    return false;
-  }
+bool same_values(const FieldFill<D>& a, const FieldFill<D>& b) {
   return std::visit(
       [](const auto& x, const auto& y) {
         using X = std::decay_t<decltype(x)>;
@@ -89,7 +84,14 @@ bool is_copy_of(const FieldFill<D>& copy, const FieldFill<D>& original) {
           return false;
         }
       },
-      copy.values, original.values);
+      a.values, b.values);
+}
+
+// Whether fill `copy` is the copy of fill `original` (a field NAME_copy starting equal to NAME):
+// a copy is not given on its own, so that the copies start equal.
+template <int D>
+bool is_copy_of(const FieldFill<D>& copy, const FieldFill<D>& original) {
+  return copy.field == std::string(original.field) + "_copy" && same_values(copy, original);
 }
 
 // The fills a point file may give values to: every one but the positions (its x, y, z columns),
@@ -116,7 +118,8 @@ struct ColumnTarget {
 // the set-up's value in the others: refused, naming the first missing column.
 template <int D, class Field>
 void require_every_component(const CaseFile& case_file, const std::string& file_key,
-                             const Field& field, const std::set<std::string>& given) {
+                             const std::string& source, const Field& field,
+                             const std::set<std::string>& given) {
   bool some = false;
   std::string missing;
   for (int c = 0; c < field.components(); ++c) {
@@ -127,8 +130,8 @@ void require_every_component(const CaseFile& case_file, const std::string& file_
     }
   }
   if (some && !missing.empty()) {
-    case_file.fail(file_key, "no column " + missing + " [" + field.info().unit +
-                                 "]: a file gives " + "every component of " + field.info().name +
+    case_file.fail(file_key, source + ": no column " + missing + " [" + field.info().unit +
+                                 "]: a file gives every component of " + field.info().name +
                                  " or none");
   }
 }
@@ -170,8 +173,8 @@ void fill_from_point_files(const CaseFile& case_file, Set& set,
       }
       const auto found = row_at.find(key);
       if (found == row_at.end()) {
-        case_file.fail(file_key, "particle " + std::to_string(p) +
-                                     " of the file is not where the set-up left it (an initial "
+        case_file.fail(file_key, point_place<D>(file, p, "x") + ": the particle" +
+                                     " is not where the set-up left it (an initial "
                                      "state correction moves particles): its values have no "
                                      "particle");
       }
@@ -205,20 +208,21 @@ void fill_from_point_files(const CaseFile& case_file, Set& set,
         }
       }
       if (target.fill == nullptr && target.set_up == nullptr) {
-        case_file.fail(file_key, "column " + column.name + ": no such initial value of set " +
+        case_file.fail(file_key, file.source + ": column " + column.name +
+                                     ": no such initial value of set " +
                                      std::string(Set::set.name) + " (it takes " + allowed + ")");
       }
       const std::string unit = target.fill != nullptr ? fields.at(target.fill->field)->info().unit
                                                       : std::string(target.set_up->unit);
       if (column.unit != unit) {
-        case_file.fail(file_key, "column " + column.name + " is in [" + column.unit +
-                                     "]; the field is in [" + unit + "]");
+        case_file.fail(file_key, file.source + ": column " + column.name + " is in [" +
+                                     column.unit + "]; the field is in [" + unit + "]");
       }
       if (target.set_up != nullptr) {
         const auto [other, fresh] = set_up_given.emplace(target.set_up->values.data(), column.name);
         if (!fresh) {
-          case_file.fail(file_key, "columns " + other->second + " and " + column.name +
-                                       " give one thing (" + target.set_up->what +
+          case_file.fail(file_key, file.source + ": columns " + other->second + " and " +
+                                       column.name + " give one thing (" + target.set_up->what +
                                        "): give one of them");
         }
       }
@@ -226,7 +230,7 @@ void fill_from_point_files(const CaseFile& case_file, Set& set,
       targets.push_back(target);
     }
     for (const FieldFill<D>& fill : fills) {
-      require_every_component<D>(case_file, file_key, *fields.at(fill.field), given);
+      require_every_component<D>(case_file, file_key, file.source, *fields.at(fill.field), given);
     }
     for (std::size_t c = 0; c < file.columns.size(); ++c) {
       const PointColumn& column = file.columns[c];
@@ -245,11 +249,15 @@ void fill_from_point_files(const CaseFile& case_file, Set& set,
         }
         continue;
       }
+      // The file's value goes to its field, and to the fields that start equal to it unless
+      // the file gives them their own.
       for (const FieldFill<D>& fill : fills) {
-        if (&fill != target.fill && !is_copy_of(fill, *target.fill)) {
+        Field& field = *fields.at(fill.field);
+        const bool own = given.contains(
+            component_name(field.info().name, D, field.components(), target.component));
+        if (&fill != target.fill && (own || !same_values(fill, *target.fill))) {
           continue;
         }
-        Field& field = *fields.at(fill.field);
         for (std::size_t p = 0; p < rows.size(); ++p) {
           if (field.info().positive && !(column.values[p] > 0.0)) {
             case_file.fail(file_key, point_place<D>(file, p, column.name) + ": " +

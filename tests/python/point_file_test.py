@@ -4,8 +4,9 @@
 Starting a run from a snapshot's physical fields, edited: a fluid taken from a dambreak-small
 snapshot by tools/points/points_from_snapshot.py, its velocities doubled with h5py, read back by a
 [[particles]] block of shape "points". The new run's particles sit bit for bit where the snapshot
-had them (the same raw fixed-point positions), its masses are the snapshot's, and its kinetic
-energy at step 0 is four times the snapshot's, computed here with numpy from the snapshot's views.
+had them (the same raw fixed-point positions), its masses and densities are the snapshot's, and
+its kinetic energy at step 0 is four times the snapshot's, computed here with numpy from the
+snapshot's views.
 
 Bad point files end in one line `revsph: error: ...` and exit 2, naming the file, the line and
 the column. A Taylor-Green vortex whose file gives wcsph its pressure starts with that pressure
@@ -41,7 +42,8 @@ class EditedSnapshotFields(unittest.TestCase):
             self.assertEqual(made.returncode, 0, made.stderr)
             snapshot = os.path.join(work, "first", "snapshots", "step_000000300.h5")
             subprocess.run(["/usr/bin/python3", CONVERT, snapshot, "--set", "fluid", "--fields",
-                            "velocity", "mass", "--out", os.path.join(work, "fluid.h5")],
+                            "velocity", "mass", "density", "--out",
+                            os.path.join(work, "fluid.h5")],
                            check=True, capture_output=True)
             with h5py.File(os.path.join(work, "fluid.h5"), "r+") as points:
                 points["velocity"][...] *= 2.0
@@ -59,6 +61,9 @@ class EditedSnapshotFields(unittest.TestCase):
                                               old["state/fluid/position"][...])
                 np.testing.assert_array_equal(new["particles/fluid/mass"][...],
                                               old["particles/fluid/mass"][...])
+                # The density constants chosen for the snapshot's densities give them back.
+                np.testing.assert_array_equal(new["particles/fluid/density"][...],
+                                              old["particles/fluid/density"][...])
                 fluid = old["particles/fluid"]
                 kinetic = 0.5 * np.sum(fluid["mass"][...] *
                                        np.sum(fluid["velocity"][...] ** 2, axis=1))
@@ -79,8 +84,9 @@ class EditedSnapshotFields(unittest.TestCase):
             bad = run("run", "bad.toml", "--steps", "1", "--out", "bad", cwd=work)
             self.assertEqual(bad.returncode, 2, bad.stderr)
             self.assertEqual(len(bad.stderr.strip().splitlines()), 1, bad.stderr)
-            self.assertIn("particles[0].file: column temperature: no such initial value of set "
-                          "fluid", bad.stderr)
+            self.assertIn("particles[0].file: ", bad.stderr)
+            self.assertIn("fluid.csv: column temperature: no such initial value of set fluid",
+                          bad.stderr)
 
 
 def dambreak_with_points(work, file_name):
@@ -220,25 +226,25 @@ class TaylorGreenPressure(unittest.TestCase):
 
     def test_the_files_pressure_is_the_initial_pressure(self):
         with tempfile.TemporaryDirectory() as work:
-            positions, pressure, kinetic = self.run_vortex(work, True, 400)
+            positions, pressure, kinetic = self.run_vortex(work, True, 30)
             start = os.path.join(work, "with", "snapshots", "step_000000000.h5")
             with h5py.File(start, "r") as f:
                 np.testing.assert_array_equal(f["particles/fluid/position"][...], positions)
-                density = f["particles/fluid/density"][...]
                 initial = f["particles/fluid/pressure"][...]
             # The density is held in fixed point (its scale's step below 1e-12 kg/m^3 here);
             # the Tait pressure's slope there is c^2 (rho/rho0)^6: the pressure to 1e-9 Pa, of
             # pressures up to 0.5 Pa.
             self.assertLess(np.max(np.abs(initial - pressure)), 1e-9)
-            self.assertGreater(np.ptp(density), 0.0)
-            _, _, without = self.run_vortex(work, False, 400)
+            _, _, without = self.run_vortex(work, False, 30)
             # Without its pressure the vortex starts out of balance: sound waves take kinetic
-            # energy and give it back. With it the kinetic energy stays closer to its start.
+            # energy and give it back (5.9e-3 of it within 30 steps, half the time sound takes
+            # to cross the box); with it, 9.6e-4. (Later, from about step 40, the inviscid vortex
+            # on a square lattice loses its kinetic energy to noise either way.)
             drift_with = np.max(np.abs(kinetic / kinetic[0] - 1.0))
             drift_without = np.max(np.abs(without / without[0] - 1.0))
-            print(f"\nTaylor-Green, 400 steps: max |KE/KE0 - 1| {drift_with:.3e} with the "
-                  f"file's pressure, {drift_without:.3e} without", file=sys.stderr)
-            self.assertLess(drift_with, 0.5 * drift_without)
+            print(f"\nTaylor-Green, 30 steps: max |KE/KE0 - 1| {drift_with:.2e} with the file's "
+                  f"pressure, {drift_without:.2e} without", file=sys.stderr)
+            self.assertLess(drift_with, 0.25 * drift_without)
 
 
 if __name__ == "__main__":

@@ -207,7 +207,7 @@ struct Fluid {
                                           .parity = Parity::odd,
                                           .components = 2,
                                           .scaled_as = "velocity"}};
-  // Filled from the velocity's values but not its copy (superfluid's wall).
+  // Starting equal to the velocity but not its copy (superfluid's wall).
   StateField<std::int64_t> superflow_velocity{{.name = "superflow_velocity",
                                                .unit = "m/s",
                                                .parity = Parity::odd,
@@ -284,14 +284,15 @@ TEST_F(FillFromPointFile, GivesTheFilesValuesToTheParticlesItPlacesAndToCopies) 
   EXPECT_EQ(velocity(fluid.velocity_copy, 1, 3), -1.5);
   EXPECT_EQ(velocity(fluid.velocity, 0, 3), 2.5);
   EXPECT_EQ(fixedpoint::to_real(fluid.mass.at(0, 3), fluid.mass.info().scale), 0.5); // the set-up's
-  EXPECT_EQ(velocity(fluid.velocity, 1, 0), 9.0);           // the box block's particle
-  EXPECT_EQ(velocity(fluid.superflow_velocity, 1, 3), 9.0); // the same start, not a copy
-  ASSERT_EQ(fill("x [m], y [m], superflow_velocity_y [m/s], superflow_velocity_x [m/s]\n"
-                 "2.0, 0.25, 4, 3\n",
+  EXPECT_EQ(velocity(fluid.velocity, 1, 0), 9.0);            // the box block's particle
+  EXPECT_EQ(velocity(fluid.superflow_velocity, 1, 3), -1.5); // starts equal to the velocity
+  ASSERT_EQ(fill("x [m], y [m], superflow_velocity_y [m/s], superflow_velocity_x [m/s], "
+                 "velocity_x [m/s], velocity_y [m/s]\n2.0, 0.25, 4, 3, 1, 2\n",
                  fluid),
             "");
-  EXPECT_EQ(velocity(fluid.superflow_velocity, 1, 3), 4.0);
-  EXPECT_EQ(velocity(fluid.velocity, 1, 3), 9.0);
+  EXPECT_EQ(velocity(fluid.superflow_velocity, 1, 3), 4.0); // each given its own
+  EXPECT_EQ(velocity(fluid.velocity, 1, 3), 2.0);
+  EXPECT_EQ(velocity(fluid.velocity_copy, 1, 3), 2.0);
   EXPECT_NE(
       fill("x [m], y [m], velocity_copy_x [m/s], velocity_copy_y [m/s]\n2.0, 0.25, 1, 1\n", fluid)
           .find("no such initial value"),
