@@ -11,7 +11,8 @@ out/entropic; Ra = 1e4 takes about 3 minutes on 2 threads, Ra = 1e5 about 20, th
 variants 1 and 3, the conduction check 1, Rayleigh-Benard about 40; cavity-ra1e{4,5}-s{4.5,6.5}:
 the kernel's support at 4.5 and 6.5 dr, walls as thick, about 2.5 and 5 times the cost;
 cavity-ra1e4-s{3.0,4.5}-thick: walls twice the support thick; cavity-ra1e4-s{4.5,6.5}-hydro:
-those walls with the authors' hydrostatic start and background pressure (1 at the top);
+those walls with the authors' hydrostatic start and background pressure (1 at the top), -n40,
+-n80, -n160 at 40 x 40, 80 x 80, 160 x 160; cavity-ra1e4-boussinesq-n80 at 80 x 80;
 rayleigh-benard-s6.5 and -s6.5-conduction: the authors' RaBe.jl support, seeded or from the
 conduction profile; rayleigh-benard-hydrostatic: the authors' start (initial.hydrostatic, the
 conduction profile) at their low background pressure (about 1 at the top) with walls twice
@@ -117,6 +118,17 @@ RUNS["cavity-ra1e5-s4.5-hydro"] = wider_kernel("cavity-ra1e5.toml", 0.0125, 4.5,
 RUNS["cavity-ra1e5-s6.5-hydro"] = wider_kernel("cavity-ra1e5.toml", 0.0125, 6.5, 2, 5.8)
 RUNS["cavity-ra1e4-s4.5-hydro-n80"] = wider_kernel("cavity-ra1e4.toml", 0.0125, 4.5, 2, 4.8,
                                                      refine=True)
+# Convergence in dr: Ra 1e4 at 160 x 160 (about 10 hours on one thread), Ra 1e5 at 40 x 40
+# (about 10 minutes), and the Boussinesq Ra 1e4 cavity at 80 x 80 (Ra 1e5's case with Ra 1e4's
+# viscosity and conductivity).
+RUNS["cavity-ra1e4-s4.5-hydro-n160"] = wider_kernel("cavity-ra1e4.toml", 0.00625, 4.5, 2, 4.8,
+                                                      refine=True)
+RUNS["cavity-ra1e5-s4.5-hydro-n40"] = wider_kernel("cavity-ra1e5.toml", 0.025, 4.5, 2, 4.8,
+                                                     refine=True)
+RUNS["cavity-ra1e4-boussinesq-n80"] = [
+    "run", str(CASES / "cavity-ra1e5-boussinesq.toml"),
+    "--set", "physics.viscosity=8.4261497731763586e-3",
+    "--set", "physics.heat_conductivity=2.966950624819375"]
 
 
 def rayleigh_benard_walls(support, thickness, courant):
@@ -179,7 +191,9 @@ REFERENCE.update({f"cavity-ra1e{k}-s{s}": REFERENCE[f"cavity-ra1e{k}"]
 REFERENCE.update({f"cavity-ra1e4-s{s}-thick": REFERENCE["cavity-ra1e4"] for s in (3.0, 4.5)})
 REFERENCE.update({f"cavity-ra1e4-s{s}-hydro": REFERENCE["cavity-ra1e4"] for s in (4.5, 6.5)})
 REFERENCE.update({f"cavity-ra1e5-s{s}-hydro": REFERENCE["cavity-ra1e5"] for s in (4.5, 6.5)})
-REFERENCE["cavity-ra1e4-s4.5-hydro-n80"] = REFERENCE["cavity-ra1e4"]
+REFERENCE.update({n: REFERENCE["cavity-ra1e4"] for n in (
+    "cavity-ra1e4-s4.5-hydro-n80", "cavity-ra1e4-s4.5-hydro-n160", "cavity-ra1e4-boussinesq-n80")})
+REFERENCE["cavity-ra1e5-s4.5-hydro-n40"] = REFERENCE["cavity-ra1e5"]
 # The Rayleigh-Benard case (paper 4 Fig. 12) has no reference number: its Nu is reported only.
 
 

@@ -8,11 +8,14 @@ sets both parts alike: S = the mass volume m / sum m W (s = 1 read through it).
 
 Usage: /usr/bin/python3 tools/plots/entropic_discontinuity.py IN.csv OUT.png
 
-IN.csv is written by build/bin/revsph_entropic_discontinuity.
+IN.csv is written by build/bin/revsph_entropic_discontinuity. Beside OUT.png, OUT.md: the
+smallest and largest rho and s of each volume and reading in the panels (also printed), the
+numbers models/entropic/README.md compares with the paper's Figs. 3-7.
 """
 
 import csv
 import sys
+from pathlib import Path
 
 import matplotlib
 
@@ -55,6 +58,29 @@ def main():
                  "(last row: both parts')")
     fig.tight_layout()
     fig.savefig(sys.argv[2], dpi=120)
+    write_ranges(rows, Path(sys.argv[2]).with_suffix(".md"))
+
+
+def extent(values):
+    """'min | max' of the finite values, and how many are not finite (a zero volume's rho)."""
+    finite = values[np.isfinite(values)]
+    text = f"{finite.min():.4g} | {finite.max():.4g}"
+    return text if len(finite) == len(values) else text + f" ({len(values) - len(finite)} not finite)"
+
+
+def write_ranges(rows, path):
+    lines = ["| reading of S | volume (figure) | rho min | rho max | s min | s max |",
+             "|---|---|---|---|---|---|"]
+    for reading, label in READINGS.items():
+        for volume in VOLUMES:
+            picked = [r for r in rows if r["volume"] == volume and r["right_entropy"] == reading]
+            rho = np.array([float(r["density"]) for r in picked])
+            s = np.array([float(r["entropy_density"]) for r in picked])
+            lines.append(f"| {label} | {volume} (Fig. {FIGURE[volume]}) | {extent(rho)} | "
+                         f"{extent(s)} |")
+    text = "\n".join(lines) + "\n"
+    path.write_text(text)
+    print(text, end="")
 
 
 if __name__ == "__main__":
