@@ -36,4 +36,52 @@ inline std::string ramp_stl() {
   return text + "endsolid ramp\n";
 }
 
+// A wcsph case: the fluid of a tank [0, 0.4] x [0, 0.1] x [0, 0.4] whose floor is the ramp, read
+// from `stl_file`.
+inline std::string ramp_case(const std::string& stl_file) {
+  return R"(model = "wcsph"
+dimension = 3
+name = "ramp"
+
+[physics]
+rest_density = 1000.0
+sound_speed = 20.0
+gravity = 9.8
+
+[discretisation]
+dr = 0.02
+support_radius_over_dr = 3.0
+courant_number = 0.2
+
+[wall]
+radius_over_dr = 0.95
+energy_per_mass = 20.0
+
+[domain]
+min = [-0.1, -0.1, -0.1]
+max = [0.5, 0.2, 0.5]
+
+[[particles]]
+kind = "fluid"
+min = [0.0, 0.0, 0.0]
+max = [0.4, 0.1, 0.2]
+exclude_blocks = [2]
+
+[[particles]]
+kind = "wall"
+shape = "container"
+min = [0.0, 0.0, 0.0]
+max = [0.4, 0.1, 0.4]
+
+[[particles]]
+kind = "wall"
+shape = "stl"
+file = ")" +
+         stl_file + R"("
+
+[output]
+energy_every = 50
+)";
+}
+
 } // namespace revsph::testing

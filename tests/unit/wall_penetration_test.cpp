@@ -25,38 +25,6 @@
 namespace revsph {
 namespace {
 
-std::string ramp_case(const std::string& stl_path) {
-  return R"(model = "wcsph"
-dimension = 3
-name = "ramp"
-[physics]
-rest_density = 1000.0
-sound_speed = 20.0
-gravity = 9.8
-[discretisation]
-dr = 0.02
-support_radius_over_dr = 3.0
-courant_number = 0.2
-[domain]
-min = [-0.1, -0.1, -0.1]
-max = [0.5, 0.2, 0.5]
-[[particles]]
-kind = "fluid"
-min = [0.0, 0.0, 0.0]
-max = [0.4, 0.1, 0.2]
-exclude_blocks = [2]
-[[particles]]
-kind = "wall"
-shape = "container"
-min = [0.0, 0.0, 0.0]
-max = [0.4, 0.1, 0.4]
-[[particles]]
-kind = "wall"
-shape = "stl"
-file = ")" +
-         stl_path + "\"\n";
-}
-
 // The state with fluid particle 0 moved to p.
 StateSnapshot with_first_fluid_at(StateSnapshot state, const Vec<3>& p) {
   for (FieldSnapshot& field : state.fields) {
@@ -73,7 +41,7 @@ TEST(WallPenetration, ASlopedStlWallHoldsWhatIsInItsParticlesCells) {
   testing::TempDirectory directory("revsph-wall-penetration");
   const std::string stl = (directory.path() / "ramp.stl").string();
   std::ofstream(stl) << testing::ramp_stl();
-  const std::string text = ramp_case(stl);
+  const std::string text = testing::ramp_case(stl);
   auto simulation = testing::make_simulation_from_text(text);
   const CaseFile case_file = CaseFile::parse(text, "ramp.toml");
   const cli::ParticleChecks checks(case_file, simulation->info());
