@@ -261,7 +261,7 @@ BlockSpec<D> read_block_spec(const CaseFile& case_file, std::size_t index, doubl
   if (std::find(shapes.begin(), shapes.end(), shape) == shapes.end()) {
     std::string message = "unknown shape \"" + shape + "\"; expected one of";
     for (const std::string_view known : shapes) {
-      message += (known == shapes.front() ? " " : ", ") + std::string(known);
+      message += (known == shapes.front() ? " \"" : ", \"") + std::string(known) + "\"";
     }
     case_file.fail(field("shape"), message);
   }

@@ -312,7 +312,8 @@ const std::vector<Defect>& defects() {
        "shape = \"box\"",
        "shape = \"sphere\"",
        "particles[0].shape",
-       {"unknown shape \"sphere\"; expected one of box, container, annulus, outline, points, stl"}},
+       {"unknown shape \"sphere\"; expected one of \"box\", \"container\", \"annulus\", "
+        "\"outline\", \"points\", \"stl\""}},
       {"layers_on_a_box",
        "max = [1.0, 2.0]",
        "max = [1.0, 2.0]\nlayers = 2",

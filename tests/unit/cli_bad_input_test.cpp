@@ -177,8 +177,8 @@ const std::vector<Defect>& defects() {
        "shape = \"box\"\nlattice = \"square\"\nmin = [0.0, 0.0]\nmax = [1.0, 2.0]",
        "shape = \"sphere\"\nlattice = \"square\"\ncentre = [0.5, 1.0]\nradius = 0.5",
        "particles[0].shape",
-       {"unknown shape \"sphere\"; expected one of box, container, annulus, outline, points, "
-        "stl"}},
+       {"unknown shape \"sphere\"; expected one of \"box\", \"container\", \"annulus\", "
+        "\"outline\", \"points\", \"stl\""}},
       {"capitalised_shape",
        "shape = \"box\"\nlattice = \"square\"\nmin = [0.0, 0.0]\nmax = [1.0, 2.0]",
        "shape = \"Points\"\nfile = \"water.csv\"",
