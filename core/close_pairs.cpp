@@ -2,6 +2,7 @@
 
 #include "core/cell_list.hpp"
 #include "core/distributed/processes.hpp"
+#include "core/finite_positions.hpp"
 #include "core/particle_blocks.hpp"
 
 #include <algorithm>
@@ -73,38 +74,14 @@ template std::uint64_t count_close_pairs<3>(const CoordinateView<3>&, std::size_
 
 namespace {
 
-// This process's finite positions of `sets`, appended (a cell list cannot place a non-finite
-// one, and a run that made one faults on its own).
-template <int D>
-void gather_positions(const StateSnapshot& state, const std::vector<std::string>& sets,
-                      CoordinateArrays<D>& points) {
-  for (const std::string& set : sets) {
-    const FieldSnapshot* position = state.find(set, "position");
-    if (position == nullptr) {
-      continue;
-    }
-    for (std::size_t i = 0; i < position->count; ++i) {
-      Vec<D> p{};
-      bool finite = true;
-      for (int k = 0; k < D; ++k) {
-        p[k] = position->real(k, i);
-        finite = finite && std::isfinite(p[k]);
-      }
-      for (int k = 0; k < D && finite; ++k) {
-        points[k].push_back(p[k]);
-      }
-    }
-  }
-}
-
 template <int D>
 std::uint64_t count_own(const StateSnapshot& state, const std::vector<std::string>& moving_sets,
                         const std::vector<std::string>& fixed_sets, double distance,
                         const PeriodicBox& box) {
   CoordinateArrays<D> points;
-  gather_positions<D>(state, moving_sets, points);
+  append_finite_positions<D>(state, moving_sets, points);
   const std::size_t moving = points[0].size();
-  gather_positions<D>(state, fixed_sets, points);
+  append_finite_positions<D>(state, fixed_sets, points);
   return count_close_pairs<D>(view_of<D>(points), moving, distance, box);
 }
 

@@ -1,5 +1,7 @@
 #include "core/wall_penetration.hpp"
 
+#include "core/finite_positions.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -21,23 +23,12 @@ WallPenetration<D>::WallPenetration(std::span<const WallRegion<D>> regions,
     if (std::find(sets_.begin(), sets_.end(), region.kind()) != sets_.end()) {
       continue;
     }
-    const FieldSnapshot* position = state.find(region.kind(), "position");
-    if (position == nullptr) {
+    if (state.find(region.kind(), "position") == nullptr) {
       continue;
     }
     sets_.push_back(region.kind());
-    for (std::size_t i = 0; i < position->count; ++i) {
-      bool finite = true;
-      for (int k = 0; k < D; ++k) {
-        finite = finite && std::isfinite(position->real(k, i));
-      }
-      for (int k = 0; k < D && finite; ++k) {
-        points_[k].push_back(position->real(k, i));
-      }
-      if (finite) {
-        set_.push_back(static_cast<std::uint32_t>(sets_.size() - 1));
-      }
-    }
+    append_finite_positions<D>(state, {region.kind()}, points_);
+    set_.resize(points_[0].size(), static_cast<std::uint32_t>(sets_.size() - 1));
   }
   if (set_.empty()) {
     return;

@@ -1,6 +1,7 @@
 #include "tools/revsph/particle_checks.hpp"
 
 #include "core/distributed/processes.hpp"
+#include "core/finite_positions.hpp"
 #include "core/smallest_distance.hpp"
 #include "core/wall_penetration.hpp"
 
@@ -40,33 +41,14 @@ void count_own(const std::vector<WallRegion<D>>& regions, const StateSnapshot& s
   }
 }
 
-// This process's particles' positions, those of the moving sets first; non-finite ones are left
-// out (a cell list cannot place them, and a run that made one faults on its own).
+// Over this process's particles, those of the moving sets first.
 template <int D>
 double own_smallest_distance(const StateSnapshot& state, const std::vector<std::string>& moving,
                              const std::vector<std::string>& fixed, double cell_size) {
   CoordinateArrays<D> points;
-  auto gather = [&](const std::vector<std::string>& sets) {
-    for (const std::string& set : sets) {
-      const FieldSnapshot* position = state.find(set, "position");
-      if (position == nullptr) {
-        continue;
-      }
-      for (std::size_t i = 0; i < position->count; ++i) {
-        const Vec<D> p = position_of<D>(*position, i);
-        bool finite = true;
-        for (int k = 0; k < D; ++k) {
-          finite = finite && std::isfinite(p[k]);
-        }
-        for (int k = 0; k < D && finite; ++k) {
-          points[k].push_back(p[k]);
-        }
-      }
-    }
-  };
-  gather(moving);
+  append_finite_positions<D>(state, moving, points);
   const std::size_t moving_count = points[0].size();
-  gather(fixed);
+  append_finite_positions<D>(state, fixed, points);
   return smallest_distance<D>(view_of<D>(points), moving_count, cell_size);
 }
 
