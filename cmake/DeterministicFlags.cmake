@@ -18,6 +18,10 @@ target_compile_options(revsph_flags INTERFACE
   # State fields are declared with designated initialisers that leave out the members with
   # defaults (core/particle_sets.hpp); GCC 12 warns about each omission, GCC 13 no longer does.
   -Wno-missing-field-initializers)
+# Eigen's SIMD paths order sums their own way and use fused multiply-adds on aarch64 (NEON's
+# vfmaq_f64, which -ffp-contract=off cannot stop): its scalar path keeps the bits the same on
+# every CPU.
+target_compile_definitions(revsph_flags INTERFACE EIGEN_DONT_VECTORIZE)
 target_include_directories(revsph_flags INTERFACE ${PROJECT_SOURCE_DIR})
 
 option(REVSPH_SANITIZE "Build with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)

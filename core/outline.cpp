@@ -1,4 +1,5 @@
 #include "core/outline.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 
 #include <algorithm>
 #include <array>
@@ -15,7 +16,7 @@ Vec<2> minus(const Vec<2>& a, const Vec<2>& b) {
   return {a[0] - b[0], a[1] - b[1]};
 }
 double norm(const Vec<2>& a) {
-  return std::hypot(a[0], a[1]);
+  return dmath::hypot(a[0], a[1]);
 }
 
 double distance_to_segment(const Vec<2>& p, const Vec<2>& a, const Vec<2>& b) {
@@ -25,7 +26,7 @@ double distance_to_segment(const Vec<2>& p, const Vec<2>& a, const Vec<2>& b) {
   const double t = length_squared > 0.0
                        ? std::clamp((ap[0] * ab[0] + ap[1] * ab[1]) / length_squared, 0.0, 1.0)
                        : 0.0;
-  return std::hypot(ap[0] - t * ab[0], ap[1] - t * ab[1]);
+  return dmath::hypot(ap[0] - t * ab[0], ap[1] - t * ab[1]);
 }
 
 } // namespace
@@ -56,12 +57,12 @@ Outline::Outline(const std::vector<Vec<2>>& vertices, const std::vector<double>&
       continue;
     }
     const double cosine = (in[0] * out[0] + in[1] * out[1]) / (norm(in) * norm(out));
-    const double theta = std::acos(std::clamp(cosine, -1.0, 1.0));
+    const double theta = dmath::acos(std::clamp(cosine, -1.0, 1.0));
     if (!(theta > 1e-9 && theta < std::numbers::pi - 1e-9)) {
       throw std::invalid_argument("vertex " + std::to_string(i) +
                                   " is straight or folded back: it cannot be rounded");
     }
-    tangent[i] = r / std::tan(0.5 * theta);
+    tangent[i] = r / dmath::tan(0.5 * theta);
   }
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t j = (i + 1) % n;
@@ -82,15 +83,15 @@ Outline::Outline(const std::vector<Vec<2>>& vertices, const std::vector<double>&
     const Vec<2> out = minus(vertices[(i + 1) % n], vertex);
     const Vec<2> u{in[0] / norm(in), in[1] / norm(in)};
     const Vec<2> w{out[0] / norm(out), out[1] / norm(out)};
-    const double theta = std::acos(std::clamp(u[0] * w[0] + u[1] * w[1], -1.0, 1.0));
+    const double theta = dmath::acos(std::clamp(u[0] * w[0] + u[1] * w[1], -1.0, 1.0));
     const Vec<2> start{vertex[0] + tangent[i] * u[0], vertex[1] + tangent[i] * u[1]};
     const Vec<2> end{vertex[0] + tangent[i] * w[0], vertex[1] + tangent[i] * w[1]};
     const Vec<2> bisector{u[0] + w[0], u[1] + w[1]};
-    const double centre_distance = r / std::sin(0.5 * theta);
+    const double centre_distance = r / dmath::sin(0.5 * theta);
     const Vec<2> centre{vertex[0] + centre_distance * bisector[0] / norm(bisector),
                         vertex[1] + centre_distance * bisector[1] / norm(bisector)};
-    const double a0 = std::atan2(start[1] - centre[1], start[0] - centre[0]);
-    const double a1 = std::atan2(end[1] - centre[1], end[0] - centre[0]);
+    const double a0 = dmath::atan2(start[1] - centre[1], start[0] - centre[0]);
+    const double a1 = dmath::atan2(end[1] - centre[1], end[0] - centre[0]);
     // The short way round: the arc turns by pi - theta.
     double sweep = a1 - a0;
     while (sweep > std::numbers::pi) {
@@ -103,7 +104,7 @@ Outline::Outline(const std::vector<Vec<2>>& vertices, const std::vector<double>&
         std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / (std::numbers::pi / 90.0))));
     for (int c = 0; c <= chords; ++c) {
       const double angle = a0 + sweep * static_cast<double>(c) / chords;
-      boundary_.push_back({centre[0] + r * std::cos(angle), centre[1] + r * std::sin(angle)});
+      boundary_.push_back({centre[0] + r * dmath::cos(angle), centre[1] + r * dmath::sin(angle)});
     }
   }
   if (!(area() > 0.0)) {

@@ -1,4 +1,5 @@
 #include "core/particle_blocks.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 
 #include "core/block_spec.hpp"
 #include "core/coincident_particles.hpp"
@@ -156,7 +157,7 @@ std::vector<Vec<D>> lattice_points_outside(Lattice lattice, const Box<D>& region
 std::vector<Vec<2>> vogel_points(const Box<2>& region, double spacing) {
   const double golden_angle = std::numbers::pi * (3.0 - std::sqrt(5.0));
   const Vec<2> centre{0.5 * (region.min[0] + region.max[0]), 0.5 * (region.min[1] + region.max[1])};
-  const double reach = std::hypot(region.max[0] - centre[0], region.max[1] - centre[1]);
+  const double reach = dmath::hypot(region.max[0] - centre[0], region.max[1] - centre[1]);
   const double margin = 0.25 * spacing * (1.0 - relative_tolerance);
   std::vector<Vec<2>> points;
   for (long k = 0;; ++k) {
@@ -165,7 +166,7 @@ std::vector<Vec<2>> vogel_points(const Box<2>& region, double spacing) {
       break;
     }
     const double angle = static_cast<double>(k) * golden_angle;
-    const Vec<2> p{centre[0] + radius * std::cos(angle), centre[1] + radius * std::sin(angle)};
+    const Vec<2> p{centre[0] + radius * dmath::cos(angle), centre[1] + radius * dmath::sin(angle)};
     if (p[0] >= region.min[0] + margin && p[0] <= region.max[0] - margin &&
         p[1] >= region.min[1] + margin && p[1] <= region.max[1] - margin) {
       points.push_back(p);
@@ -259,8 +260,8 @@ std::vector<Vec<2>> ring_points(const AnnulusSpec& annulus, double spacing) {
     const double offset = ring % 2 == 1 ? 0.5 * step : 0.0;
     for (long k = 0; k < count; ++k) {
       const double angle = offset + static_cast<double>(k) * step;
-      points.push_back(Vec<2>{annulus.centre[0] + radius * std::cos(angle),
-                              annulus.centre[1] + radius * std::sin(angle)});
+      points.push_back(Vec<2>{annulus.centre[0] + radius * dmath::cos(angle),
+                              annulus.centre[1] + radius * dmath::sin(angle)});
     }
   }
   return points;
@@ -422,7 +423,8 @@ read_particle_blocks(const CaseFile& case_file, double default_spacing, const Bo
     specs.push_back(read_block<D>(case_file, b, default_spacing, kinds));
     const double block = estimated_particles<D>(specs.back());
     // A block denser than dr: its particles' neighbour lists grow as (dr / spacing)^D.
-    const double denser = std::max(1.0, std::pow(default_spacing / specs.back().spacing, D));
+    const double denser =
+        std::max(1.0, dmath::integer_power(default_spacing / specs.back().spacing, D));
     particles += block;
     needed +=
         block * (budget.bytes_per_particle + budget.neighbour_bytes_per_particle * (denser - 1.0));

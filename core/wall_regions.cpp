@@ -1,4 +1,5 @@
 #include "core/wall_regions.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 
 #include "core/outline.hpp"
 
@@ -21,7 +22,8 @@ bool WallRegion<D>::in_shape(const Vec<D>& p) const {
     return strictly_inside<D>(block_.outer, p) && !strictly_inside<D>(block_.region, p);
   case BlockShape::annulus:
     if constexpr (D == 2) {
-      const double r = std::hypot(p[0] - block_.annulus.centre[0], p[1] - block_.annulus.centre[1]);
+      const double r =
+          dmath::hypot(p[0] - block_.annulus.centre[0], p[1] - block_.annulus.centre[1]);
       return block_.annulus.inner_radius < r && r < block_.annulus.outer_radius;
     }
     return false;

@@ -11,6 +11,8 @@
 // Neighbours are counted on a grid of cells of side the reach (the 3^d cells around a particle,
 // scaled by the ball's share of their volume): an estimate, which changes only the speed.
 
+#include "fixedpoint/deterministic_math.hpp"
+
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -57,7 +59,7 @@ inline std::vector<float> estimated_work(std::span<const double> points,
   const double ball = dimension == 1   ? 2.0
                       : dimension == 2 ? std::numbers::pi
                                        : 4.0 / 3.0 * std::numbers::pi;
-  const double ball_share = ball / std::pow(3.0, dimension);
+  const double ball_share = ball / dmath::integer_power(3.0, dimension);
   std::vector<float> work(weighed);
   std::int64_t around[3] = {0, 0, 0};
   const int neighbour_cells = dimension == 1 ? 3 : dimension == 2 ? 9 : 27;

@@ -4,6 +4,7 @@
 
 #include "core/case_values.hpp"
 #include "core/particle_update.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 #include "models/entropic/dissipation_terms.hpp"
 #include "models/entropic/model.hpp"
 
@@ -128,7 +129,7 @@ void Model<D>::dissipate(double tau) {
         }
         const double heat = dissipation_sums_.value(D, s) - 0.5 * impulse_squared / gas_mass[i];
         const double thermal = gas_mass[i] * heat_capacity * temperature_[s];
-        const double change = gas_mass[i] * heat_capacity * std::log1p(heat / thermal);
+        const double change = gas_mass[i] * heat_capacity * dmath::log1p(heat / thermal);
         std::int64_t increment = 0;
         return fits && fixedpoint::try_round_up_to_fixed(change, s_scale, increment) &&
                fixedpoint::try_add(entropy.at(0, i), increment, entropy.at(0, i));

@@ -26,6 +26,8 @@
 //
 // pow and exp are not correctly rounded: results are reproducible bit for bit only with one libm.
 
+#include "fixedpoint/deterministic_math.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <concepts>
@@ -70,26 +72,26 @@ inline double reference_temperature(const StiffenedGas& eos) {
 
 // eps(rho, s), written as printed (eqs. 88 and 90).
 inline double energy_density(const IdealGas& eos, double density, double entropy_density) {
-  return std::pow(density, eos.gamma) / (eos.gamma - 1.0) *
-         std::exp(entropy_density / (density * eos.heat_capacity));
+  return dmath::pow(density, eos.gamma) / (eos.gamma - 1.0) *
+         dmath::exp(entropy_density / (density * eos.heat_capacity));
 }
 inline double energy_density(const StiffenedGas& eos, double density, double entropy_density) {
   const double c0_squared = eos.sound_speed * eos.sound_speed;
   return density * (c0_squared / (eos.gamma * (eos.gamma - 1.0)) *
-                        std::pow(density / eos.rest_density, eos.gamma - 1.0) *
-                        std::exp(entropy_density / (eos.heat_capacity * density)) +
+                        dmath::pow(density / eos.rest_density, eos.gamma - 1.0) *
+                        dmath::exp(entropy_density / (eos.heat_capacity * density)) +
                     (eos.rest_density * c0_squared - eos.gamma * eos.reference_pressure) /
                         (eos.gamma * density));
 }
 
 // T(rho, sigma): eqs. (89b) and (91b) with s / rho = sigma. Needs rho > 0.
 inline double temperature(const IdealGas& eos, double density, double specific_entropy) {
-  return std::pow(density, eos.gamma - 1.0) * std::exp(specific_entropy / eos.heat_capacity) /
+  return dmath::pow(density, eos.gamma - 1.0) * dmath::exp(specific_entropy / eos.heat_capacity) /
          (eos.heat_capacity * (eos.gamma - 1.0));
 }
 inline double temperature(const StiffenedGas& eos, double density, double specific_entropy) {
-  return reference_temperature(eos) * std::pow(density / eos.rest_density, eos.gamma - 1.0) *
-         std::exp(specific_entropy / eos.heat_capacity);
+  return reference_temperature(eos) * dmath::pow(density / eos.rest_density, eos.gamma - 1.0) *
+         dmath::exp(specific_entropy / eos.heat_capacity);
 }
 
 namespace detail {
@@ -116,7 +118,7 @@ inline std::optional<double> entropy_for_thermal_energy(double heat_capacity, do
   if (!(ratio > 0.0) || !std::isfinite(ratio)) {
     return std::nullopt;
   }
-  const double specific_entropy = heat_capacity * std::log(ratio);
+  const double specific_entropy = heat_capacity * dmath::log(ratio);
   if (!std::isfinite(specific_entropy)) {
     return std::nullopt;
   }
@@ -188,7 +190,7 @@ inline std::optional<double> specific_entropy_change(double heat_capacity, doubl
   if (!(relative > -1.0) || !std::isfinite(relative)) {
     return std::nullopt;
   }
-  return heat_capacity * std::log1p(relative);
+  return heat_capacity * dmath::log1p(relative);
 }
 
 // The first bad constant as "name must be ... (got value)", or nothing when all are valid.

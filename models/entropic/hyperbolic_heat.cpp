@@ -5,6 +5,7 @@
 #include "core/case_values.hpp"
 #include "core/particle_update.hpp"
 #include "core/verlet.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 #include "models/entropic/hyperbolic_heat_terms.hpp"
 #include "models/entropic/model.hpp"
 
@@ -93,7 +94,7 @@ void Model<D>::relax_flux(double dt) {
   update_each_particle(
       entropy, "overflow or non-finite value in the relaxation", [&](std::size_t i) {
         const std::uint32_t s = slots[i];
-        const double decay = std::exp(-2.0 * c_w * volume_[s] * dt / parameters_.relaxation_time);
+        const double decay = dmath::exp(-2.0 * c_w * volume_[s] * dt / parameters_.relaxation_time);
         double before = 0.0;
         double after = 0.0;
         bool fits = true;
@@ -111,7 +112,7 @@ void Model<D>::relax_flux(double dt) {
         std::int64_t increment = 0;
         return fits &&
                fixedpoint::try_round_up_to_fixed(gas_mass[i] * heat_capacity *
-                                                     std::log1p(heat / thermal),
+                                                     dmath::log1p(heat / thermal),
                                                  entropy.info().scale, increment) &&
                fixedpoint::try_add(entropy.at(0, i), increment, entropy.at(0, i));
       });

@@ -1,4 +1,5 @@
 #include "models/entropic/model.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 
 #include "core/carrier_field.hpp"
 #include "core/case_values.hpp"
@@ -31,7 +32,7 @@ std::array<SummedQuantity, 3> kernel_sum_quantities(const Parameters<D>& paramet
   return {SummedQuantity{"density", parameters.density_scale},
           SummedQuantity{"entropy_density", fixedpoint::Scale::covering(entropy_density, 48)},
           SummedQuantity{"number_density",
-                         fixedpoint::Scale::covering(std::pow(parameters.dr, -D), 48)}};
+                         fixedpoint::Scale::covering(dmath::integer_power(parameters.dr, -D), 48)}};
 }
 
 // The hottest thermal wall (0 K without thermal walls).
@@ -69,7 +70,7 @@ template <int D>
 std::array<SummedQuantity, D + 1> dissipation_quantities(const Parameters<D>& parameters) {
   std::array<SummedQuantity, D + 1> quantities{};
   quantities.fill({"momentum", parameters.momentum_scale});
-  const double mass = parameters.initial_density * std::pow(parameters.dr, D);
+  const double mass = parameters.initial_density * dmath::integer_power(parameters.dr, D);
   quantities[D] = {"heat",
                    fixedpoint::Scale::covering(
                        mass * parameters.heat_capacity() * initial_temperature(parameters), 56)};
@@ -103,7 +104,7 @@ Model<D>::Model(Parameters<D> parameters, SimulationInfo info, State<D> state)
 template <int D>
 std::array<SummedQuantity, D + 2> Model<D>::wall_mirror_quantities(const Parameters<D>& parameters,
                                                                    const State<D>& state) {
-  const double density = std::pow(parameters.dr, -D);
+  const double density = dmath::integer_power(parameters.dr, -D);
   std::array<SummedQuantity, D + 2> quantities{};
   // Without thermal walls the sums are unused: any finite scale will do.
   const double temperature_magnitude =

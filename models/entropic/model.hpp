@@ -13,6 +13,7 @@
 #include "core/fixed_targets.hpp"
 #include "core/model_api.hpp"
 #include "core/pair_system.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 #include "models/entropic/parameters.hpp"
 #include "models/entropic/state.hpp"
 
@@ -31,7 +32,7 @@ namespace revsph::entropic {
 template <int D>
 double wall_temperature_sum_magnitude(double hottest_wall, double initial_gas_temperature,
                                       double dr) {
-  return 4.0 * std::max(hottest_wall, initial_gas_temperature) * std::pow(dr, -D);
+  return 4.0 * std::max(hottest_wall, initial_gas_temperature) * dmath::integer_power(dr, -D);
 }
 
 template <int D>

@@ -1,4 +1,5 @@
 #include "models/entropic/parameters.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 
 #include "models/entropic/case_keys.hpp" // generated from keys.toml
 
@@ -112,9 +113,9 @@ std::optional<std::pair<double, double>> Parameters<D>::hydrostatic_state(double
           stiffening = stiffening_pressure(law);
         }
         const double r = (law.gamma - 1.0) * law.heat_capacity;
-        const double integral = g_t != 0.0 ? std::log(t / t0) / g_t : z / t0;
+        const double integral = g_t != 0.0 ? dmath::log(t / t0) / g_t : z / t0;
         const double shifted =
-            (initial_pressure + stiffening) * std::exp(-gravity / r * integral); // p + B
+            (initial_pressure + stiffening) * dmath::exp(-gravity / r * integral); // p + B
         const double density = shifted / (r * t);
         const std::optional<double> sigma =
             specific_entropy_for_pressure(gas_law, density, shifted - stiffening);
@@ -206,7 +207,7 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   // Default scales: positions keep 52 fraction bits below the domain size, so the double view of
   // a position is exact; momenta resolve m c * 2^-50 and entropies max(|m sigma0|, m c_V) * 2^-48
   // for the particle mass m = rho dr^D; kernel sums resolve rho * 2^-48.
-  const double mass = p.initial_density * std::pow(p.dr, D);
+  const double mass = p.initial_density * dmath::integer_power(p.dr, D);
   const double entropy_magnitude =
       std::max(std::abs(mass * p.initial_specific_entropy()), mass * p.heat_capacity());
   p.position_scale = k.position_exponent.read(case_file, p.domain.max_abs_coordinate(), p.dr);

@@ -1,4 +1,5 @@
 #include "models/entropic/setup.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 
 #include "core/case_values.hpp"
 #include "core/dimension.hpp"
@@ -58,15 +59,15 @@ void apply_initial_temperature(const CaseFile& case_file, const Parameters<D>& p
         const double width = highest[k] - lowest[k];
         return width > 0.0 ? (positions[i][k] - lowest[k]) / width : 0.5;
       };
-      t += perturbation * std::cos(std::numbers::pi * scaled(0)) *
-           std::sin(std::numbers::pi * scaled(D - 1));
+      t += perturbation * dmath::cos(std::numbers::pi * scaled(0)) *
+           dmath::sin(std::numbers::pi * scaled(D - 1));
     }
     if (!(t > 0.0)) {
       case_file.fail(
           perturbation != 0.0 ? "initial.temperature_perturbation" : "initial.temperature_gradient",
           "gives a temperature <= 0 K at a gas particle (T0 = " + format_scientific(t0, 3) + " K)");
     }
-    entropies[i] = masses[i] * (sigma0 + parameters.heat_capacity() * std::log(t / t0));
+    entropies[i] = masses[i] * (sigma0 + parameters.heat_capacity() * dmath::log(t / t0));
   }
 }
 
@@ -115,13 +116,13 @@ void apply_hydrostatic_start(const CaseFile& case_file, const Parameters<D>& par
           return width > 0.0 ? (x[k] - low[k]) / width : 0.5;
         };
         const double t = t0 + gradient * z;
-        const double seeded = t + perturbation * std::cos(std::numbers::pi * scaled(0)) *
-                                      std::sin(std::numbers::pi * scaled(D - 1));
+        const double seeded = t + perturbation * dmath::cos(std::numbers::pi * scaled(0)) *
+                                      dmath::sin(std::numbers::pi * scaled(D - 1));
         if (!(seeded > 0.0)) {
           case_file.fail("initial.temperature_perturbation",
                          "gives a temperature <= 0 K at a gas particle");
         }
-        sigma += parameters.heat_capacity() * std::log(seeded / t);
+        sigma += parameters.heat_capacity() * dmath::log(seeded / t);
       }
       double& m = (*masses[set])[i];
       m *= state->first / parameters.initial_density;

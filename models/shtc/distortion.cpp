@@ -1,4 +1,5 @@
 #include "models/shtc/distortion.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 
 #include "fixedpoint/conversion.hpp"
 
@@ -11,16 +12,16 @@ namespace {
 
 // Odd functions bit for bit: f(-t) == -f(t) whatever the libm does with negative arguments.
 double odd_tan(double t) {
-  return std::copysign(std::tan(std::fabs(t)), t);
+  return std::copysign(dmath::tan(std::fabs(t)), t);
 }
 double odd_sin(double t) {
-  return std::copysign(std::sin(std::fabs(t)), t);
+  return std::copysign(dmath::sin(std::fabs(t)), t);
 }
 double odd_tanh(double t) {
-  return std::copysign(std::tanh(std::fabs(t)), t);
+  return std::copysign(dmath::tanh(std::fabs(t)), t);
 }
 double odd_sinh(double t) {
-  return std::copysign(std::sinh(std::fabs(t)), t);
+  return std::copysign(dmath::sinh(std::fabs(t)), t);
 }
 
 // Lifting steps on the columns of U (right multiplication by a unit triangular matrix).
@@ -61,8 +62,8 @@ public:
   // U <- U diag(e^t, e^-t) on columns (i, j) = U R(-pi/4) B(t) R(pi/4). The two fixed rotations
   // use the same constants with opposite signs, so stretch(-t) is exactly the inverse sequence.
   bool stretch(int i, int j, double t) {
-    static const double a = std::tan(std::numbers::pi / 8.0);
-    static const double b = std::sin(std::numbers::pi / 4.0);
+    static const double a = dmath::tan(std::numbers::pi / 8.0);
+    static const double b = dmath::sin(std::numbers::pi / 4.0);
     return rotate_by(i, j, a, -b) && boost(i, j, t) && rotate_by(i, j, -a, b);
   }
 
@@ -148,8 +149,8 @@ bool try_make_distortion(const Matrix<D>& a, const DistortionScales& scales,
   if (!(determinant > 0.0) || !std::isfinite(determinant)) {
     return false;
   }
-  const double log_det = std::log(determinant);
-  const double unimodular_factor = std::exp(-log_det / D);
+  const double log_det = dmath::log(determinant);
+  const double unimodular_factor = dmath::exp(-log_det / D);
   if (!fixedpoint::try_to_fixed(log_det, scales.log_det, out.log_det)) {
     return false;
   }
@@ -166,7 +167,7 @@ bool try_make_distortion(const Matrix<D>& a, const DistortionScales& scales,
 
 template <int D>
 Matrix<D> to_matrix(const ExactDistortion<D>& a, const DistortionScales& scales) {
-  const double factor = std::exp(fixedpoint::to_real(a.log_det, scales.log_det) / D);
+  const double factor = dmath::exp(fixedpoint::to_real(a.log_det, scales.log_det) / D);
   Matrix<D> result;
   for (int r = 0; r < D; ++r) {
     for (int c = 0; c < D; ++c) {

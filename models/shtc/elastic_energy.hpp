@@ -18,6 +18,8 @@
 // In 2D the distortion is embedded in 3D as plane strain, A33 = 1 (so that dev uses 1/3 as in
 // eq. 32 and the energy of the undistorted state is zero); the in-plane block is returned.
 
+#include "fixedpoint/deterministic_math.hpp"
+
 #include <Eigen/Dense>
 
 #include <cmath>
@@ -75,7 +77,7 @@ double shear_energy(const ElasticMaterial& material, const Tensor<D>& distortion
   }
   const Eigen::Matrix3d inverse = a.inverse();
   const Eigen::Matrix3d b = inverse * inverse.transpose();
-  return 0.5 * cs2 * (b.trace() - 3.0 + 2.0 * std::log(a.determinant()));
+  return 0.5 * cs2 * (b.trace() - 3.0 + 2.0 * dmath::log(a.determinant()));
 }
 
 // d eps_s / d A, the in-plane block in 2D.

@@ -14,6 +14,7 @@
 #include "core/kernel_wendland.hpp"
 #include "core/pair_sum.hpp"
 #include "core/slot_layout.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 
 #include <Eigen/Dense>
 
@@ -95,7 +96,7 @@ template <int D>
 GradientMatrix<D> renormalisation_inverse(const GradientMatrix<D>& h) {
   const double determinant = h.determinant();
   const double scale = h.cwiseAbs().maxCoeff();
-  if (!(std::fabs(determinant) > 1e-12 * std::pow(scale, D))) {
+  if (!(std::fabs(determinant) > 1e-12 * dmath::integer_power(scale, D))) {
     return GradientMatrix<D>::Zero();
   }
   return h.inverse();

@@ -1,4 +1,5 @@
 #include "models/shtc/parameters.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 
 #include "models/shtc/case_keys.hpp" // generated from keys.toml
 
@@ -179,7 +180,7 @@ double Parameters<D>::drive_ramp(double t) const {
   if (!(t < ramp_time)) {
     return 1.0;
   }
-  const double s = std::sin(0.5 * std::numbers::pi * t / ramp_time);
+  const double s = dmath::sin(0.5 * std::numbers::pi * t / ramp_time);
   return s * s;
 }
 

@@ -6,6 +6,7 @@
 // For small strains the symmetric part of A - I decays as exp(-6 t / tau), which gives the
 // Navier-Stokes viscosity nu = tau cs^2 / 6 (eqs. 65, 69).
 
+#include "fixedpoint/deterministic_math.hpp"
 #include "models/shtc/elastic_energy.hpp"
 
 #include <cmath>
@@ -42,10 +43,10 @@ inline RelaxationSplitting amplifying_by(double target, double length) {
     return 1.0 - z + z * z / 2.0 - z * z * z / 6.0 + z * z * z * z / 24.0;
   };
   int substeps = 1;
-  while (std::pow(target, 1.0 / substeps) < amplification(1.0)) {
+  while (dmath::pow(target, 1.0 / substeps) < amplification(1.0)) {
     ++substeps;
   }
-  const double per_substep = std::pow(target, 1.0 / substeps);
+  const double per_substep = dmath::pow(target, 1.0 / substeps);
   double low = 0.0;
   double high = 1.0;
   for (int i = 0; i < 80; ++i) {

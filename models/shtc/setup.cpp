@@ -1,4 +1,5 @@
 #include "models/shtc/setup.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 
 #include "core/case_values.hpp"
 #include "core/dimension.hpp"
@@ -30,11 +31,11 @@ Vec<D> initial_velocity(const Parameters<D>& p, const Vec<D>& x) {
     const BendingPlateField& f = p.plate;
     const double s = f.alpha * (x[0] - f.x0);
     v[1] = f.amplitude * f.omega *
-           (f.a1 * (std::sinh(s) + std::sin(s)) - f.a2 * (std::cosh(s) + std::cos(s)));
+           (f.a1 * (dmath::sinh(s) + dmath::sin(s)) - f.a2 * (dmath::cosh(s) + dmath::cos(s)));
   } else if (p.initial_field == InitialField::twisting_column) {
     if constexpr (D == 3) {
       const double factor =
-          p.column.omega * std::sin(std::numbers::pi * x[2] / (2.0 * p.column.height));
+          p.column.omega * dmath::sin(std::numbers::pi * x[2] / (2.0 * p.column.height));
       v[0] = factor * x[1];
       v[1] = -factor * x[0];
     }

@@ -2,6 +2,7 @@
 // reversible palindrome: the superleak's friction on the normal fluid and the heater. Both act
 // on the mean of the copies and give both copies the same increments.
 #include "core/kernel_wendland.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 #include "models/superfluid/model.hpp"
 
 #include <algorithm>
@@ -55,7 +56,7 @@ void Model<D, Arith>::relax_superleak(std::int64_t) {
   }
   update_constants();
   const Helium& he = parameters_.helium;
-  const double decay = std::exp(-leak.rate * info_.dt);
+  const double decay = dmath::exp(-leak.rate * info_.dt);
   const MeanState mean = mean_state();
   const std::span<const double> mass =
       layout_.part_of(std::span<const double>(mass_), state_.fluid);

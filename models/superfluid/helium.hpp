@@ -11,6 +11,8 @@
 // without the flow part the discrete equations (19) do not conserve energy (Appendix B, Prop. 1
 // takes the test function T = de/ds; scheme_check.py measures both).
 
+#include "fixedpoint/deterministic_math.hpp"
+
 #include <cmath>
 
 namespace revsph::superfluid {
@@ -56,7 +58,7 @@ struct Helium {
   // The terms of eq. (15) per unit mass.
   double compressional_energy(double rho) const {
     return first_sound_speed * first_sound_speed *
-           (std::log(rho / rest_density) + rest_density / rho - 1.0);
+           (dmath::log(rho / rest_density) + rest_density / rho - 1.0);
   }
   double thermal_energy(double s) const {
     const double ds = s - reference_entropy;

@@ -1,4 +1,5 @@
 // What the superfluid model reports: energy (eq. 15), per-particle views, copy diagnostics.
+#include "fixedpoint/deterministic_math.hpp"
 #include "models/superfluid/model.hpp"
 
 #include <algorithm>
@@ -135,13 +136,13 @@ std::vector<EnergyTerm> Model<D, Arith>::diagnostics(double time) {
     const double pi = std::numbers::pi;
     // Eq. (25): s0 + A s0 prod_k sin(pi x_k / L) cos(sqrt(D) pi u2 t / L) (the 2D formula's
     // frequency sqrt(2) pi u2 / L is the mode's |k| u2); cosines for the adiabatic mode.
-    const double phase = std::cos(std::sqrt(static_cast<double>(D)) * pi * he.second_sound_speed() *
-                                  time / wave.wave_length);
+    const double phase = dmath::cos(std::sqrt(static_cast<double>(D)) * pi *
+                                    he.second_sound_speed() * time / wave.wave_length);
     auto exact = [&](const std::array<double, D>& x) {
       double value = wave.wave_amplitude * s0 * phase;
       for (int k = 0; k < D; ++k) {
         const double angle = pi * x[k] / wave.wave_length;
-        value *= wave.wave_cosine ? std::cos(angle) : std::sin(angle);
+        value *= wave.wave_cosine ? dmath::cos(angle) : dmath::sin(angle);
       }
       return s0 + value;
     };

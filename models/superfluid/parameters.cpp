@@ -1,4 +1,5 @@
 #include "models/superfluid/parameters.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 
 #include "models/superfluid/case_keys.hpp" // generated from keys.toml
 
@@ -147,7 +148,7 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
   p.entropy_scale = k.entropy_exponent.read(case_file, he.reference_entropy);
   p.density_scale = k.density_exponent.read(case_file, he.rest_density);
   p.heat_scale =
-      k.heat_exponent.read(case_file, he.rest_density * std::pow(p.dr, D) *
+      k.heat_exponent.read(case_file, he.rest_density * dmath::integer_power(p.dr, D) *
                                           he.reference_temperature * he.reference_entropy);
   return p;
 }

@@ -1,4 +1,5 @@
 #include "models/superfluid/setup.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 
 #include "core/case_values.hpp"
 #include "core/dimension.hpp"
@@ -49,7 +50,7 @@ InitialCopy<D> initial_copy(const CaseFile& case_file, const Parameters<D>& para
     double wave = f.wave_amplitude;
     for (int k = 0; k < D && wave != 0.0; ++k) {
       const double angle = std::numbers::pi * x[k] / f.wave_length;
-      wave *= f.wave_cosine ? std::cos(angle) : std::sin(angle); // eq. (26)
+      wave *= f.wave_cosine ? dmath::cos(angle) : dmath::sin(angle); // eq. (26)
     }
     const double s =
         he.reference_entropy * (1.0 + wave + f.random_entropy * symmetric_uniform(generator));

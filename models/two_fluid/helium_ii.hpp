@@ -3,6 +3,8 @@
 // (eqs. 19-24, 41) and the decay of the vortex line density (eq. 9) behind the mutual friction
 // (eq. 8). SI units throughout; the paper's constants are printed in CGS (README, "slips").
 
+#include "fixedpoint/deterministic_math.hpp"
+
 #include <cmath>
 #include <numbers>
 
@@ -22,11 +24,11 @@ inline constexpr double roton_gap = 8.9;                 // Delta / k_B in K
 inline double phonon_roton_entropy(double temperature, double first_sound_speed) {
   const double kt = boltzmann * temperature;
   const double phonon = 2.0 * std::numbers::pi * std::numbers::pi * boltzmann *
-                        std::pow(kt / (reduced_planck * first_sound_speed), 3) / 45.0;
-  const double roton = std::pow(boltzmann / (2.0 * std::numbers::pi), 1.5) *
+                        dmath::integer_power(kt / (reduced_planck * first_sound_speed), 3) / 45.0;
+  const double roton = dmath::pow(boltzmann / (2.0 * std::numbers::pi), 1.5) *
                        std::sqrt(roton_effective_mass) * roton_momentum * roton_momentum *
-                       roton_gap * std::exp(-roton_gap / temperature) /
-                       (std::pow(reduced_planck, 3) * std::sqrt(temperature));
+                       roton_gap * dmath::exp(-roton_gap / temperature) /
+                       (dmath::integer_power(reduced_planck, 3) * std::sqrt(temperature));
   return phonon + roton;
 }
 

@@ -1,4 +1,5 @@
 #include "models/two_fluid/hydrostatic_start.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 
 #include "core/arithmetic.hpp"
 #include "core/kernel_wendland.hpp"
@@ -116,7 +117,7 @@ void hydrostatic_masses(const Parameters<D>& p, std::array<std::span<const Vec<D
       const double cut = f < 2 ? 1.0 : number_density[c] / interior_n;
       const double pressure = pressure_at(column, x[D - 1]) * cut * cut;
       const double density =
-          rest * std::pow(1.0 + (pressure - p.background_pressure) / b, 1.0 / p.tait_exponent);
+          rest * dmath::pow(1.0 + (pressure - p.background_pressure) / b, 1.0 / p.tait_exponent);
       mass[f][i] = density / number_density[c];
     }
   }

@@ -1,4 +1,5 @@
 #include "models/two_fluid/model.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 
 #include "core/verlet.hpp"
 #include "models/two_fluid/helium_ii.hpp"
@@ -45,7 +46,7 @@ template <int D, class Arith>
 double Model<D, Arith>::pressure(double density, double rest) const {
   const Parameters<D>& p = parameters_;
   const double b = rest * p.sound_speed * p.sound_speed / p.tait_exponent;
-  return b * (std::pow(density / rest, p.tait_exponent) - 1.0) + p.background_pressure;
+  return b * (dmath::pow(density / rest, p.tait_exponent) - 1.0) + p.background_pressure;
 }
 
 template <int D, class Arith>
@@ -55,8 +56,9 @@ double Model<D, Arith>::internal_energy(double density, double rest) const {
   const Parameters<D>& p = parameters_;
   const double gamma = p.tait_exponent;
   const double b = rest * p.sound_speed * p.sound_speed / gamma;
-  const double power = gamma == 1.0 ? std::log(density / rest)
-                                    : (std::pow(density / rest, gamma - 1.0) - 1.0) / (gamma - 1.0);
+  const double power = gamma == 1.0
+                           ? dmath::log(density / rest)
+                           : (dmath::pow(density / rest, gamma - 1.0) - 1.0) / (gamma - 1.0);
   return b / rest * power + (b - p.background_pressure) * (1.0 / density - 1.0 / rest);
 }
 

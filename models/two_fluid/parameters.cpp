@@ -1,4 +1,5 @@
 #include "models/two_fluid/parameters.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 
 #include "models/two_fluid/case_keys.hpp" // generated from keys.toml
 
@@ -122,10 +123,11 @@ Parameters<D> read_parameters(const CaseFile& case_file) {
     p.interface.wavelength = k.interface_wavelength.require(case_file);
   }
 
-  const double heavier = std::max(p.rest_density(true), p.rest_density(false)) * std::pow(p.dr, D);
+  const double heavier =
+      std::max(p.rest_density(true), p.rest_density(false)) * dmath::integer_power(p.dr, D);
   p.position_scale = k.position_exponent.read(case_file, p.domain.max_abs_coordinate(), p.dr);
   p.momentum_scale = k.momentum_exponent.read(case_file, heavier * p.sound_speed);
-  p.density_scale = k.density_exponent.read(case_file, std::pow(p.dr, -D));
+  p.density_scale = k.density_exponent.read(case_file, dmath::integer_power(p.dr, -D));
   p.energy_scale = k.energy_exponent.read(case_file, heavier * p.sound_speed * p.sound_speed);
   return p;
 }

@@ -8,6 +8,7 @@
 #include "core/geometry.hpp"
 #include "core/particle_discretisation.hpp"
 #include "core/step_splitting.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 #include "fixedpoint/scale.hpp"
 #include "models/two_fluid/helium_ii.hpp"
 
@@ -46,16 +47,17 @@ struct Interface {
   bool displaced = false;
 
   bool superfluid_at(double x, double y) const {
-    return y > (displaced ? height
-                          : height - amplitude * std::sin(2.0 * std::numbers::pi * x / wavelength));
+    return y > (displaced
+                    ? height
+                    : height - amplitude * dmath::sin(2.0 * std::numbers::pi * x / wavelength));
   }
   // The incompressible displacement (x, y) of the interface's linear mode at a point of the flat
   // state: the interface y = height moves to height - amplitude sin(k x), and the displacement
   // decays as e^(-k |y - height|) on both sides (div = 0 on each; it slips along the interface).
   std::array<double, 2> displacement(double x, double y) const {
     const double k = 2.0 * std::numbers::pi / wavelength;
-    const double decay = amplitude * std::exp(-k * std::abs(y - height));
-    return {(y > height ? 1.0 : -1.0) * decay * std::cos(k * x), -decay * std::sin(k * x)};
+    const double decay = amplitude * dmath::exp(-k * std::abs(y - height));
+    return {(y > height ? 1.0 : -1.0) * decay * dmath::cos(k * x), -decay * dmath::sin(k * x)};
   }
 };
 

@@ -16,6 +16,7 @@
 
 #include "core/fault.hpp"
 #include "core/state_field.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 #include "fixedpoint/exact_sum.hpp"
 #include "models/two_fluid/parameters.hpp"
 
@@ -88,9 +89,9 @@ void turn_rigid_walls(StateField<Raw>& position, StateField<Raw>& velocity, cons
       continue; // on the centre, or at rest
     }
     const double theta = sense * walls.rate[i] * dt;
-    const double half = std::tan(0.5 * std::abs(theta));
+    const double half = dmath::tan(0.5 * std::abs(theta));
     const double a = std::copysign(half, -theta);
-    const double b = std::copysign(std::sin(std::abs(theta)), theta);
+    const double b = std::copysign(dmath::sin(std::abs(theta)), theta);
     rigid_detail::turn(rx, ry, a, b);
     rigid_detail::turn(vx, vy, a, b);
     position.at(0, i) = rx + centre[0];

@@ -3,6 +3,7 @@
 // 108593, "paper 1"). Pure functions of doubles; the neighbour loops are in forces.hpp.
 
 #include "core/wall_potential.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 #include <cmath>
 
 namespace revsph::wcsph {
@@ -19,7 +20,7 @@ inline double tait_pressure(double density, double rest_density, double sound_sp
 // initial states (std::pow is fine outside the time step).
 inline double tait_density(double pressure, double rest_density, double sound_speed) {
   return rest_density *
-         std::pow(1.0 + 7.0 * pressure / (sound_speed * sound_speed * rest_density), 1.0 / 7.0);
+         dmath::pow(1.0 + 7.0 * pressure / (sound_speed * sound_speed * rest_density), 1.0 / 7.0);
 }
 
 // Compressional energy per unit mass, paper 1 below eq. (3):

@@ -7,6 +7,8 @@
 //        = rho0 (12.5 r^2 - 20 r + 4 ln r + 6 - 4 ln 0.4)  (0.2 <= r < 0.4)
 //        = 0                                                (r >= 0.4).
 
+#include "fixedpoint/deterministic_math.hpp"
+
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -22,7 +24,7 @@ inline double azimuthal_velocity(double r) {
 
 // The velocity (u_x, u_y) at offset (dx, dy) from the vortex centre: u(r) along e_theta.
 inline std::array<double, 2> velocity(double dx, double dy) {
-  const double r = std::hypot(dx, dy);
+  const double r = dmath::hypot(dx, dy);
   if (!(r > 0.0)) {
     return {0.0, 0.0};
   }
@@ -35,7 +37,8 @@ inline double pressure(double r, double rest_density) {
     return rest_density * (12.5 * r * r + 2.0 - 4.0 * std::numbers::ln2);
   }
   if (r < 0.4) {
-    return rest_density * (12.5 * r * r - 20.0 * r + 4.0 * std::log(r) + 6.0 - 4.0 * std::log(0.4));
+    return rest_density *
+           (12.5 * r * r - 20.0 * r + 4.0 * dmath::log(r) + 6.0 - 4.0 * dmath::log(0.4));
   }
   return 0.0;
 }

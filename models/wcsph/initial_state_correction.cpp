@@ -1,4 +1,5 @@
 #include "models/wcsph/initial_state_correction.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 
 #include "core/arithmetic.hpp"
 #include "core/kernel_wendland.hpp"
@@ -161,12 +162,12 @@ void apply_jitter(CoordinateArrays<D>& points, const IscSettings& settings) {
       direction = {unit_uniform(engine) < 0.5 ? -1.0 : 1.0};
     } else if constexpr (D == 2) {
       const double angle = 2.0 * std::numbers::pi * unit_uniform(engine);
-      direction = {std::cos(angle), std::sin(angle)};
+      direction = {dmath::cos(angle), dmath::sin(angle)};
     } else {
       const double cos_polar = 2.0 * unit_uniform(engine) - 1.0; // uniform on the sphere
       const double sin_polar = std::sqrt(std::max(0.0, 1.0 - cos_polar * cos_polar));
       const double azimuth = 2.0 * std::numbers::pi * unit_uniform(engine);
-      direction = {sin_polar * std::cos(azimuth), sin_polar * std::sin(azimuth), cos_polar};
+      direction = {sin_polar * dmath::cos(azimuth), sin_polar * dmath::sin(azimuth), cos_polar};
     }
     const double length = largest * unit_uniform(engine);
     for (int k = 0; k < D; ++k) {

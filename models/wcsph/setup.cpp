@@ -1,4 +1,5 @@
 #include "models/wcsph/setup.hpp"
+#include "fixedpoint/deterministic_math.hpp"
 
 #include "core/case_values.hpp"
 #include "core/dimension.hpp"
@@ -44,7 +45,7 @@ InitialFields<D> initial_fields(const Parameters<D>& parameters,
   auto target = [&](const Vec<D>& p) {
     if constexpr (D == 2) {
       if (gresho) {
-        const double r = std::hypot(p[0] - parameters.centre[0], p[1] - parameters.centre[1]);
+        const double r = dmath::hypot(p[0] - parameters.centre[0], p[1] - parameters.centre[1]);
         return tait_density(gresho::pressure(r, parameters.rest_density), parameters.rest_density,
                             parameters.sound_speed);
       }
