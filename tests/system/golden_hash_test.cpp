@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <ostream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -49,6 +50,11 @@ std::vector<GoldenHash> golden_hashes() {
     rows.push_back(row);
   }
   return rows;
+}
+
+// gtest prints a parameter in test listings and failures: the row as in the table.
+void PrintTo(const GoldenHash& row, std::ostream* out) {
+  *out << row.case_name << ',' << row.steps << ',' << row.hash;
 }
 
 class GoldenHashTable : public ::testing::TestWithParam<GoldenHash> {};
