@@ -130,7 +130,7 @@ int main() {
       measure(f.glibc(xs[i], ys[i]), xs[i], ys[i], f, glibc);
     }
     const auto share = [](std::int64_t n) { return static_cast<double>(n) / samples; };
-    std::printf("%s,%s,%zu,%.3f,%.5f,%.3f,%.5f,%.1f,%.1f\n", f.name.c_str(), f.range.c_str(),
+    std::printf("%s,\"%s\",%zu,%.3f,%.5f,%.3f,%.5f,%.1f,%.1f\n", f.name.c_str(), f.range.c_str(),
                 samples, ours.largest_ulp, share(ours.correctly_rounded), glibc.largest_ulp,
                 share(glibc.correctly_rounded), nanoseconds_per_call(f.ours, xs, ys),
                 nanoseconds_per_call(f.glibc, xs, ys));
