@@ -18,6 +18,15 @@ target_compile_options(revsph_flags INTERFACE
   # State fields are declared with designated initialisers that leave out the members with
   # defaults (core/particle_sets.hpp); GCC 12 warns about each omission, GCC 13 no longer does.
   -Wno-missing-field-initializers)
+# No FMA instructions at all on x86-64: GCC 12's SLP vectorizer fuses a multiply with an
+# alternating subtract/add (vfmsubadd) despite -ffp-contract=off when the target has FMA
+# (-march=native), which changed shtc's 3D kernel sums. Compilers for other CPUs lack the flag.
+include(CheckCXXCompilerFlag)
+check_cxx_compiler_flag(-mno-fma REVSPH_COMPILER_HAS_MNO_FMA)
+if(REVSPH_COMPILER_HAS_MNO_FMA)
+  target_compile_options(revsph_flags INTERFACE -mno-fma)
+endif()
+
 # Eigen's SIMD paths order sums their own way and use fused multiply-adds on aarch64 (NEON's
 # vfmaq_f64, which -ffp-contract=off cannot stop): its scalar path keeps the bits the same on
 # every CPU.

@@ -10,18 +10,13 @@ namespace revsph::shtc {
 
 namespace {
 
-// Odd functions bit for bit: f(-t) == -f(t) whatever the libm does with negative arguments.
+// Odd functions bit for bit: f(-t) == -f(t) whatever the implementation does with negative
+// arguments.
 double odd_tan(double t) {
   return std::copysign(dmath::tan(std::fabs(t)), t);
 }
-double odd_sin(double t) {
-  return std::copysign(dmath::sin(std::fabs(t)), t);
-}
 double odd_tanh(double t) {
   return std::copysign(dmath::tanh(std::fabs(t)), t);
-}
-double odd_sinh(double t) {
-  return std::copysign(dmath::sinh(std::fabs(t)), t);
 }
 
 // Lifting steps on the columns of U (right multiplication by a unit triangular matrix).
@@ -47,17 +42,22 @@ public:
 
   // U <- U R with R the rotation by theta in the (i, j) plane, R = [[cos, -sin], [sin, cos]] on
   // columns (i, j), as three shears [[1, a], [0, 1]] [[1, 0], [b, 1]] [[1, a], [0, 1]],
-  // a = -tan(theta / 2), b = sin(theta).
+  // a = -tan(theta / 2), b = sin(theta) = 2 tan(theta / 2) / (1 + tan^2(theta / 2)): one
+  // transcendental call, and b odd in a as the reversal needs.
   bool rotate(int i, int j, double theta) {
-    return rotate_by(i, j, -odd_tan(0.5 * theta), odd_sin(theta));
+    const double half = odd_tan(0.5 * theta);
+    return rotate_by(i, j, -half, 2.0 * half / (1.0 + half * half));
   }
   bool rotate_by(int i, int j, double a, double b) {
     return shear(i, j, a) && shear(j, i, b) && shear(i, j, a);
   }
 
   // U <- U B with B = [[cosh t, sinh t], [sinh t, cosh t]] on columns (i, j): the same three
-  // shears with a = tanh(t / 2), b = sinh(t).
-  bool boost(int i, int j, double t) { return rotate_by(i, j, odd_tanh(0.5 * t), odd_sinh(t)); }
+  // shears with a = tanh(t / 2), b = sinh(t) = 2 tanh(t / 2) / (1 - tanh^2(t / 2)).
+  bool boost(int i, int j, double t) {
+    const double half = odd_tanh(0.5 * t);
+    return rotate_by(i, j, half, 2.0 * half / (1.0 - half * half));
+  }
 
   // U <- U diag(e^t, e^-t) on columns (i, j) = U R(-pi/4) B(t) R(pi/4). The two fixed rotations
   // use the same constants with opposite signs, so stretch(-t) is exactly the inverse sequence.

@@ -42,11 +42,22 @@ std::span<const IrreversibleOperator<Model<D, Arith>>> Model<D, Arith>::irrevers
   return operators;
 }
 
+namespace {
+
+// ratio^exponent; an integral exponent (the Tait default 7) by multiplication, which is exact in
+// its order of operations and several times cheaper than pow.
+double tait_power(double ratio, double exponent) {
+  const int integral = static_cast<int>(exponent);
+  return integral == exponent ? dmath::integer_power(ratio, integral) : dmath::pow(ratio, exponent);
+}
+
+} // namespace
+
 template <int D, class Arith>
 double Model<D, Arith>::pressure(double density, double rest) const {
   const Parameters<D>& p = parameters_;
   const double b = rest * p.sound_speed * p.sound_speed / p.tait_exponent;
-  return b * (dmath::pow(density / rest, p.tait_exponent) - 1.0) + p.background_pressure;
+  return b * (tait_power(density / rest, p.tait_exponent) - 1.0) + p.background_pressure;
 }
 
 template <int D, class Arith>
@@ -58,7 +69,7 @@ double Model<D, Arith>::internal_energy(double density, double rest) const {
   const double b = rest * p.sound_speed * p.sound_speed / gamma;
   const double power = gamma == 1.0
                            ? dmath::log(density / rest)
-                           : (dmath::pow(density / rest, gamma - 1.0) - 1.0) / (gamma - 1.0);
+                           : (tait_power(density / rest, gamma - 1.0) - 1.0) / (gamma - 1.0);
   return b / rest * power + (b - p.background_pressure) * (1.0 / density - 1.0 / rest);
 }
 
